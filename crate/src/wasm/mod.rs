@@ -1,0 +1,1 @@
+//! wasm boundary (being written)
