@@ -6,5 +6,5 @@ pub mod java_random;
 pub mod shape;
 pub mod terrain;
 
-
-
+pub use shape::Shape;
+pub use terrain::Terrain;
