@@ -1,7 +1,7 @@
 //! A locomotion episode (SPEC 8): a robot on a terrain driven by a policy whose output
 //! is latched every 20 steps (k_act = 20), with the reference's clock: at loop
-//! iteration k the time is (k + 1) dt, the policy is asked when k % 20 == 0, then the
-//! world steps. Fitness is the centre's x displacement from after the first step to
+//! iteration k (from 0) the world steps first, then the time is (k + 1) dt and the
+//! policy is asked when k % 20 == 0; its output drives the following steps. Fitness is the centre's x displacement from after the first step to
 //! after the last, over the elapsed time.
 
 use super::gait::PhaseGait;
@@ -72,13 +72,13 @@ impl GaitEpisode {
     /// Advances `steps` steps; an error if the simulation became non-finite.
     pub fn step(&mut self, steps: usize) -> Result<()> {
         for _ in 0..steps {
+            self.world.step();
             let k = self.world.steps();
-            if k % ACTUATION_HOLD_STEPS as u64 == 0 {
-                let t = (k + 1) as f64 * DT;
+            if (k - 1) % ACTUATION_HOLD_STEPS as u64 == 0 {
+                let t = k as f64 * DT;
                 self.gait.actuate(t, &self.columns, &mut self.actuation);
                 self.world.set_actuation(&self.actuation);
             }
-            self.world.step();
             if self.first_x.is_none() {
                 self.first_x = Some(self.world.centre().0);
             }
@@ -116,6 +116,11 @@ impl GaitEpisode {
             steps,
             seconds: steps as f64 * DT,
         }
+    }
+
+    /// The actuation currently held for every voxel.
+    pub fn actuation(&self) -> &[f64] {
+        &self.actuation
     }
 
     /// The world (read-only).

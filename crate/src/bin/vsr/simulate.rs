@@ -21,6 +21,10 @@ pub struct Args {
     /// Simulated seconds.
     #[arg(long, default_value_t = 30.0)]
     seconds: f64,
+    /// Also record voxel V's area ratio and held actuation after every step (JSON
+    /// field "trace").
+    #[arg(long, value_name = "V")]
+    trace_voxel: Option<usize>,
     /// Print one JSON object instead of text.
     #[arg(long)]
     json: bool,
@@ -39,6 +43,17 @@ pub fn run(args: Args) -> vsr::Result<()> {
     let gait = PhaseGait::parse(&args.gait)?;
     let start = Instant::now();
     let mut episode = GaitEpisode::from_parts(&shape, terrain, gait);
+    let trace = match args.trace_voxel {
+        Some(v) if v >= shape.voxel_count() => {
+            return Err(vsr::Error::Input(format!(
+                "--trace-voxel {v}: the shape has {} voxels (0..{})",
+                shape.voxel_count(),
+                shape.voxel_count() - 1
+            )))
+        }
+        Some(v) => Some(record_trace(&mut episode, v, args.seconds)?),
+        None => None,
+    };
     let outcome = episode.run(args.seconds)?;
     let wall = start.elapsed().as_secs_f64();
     if args.json {
@@ -52,6 +67,7 @@ pub fn run(args: Args) -> vsr::Result<()> {
             "voxels": shape.voxel_count(),
             "seconds": outcome.seconds,
             "wall_seconds": wall,
+            "trace": trace,
         });
         println!("{body}");
     } else {
@@ -62,4 +78,20 @@ pub fn run(args: Args) -> vsr::Result<()> {
         );
     }
     Ok(())
+}
+
+/// Steps the episode to `seconds`, recording voxel `v` after every step.
+fn record_trace(
+    episode: &mut GaitEpisode,
+    v: usize,
+    seconds: f64,
+) -> vsr::Result<serde_json::Value> {
+    let (mut t, mut area, mut control) = (vec![], vec![], vec![]);
+    for _ in 0..vsr::experiment::steps_for(seconds) {
+        episode.step(1)?;
+        t.push(episode.time());
+        area.push(episode.world().area_ratio(v));
+        control.push(episode.actuation()[v]);
+    }
+    Ok(serde_json::json!({ "voxel": v, "t": t, "area_ratio": area, "control": control }))
 }
