@@ -1,1 +1,3 @@
 //! The one place that composes genome -> controller -> world -> fitness.
+
+pub mod seeds;
