@@ -146,6 +146,8 @@ impl Controller for Attention {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
 
     #[test]
     fn zero_block_gives_zero_attention_and_tanh_bias_output() {
@@ -157,5 +159,29 @@ mod tests {
         c.control(&[0.3, 0.4, 0.5, 1.0, 0.1, 0.2, 0.3, 0.0], &mut out);
         assert!(c.attention().unwrap().iter().all(|&a| a == 0.0));
         assert_eq!(out, [tanhf(0.5), tanhf(0.5)]);
+    }
+
+    fn random_vec(rng: &mut ChaCha8Rng, len: usize, scale: f32) -> Vec<f32> {
+        (0..len).map(|_| rng.gen_range(-scale..scale)).collect()
+    }
+
+    #[test]
+    fn attention_block_transfers_between_shapes() {
+        let mut rng = ChaCha8Rng::seed_from_u64(14);
+        let block = random_vec(&mut rng, ATTENTION_PARAMS, 1.0);
+        let s = random_vec(&mut rng, 4, 1.0);
+        let mut small = Attention::new(10);
+        let mut large = Attention::new(18);
+        for (c, n) in [(&mut small, 10), (&mut large, 18)] {
+            let mut p = block.clone();
+            p.extend(random_vec(&mut rng, 4 * n + 1, 1.0));
+            c.set_params(&p).unwrap();
+            let sensors: Vec<f32> = s.iter().cycle().take(4 * n).copied().collect();
+            c.control(&sensors, &mut vec![0.0; n]);
+        }
+        assert_eq!(
+            small.attention().unwrap()[..16],
+            large.attention().unwrap()[..16]
+        );
     }
 }

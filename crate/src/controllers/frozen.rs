@@ -96,3 +96,55 @@ impl Controller for FrozenAttention {
         self.inner.attention()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
+
+    fn random_vec(rng: &mut ChaCha8Rng, len: usize, scale: f32) -> Vec<f32> {
+        (0..len).map(|_| rng.gen_range(-scale..scale)).collect()
+    }
+
+    #[test]
+    fn frozen_attention_keeps_a_while_sensors_still_drive_the_output() {
+        let mut rng = ChaCha8Rng::seed_from_u64(18);
+        let n = 3;
+        let mut plain = Attention::new(n);
+        let p = random_vec(&mut rng, plain.param_count(), 1.5);
+        plain.set_params(&p).unwrap();
+        let mut frozen = FrozenAttention::new(plain.clone());
+        let s0 = random_vec(&mut rng, 4 * n, 1.0);
+        let (mut u_plain, mut u_frozen) = (vec![0.0; n], vec![0.0; n]);
+        plain.control(&s0, &mut u_plain);
+        frozen.control(&s0, &mut u_frozen);
+        assert_eq!(u_plain, u_frozen, "before freeze it is plain attention");
+        frozen.freeze();
+        let a_frozen = frozen.attention().unwrap().to_vec();
+        let mut outputs = Vec::new();
+        for _ in 0..5 {
+            let s = random_vec(&mut rng, 4 * n, 1.0);
+            frozen.control(&s, &mut u_frozen);
+            plain.control(&s, &mut u_plain);
+            assert_eq!(frozen.attention().unwrap(), &a_frozen[..], "A stays fixed");
+            assert_ne!(
+                plain.attention().unwrap(),
+                &a_frozen[..],
+                "while plain A moves"
+            );
+            outputs.push(u_frozen.clone());
+        }
+        assert!(
+            outputs.windows(2).all(|w| w[0] != w[1]),
+            "live sensors still matter"
+        );
+        frozen.reset();
+        assert_eq!(
+            frozen.attention().unwrap(),
+            &a_frozen[..],
+            "a fresh episode keeps A"
+        );
+        assert!(frozen.freeze_with(&[0.0; 5]).is_err());
+    }
+}

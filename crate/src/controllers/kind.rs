@@ -113,4 +113,21 @@ mod tests {
         let back: ControllerKind = serde_json::from_str("\"slow-attention\"").unwrap();
         assert_eq!(back, ControllerKind::SlowAttention);
     }
+
+    #[test]
+    fn stateful_controllers_say_so_and_only_attention_exposes_matrices() {
+        let t = Topology::isolated(3);
+        let flags: Vec<(bool, bool)> = ControllerKind::ALL
+            .iter()
+            .map(|&k| {
+                let c = build(k, &t);
+                (c.needs_every_step(), c.attention().is_some())
+            })
+            .collect();
+        // attention, mlp, mlp-comm, slow-attention
+        assert_eq!(
+            flags,
+            [(false, true), (false, false), (true, false), (true, true)]
+        );
+    }
 }

@@ -112,6 +112,9 @@ impl Controller for SlowAttention {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::controllers::Attention;
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
 
     #[test]
     fn alpha_and_eta_are_clamped_magnitudes() {
@@ -123,5 +126,33 @@ mod tests {
         c.set_params(&p).unwrap();
         assert_eq!(c.alpha(), 0.3);
         assert_eq!(c.eta(), 1.0);
+    }
+
+    fn random_vec(rng: &mut ChaCha8Rng, len: usize, scale: f32) -> Vec<f32> {
+        (0..len).map(|_| rng.gen_range(-scale..scale)).collect()
+    }
+
+    #[test]
+    fn slow_attention_with_eta_keeps_memory_of_the_previous_matrix() {
+        let mut rng = ChaCha8Rng::seed_from_u64(17);
+        let mut slow = SlowAttention::new(1);
+        let mut p = random_vec(&mut rng, Attention::param_count_for(1), 1.5);
+        p.extend([0.5, 0.5]);
+        slow.set_params(&p).unwrap();
+        let mut plain = Attention::new(1);
+        plain.set_params(&p[..p.len() - 2]).unwrap();
+        let (s0, s1) = (random_vec(&mut rng, 4, 1.0), random_vec(&mut rng, 4, 1.0));
+        let mut out = [0.0];
+        slow.control(&s0, &mut out);
+        let a0 = slow.attention().unwrap().to_vec();
+        plain.control(&s0, &mut out);
+        assert_eq!(plain.attention().unwrap(), &a0[..], "A'(0) = A");
+        slow.control(&s1, &mut out);
+        plain.control(&s1, &mut out);
+        let a1 = plain.attention().unwrap();
+        for k in 0..16 {
+            let want = 0.5 * a1[k] + 0.5 * a0[k];
+            assert!((slow.attention().unwrap()[k] - want).abs() < 1e-6);
+        }
     }
 }
