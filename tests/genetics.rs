@@ -5,7 +5,9 @@
 use rand::seq::SliceRandom;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
-use vsr::genetics::operators::{crossover, mutate, tournament, ALPHA_HIGH, ALPHA_LOW};
+use vsr::genetics::operators::{
+    crossover, mutate, standard_normal, tournament, ALPHA_HIGH, ALPHA_LOW,
+};
 use vsr::genetics::{Ga, GaConfig};
 
 fn mean_sd(xs: &[f64]) -> (f64, f64) {
@@ -249,4 +251,26 @@ fn fine_tuning_population_shares_the_frozen_prefix_for_the_whole_run() {
     assert_eq!(asks[0][0], seed, "the given genome is individual 0");
     assert!(asks.iter().flatten().all(|g| g[..32] == seed[..32]));
     assert!(asks[0][1][32..] != seed[32..], "the rest is re-drawn");
+}
+
+/// Run files replay from their seed: a change to the random stream (operator order, RNG,
+/// Gaussian method) silently changes every stored run. Exact values, no tolerance.
+#[test]
+fn seeded_stream_is_pinned() {
+    let mut ga = Ga::new(GaConfig::default(), 3, 1).unwrap();
+    let gen0 = ga.ask();
+    assert_eq!(gen0[0].genome, [0.09875643, -0.19502878, 0.9691942]);
+    let f: Vec<f64> = gen0.iter().map(|c| sphere(&c.genome)).collect();
+    ga.tell(&f).unwrap();
+    let gen1 = ga.ask();
+    assert_eq!(gen1[100].genome, [0.50227684, 0.8032388, 0.034652583]);
+    assert_eq!(gen1[101].genome, [-0.18773437, 0.19030495, -0.17814171]);
+    let mut rng = ChaCha8Rng::seed_from_u64(3);
+    let normals: Vec<f64> = (0..3).map(|_| standard_normal(&mut rng)).collect();
+    let expected = [
+        0.20790577449436895,
+        -0.24744376872580803,
+        0.3896697687525554,
+    ];
+    assert_eq!(normals, expected);
 }
