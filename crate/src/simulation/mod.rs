@@ -10,6 +10,7 @@ pub mod contact;
 pub mod ground;
 pub mod java_random;
 pub mod joint;
+pub mod lanes;
 pub mod ropes;
 pub mod shape;
 pub mod springs;
