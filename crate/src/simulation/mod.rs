@@ -12,6 +12,7 @@ pub mod java_random;
 pub mod joint;
 pub mod lanes;
 pub mod ropes;
+pub mod sensors;
 pub mod shape;
 pub mod springs;
 pub mod terrain;
