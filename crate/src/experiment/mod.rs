@@ -1,9 +1,22 @@
-//! The one place that composes genome -> controller -> world -> fitness.
+//! The one place that composes genome -> controller -> world -> fitness: episodes, evaluation
+//! seeds, evolutionary runs and their run files, fine-tuning, validation and the ablation.
 
+pub mod ablation;
+pub mod config;
 pub mod episode;
 pub mod evaluate;
+pub mod evolution;
+pub mod finetune;
 pub mod gait;
+pub mod run;
 pub mod seeds;
+pub mod validation;
 
+pub use ablation::{ablate, AblationPoint, ABLATION_TERRAIN};
+pub use config::{EvolutionConfig, SourceRun, TrainingTerrain};
 pub use episode::{steps_for, topology, Episode, GaitEpisode, Outcome, Policy};
+pub use evolution::{Evolution, Job};
+pub use finetune::source_of;
 pub use gait::PhaseGait;
+pub use run::{Best, GenerationRecord, RunFile, Timing};
+pub use validation::{validate, Validation};

@@ -1,5 +1,5 @@
 //! `vsr bench`: single-thread simulation speed on the paper's four shapes under a
-//! phase gait on a hilly terrain.
+//! phase gait on a hilly terrain; with `--evolution`, see `bench_evolution`.
 
 use std::time::Instant;
 
@@ -18,6 +18,13 @@ pub struct Args {
     /// Terrain.
     #[arg(long, default_value = "hilly-1-10-0")]
     terrain: String,
+    /// Also time whole evolution steps per controller (1 thread and all threads) and the
+    /// controller's cost over the bare simulation; takes about a minute.
+    #[arg(long)]
+    evolution: bool,
+    /// Population of the timed evolution steps.
+    #[arg(long, default_value_t = 50)]
+    population: usize,
 }
 
 /// The shapes measured.
@@ -50,6 +57,15 @@ pub fn run(args: Args) -> vsr::Result<()> {
         println!("{}", serde_json::Value::Array(rows));
         return Ok(());
     }
+    print_rows(&args, rows);
+    if args.evolution {
+        println!();
+        crate::bench_evolution::run(args.population, args.repeats.min(3))?;
+    }
+    Ok(())
+}
+
+fn print_rows(args: &Args, rows: Vec<serde_json::Value>) {
     println!(
         "single thread, gait 1,1.5 on {}, best of {}",
         args.terrain, args.repeats
@@ -68,5 +84,4 @@ pub fn run(args: Args) -> vsr::Result<()> {
             r["realtime_factor"].as_f64().unwrap_or(0.0),
         );
     }
-    Ok(())
 }

@@ -16,8 +16,21 @@ enum Command {
     Simulate(crate::simulate::Args),
     /// Print a terrain's polyline.
     Terrain(crate::terrain::Args),
-    /// Measure simulation speed on the paper's shapes (single thread).
+    /// Measure simulation speed on the paper's shapes (single thread); --evolution adds
+    /// whole evolution steps per controller.
     Bench(crate::bench::Args),
+    /// Print a controller's parameter count for a shape.
+    Params(crate::params::Args),
+    /// Evolve a controller from scratch and write a run file.
+    Evolve(crate::evolve::Args),
+    /// Evaluate a run's best individual on one terrain (JSON with velocity).
+    Evaluate(crate::evaluate::Args),
+    /// Re-assess a run's best individual on the 10 unseen terrains hilly-1-10-0..9.
+    Validate(crate::validate::Args),
+    /// Fine-tune a run's best individual on another shape, its attention block frozen.
+    Finetune(crate::finetune::Args),
+    /// Frozen-attention ablation: velocity with the attention frozen at each second.
+    Ablate(crate::ablate::Args),
 }
 
 /// Parses arguments, runs the command and returns the process exit code.
@@ -34,6 +47,12 @@ pub fn run() -> i32 {
         Command::Simulate(args) => crate::simulate::run(args),
         Command::Terrain(args) => crate::terrain::run(args),
         Command::Bench(args) => crate::bench::run(args),
+        Command::Params(args) => crate::params::run(args),
+        Command::Evolve(args) => crate::evolve::run(args),
+        Command::Evaluate(args) => crate::evaluate::run(args),
+        Command::Validate(args) => crate::validate::run(args),
+        Command::Finetune(args) => crate::finetune::run(args),
+        Command::Ablate(args) => crate::ablate::run(args),
     };
     match result {
         Ok(()) => 0,

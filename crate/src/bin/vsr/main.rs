@@ -3,13 +3,29 @@
 //! and a message on stderr.
 
 #[cfg(not(target_arch = "wasm32"))]
+mod ablate;
+#[cfg(not(target_arch = "wasm32"))]
 mod bench;
 #[cfg(not(target_arch = "wasm32"))]
+mod bench_evolution;
+#[cfg(not(target_arch = "wasm32"))]
 mod cli;
+#[cfg(not(target_arch = "wasm32"))]
+mod evaluate;
+#[cfg(not(target_arch = "wasm32"))]
+mod evolve;
+#[cfg(not(target_arch = "wasm32"))]
+mod finetune;
+#[cfg(not(target_arch = "wasm32"))]
+mod params;
+#[cfg(not(target_arch = "wasm32"))]
+mod runfile;
 #[cfg(not(target_arch = "wasm32"))]
 mod simulate;
 #[cfg(not(target_arch = "wasm32"))]
 mod terrain;
+#[cfg(not(target_arch = "wasm32"))]
+mod validate;
 
 #[cfg(not(target_arch = "wasm32"))]
 fn main() {

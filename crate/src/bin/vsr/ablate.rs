@@ -1,0 +1,51 @@
+//! `vsr ablate --genome RUN.json`: the frozen-attention ablation, one velocity per freeze
+//! time (see `vsr::experiment::ablation`).
+
+use std::path::PathBuf;
+
+use vsr::experiment::{ablate, ABLATION_TERRAIN};
+use vsr::{Error, Result};
+
+/// Arguments of `vsr ablate`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// The run file whose best individual (attention or slow-attention) is ablated.
+    #[arg(long)]
+    genome: PathBuf,
+    /// The terrain of the recording and of the frozen episodes.
+    #[arg(long, default_value = ABLATION_TERRAIN)]
+    terrain: String,
+    /// Freeze at every whole second 0 ..= LAST.
+    #[arg(long, value_name = "LAST", default_value_t = 30)]
+    last_second: u32,
+    /// Simulated seconds of each frozen episode.
+    #[arg(long, default_value_t = 30.0)]
+    seconds: f64,
+    /// Print JSON: [{"freeze_second", "velocity"}...].
+    #[arg(long)]
+    json: bool,
+}
+
+/// Runs the command.
+pub fn run(args: Args) -> Result<()> {
+    crate::validate::check_seconds(args.seconds)?;
+    if args.last_second > 3600 {
+        return Err(Error::Input(format!(
+            "--last-second must be at most 3600, got {}",
+            args.last_second
+        )));
+    }
+    let best = crate::runfile::load(&args.genome)?.best;
+    let points = ablate(&best, &args.terrain, args.last_second, args.seconds)?;
+    if args.json {
+        let body = serde_json::to_string(&points)
+            .map_err(|e| Error::Io(format!("cannot print JSON: {e}")))?;
+        println!("{body}");
+        return Ok(());
+    }
+    println!("frozen at (s)  velocity (m/s) on {}", args.terrain);
+    for p in &points {
+        println!("{:>12}  {:>14.3}", p.freeze_second, p.velocity);
+    }
+    Ok(())
+}

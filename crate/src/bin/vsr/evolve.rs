@@ -1,0 +1,133 @@
+//! `vsr evolve`: an evolutionary run from scratch, evaluated in parallel with rayon, written to
+//! a run file at the end. Also the runner shared with `vsr finetune`.
+
+use std::path::PathBuf;
+use std::time::Instant;
+
+use indicatif::{ProgressBar, ProgressStyle};
+use rayon::prelude::*;
+use vsr::controllers::ControllerKind;
+use vsr::experiment::{Evolution, EvolutionConfig, GenerationRecord, Job, Timing, TrainingTerrain};
+use vsr::simulation::Shape;
+use vsr::{Error, Result};
+
+/// Options shared by `vsr evolve` and `vsr finetune`.
+#[derive(clap::Args, Debug)]
+pub struct RunOptions {
+    /// Evaluation budget (30000 in the paper: 150 generations, 30100 evaluations).
+    #[arg(long)]
+    pub evals: u64,
+    /// Run seed: every terrain, noise stream and GA draw derives from it (at most 2^53 - 1).
+    #[arg(long)]
+    pub seed: u64,
+    /// Worker threads (default: all cores). Never changes the result.
+    #[arg(long)]
+    threads: Option<usize>,
+    /// Simulated seconds per evaluation.
+    #[arg(long, default_value_t = 30.0)]
+    seconds: f64,
+    /// Training terrain: a family (hilly-1-10: a fresh seed per evaluation) or a fixed name
+    /// (flat, hilly-1-10-3, ...).
+    #[arg(long, default_value = "hilly-1-10")]
+    terrain: String,
+    /// Population size mu = lambda.
+    #[arg(long, default_value_t = 100)]
+    population: usize,
+    /// Where to write the run file (written once, at the end, atomically).
+    #[arg(long)]
+    out: PathBuf,
+}
+
+/// Arguments of `vsr evolve`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Shape: a preset (biped-4x3, comb-7x2, biped-6x4, comb-14x2, worm-WxH, box-WxH) or rows
+    /// top first, e.g. 1111-1111-1001.
+    #[arg(long)]
+    shape: String,
+    /// Controller: attention, mlp, mlp-comm or slow-attention.
+    #[arg(long)]
+    controller: String,
+    #[command(flatten)]
+    options: RunOptions,
+}
+
+/// Runs the command.
+pub fn run(args: Args) -> Result<()> {
+    let shape = Shape::parse(&args.shape)?;
+    let kind: ControllerKind = args.controller.parse()?;
+    let o = &args.options;
+    let config = EvolutionConfig::paper(shape, kind, o.evals, o.seed);
+    execute(config, &args.options)
+}
+
+/// Applies the shared options to `config`, runs it and writes the run file.
+pub fn execute(mut config: EvolutionConfig, options: &RunOptions) -> Result<()> {
+    config.seconds = options.seconds;
+    config.terrain = TrainingTerrain::parse(&options.terrain)?;
+    config.ga.population = options.population;
+    let mut evolution = Evolution::new(config)?;
+    crate::runfile::check_writable(&options.out)?;
+    let pool = thread_pool(options.threads)?;
+    let threads = pool.current_num_threads();
+    let start = Instant::now();
+    let bar = progress_bar(evolution.planned_evaluations());
+    let evaluate = |jobs: &[Job]| -> Vec<f64> {
+        let fitness = |job: &Job| {
+            let f = job.fitness();
+            bar.inc(1);
+            f
+        };
+        pool.install(|| jobs.par_iter().map(fitness).collect())
+    };
+    let report = |r: &GenerationRecord| bar.set_message(summary(r));
+    evolution.run(evaluate, report, || start.elapsed().as_secs_f64())?;
+    bar.finish_and_clear();
+    let wall_seconds = start.elapsed().as_secs_f64();
+    let run = evolution.run_file(Some(Timing {
+        threads,
+        wall_seconds,
+    }))?;
+    crate::runfile::save(&options.out, &run)?;
+    println!(
+        "{} {} on {}: best {:.3} m/s after {} evaluations ({} generations) in {:.1} s on {} \
+         threads; wrote {}",
+        run.config.controller,
+        run.config.shape.to_rows(),
+        String::from(run.config.terrain.clone()),
+        run.best.fitness,
+        evolution.evaluations(),
+        run.generations.len(),
+        wall_seconds,
+        threads,
+        options.out.display()
+    );
+    Ok(())
+}
+
+/// A local rayon pool of `threads` threads (all cores when `None`).
+pub fn thread_pool(threads: Option<usize>) -> Result<rayon::ThreadPool> {
+    if threads == Some(0) {
+        return Err(Error::Input("--threads must be at least 1".into()));
+    }
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.unwrap_or(0))
+        .build()
+        .map_err(|e| Error::Input(format!("cannot start {threads:?} threads: {e}")))
+}
+
+fn progress_bar(total: u64) -> ProgressBar {
+    let bar = ProgressBar::new(total);
+    let template = "{elapsed_precise} [{bar:30}] {pos}/{len} evals, eta {eta}  {msg}";
+    if let Ok(style) = ProgressStyle::with_template(template) {
+        bar.set_style(style.progress_chars("=> "));
+    }
+    bar
+}
+
+fn summary(r: &GenerationRecord) -> String {
+    format!(
+        "gen {}: best {:.2} median {:.2} m/s",
+        r.generation, r.best, r.median
+    )
+}

@@ -1,0 +1,31 @@
+//! `vsr finetune --from RUN.json --shape S`: SPEC 10's fine-tuning. The best individual of
+//! RUN.json lends its 32 attention genes, frozen; only the downstream genes evolve on S.
+
+use std::path::PathBuf;
+
+use vsr::experiment::{source_of, EvolutionConfig};
+use vsr::simulation::Shape;
+
+use crate::evolve::{execute, RunOptions};
+
+/// Arguments of `vsr finetune`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// The run file whose best individual's attention block is transferred.
+    #[arg(long)]
+    from: PathBuf,
+    /// The new shape: a preset or rows top first.
+    #[arg(long)]
+    shape: String,
+    #[command(flatten)]
+    options: RunOptions,
+}
+
+/// Runs the command.
+pub fn run(args: Args) -> vsr::Result<()> {
+    let source = source_of(&crate::runfile::load(&args.from)?);
+    let shape = Shape::parse(&args.shape)?;
+    let o = &args.options;
+    let config = EvolutionConfig::finetune(source, shape, o.evals, o.seed);
+    execute(config, o)
+}

@@ -1,0 +1,255 @@
+//! The configuration of one evolutionary run: what is evolved (shape, controller), on what
+//! (training terrains, episode length), how (GA settings, budget) and from which seed. It is
+//! stored verbatim in the run file, so a run file alone is enough to replay its run.
+//!
+//! Nothing here depends on how the run is executed: the number of threads or workers is
+//! deliberately absent, because it never changes the result.
+
+use super::seeds::{terrain_name_for, TERRAIN_SEEDS};
+use crate::controllers::{ControllerKind, ATTENTION_PARAMS};
+use crate::error::{Error, Result};
+use crate::genetics::GaConfig;
+use crate::simulation::{Shape, Terrain};
+use serde::{Deserialize, Serialize};
+
+/// The paper's training terrain family: a fresh `hilly-1-10-SEED` for every evaluation.
+pub const PAPER_TERRAIN: &str = "hilly-1-10";
+/// The paper's episode length (s).
+pub const PAPER_SECONDS: f64 = 30.0;
+/// Longest episode accepted (s).
+pub const MAX_SECONDS: f64 = 3600.0;
+/// Largest seed accepted: 2^53 - 1, the largest integer a JavaScript number holds exactly,
+/// so the page reads the same seed as the command line.
+pub const MAX_SEED: u64 = (1 << 53) - 1;
+
+/// Where the evaluations of a run take place. Serialized as a string: a family such as
+/// `hilly-1-10` (each evaluation appends its own derived seed, `hilly-1-10-4821`), or one
+/// fixed terrain name such as `flat` used for every evaluation.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(try_from = "String", into = "String")]
+pub enum TrainingTerrain {
+    /// `hilly-H-W` or `steppy-H-W`: the seed comes from the evaluation.
+    Family(String),
+    /// A complete terrain name, the same for every evaluation.
+    Fixed(String),
+}
+
+impl TrainingTerrain {
+    /// Parses a family (`hilly-1-10`, `steppy-1-10`) or a full terrain name (`flat`,
+    /// `hilly-1-10-3`, `uphill-10`).
+    pub fn parse(text: &str) -> Result<Self> {
+        let text = text.trim();
+        if Terrain::parse(text).is_ok() {
+            return Ok(TrainingTerrain::Fixed(text.to_string()));
+        }
+        let is_walk = text.starts_with("hilly-") || text.starts_with("steppy-");
+        if is_walk && Terrain::parse(&format!("{text}-0")).is_ok() {
+            return Ok(TrainingTerrain::Family(text.to_string()));
+        }
+        Err(Error::Terrain(format!(
+            "'{text}' is neither a terrain family (hilly-H-W, steppy-H-W: a fresh seed per \
+             evaluation) nor a terrain name (flat, hilly-H-W-SEED, steppy-H-W-SEED, uphill-DEG, \
+             downhill-DEG)"
+        )))
+    }
+
+    /// The terrain of an evaluation whose derived terrain seed is `seed`; for the paper's
+    /// family this is exactly [`terrain_name_for`].
+    pub fn name_for(&self, seed: u64) -> String {
+        match self {
+            TrainingTerrain::Family(f) if f == PAPER_TERRAIN => terrain_name_for(seed),
+            TrainingTerrain::Family(f) => format!("{f}-{}", seed % TERRAIN_SEEDS),
+            TrainingTerrain::Fixed(name) => name.clone(),
+        }
+    }
+}
+
+impl TryFrom<String> for TrainingTerrain {
+    type Error = Error;
+
+    fn try_from(text: String) -> Result<Self> {
+        TrainingTerrain::parse(&text)
+    }
+}
+
+impl From<TrainingTerrain> for String {
+    fn from(t: TrainingTerrain) -> String {
+        match t {
+            TrainingTerrain::Family(s) | TrainingTerrain::Fixed(s) => s,
+        }
+    }
+}
+
+/// The best individual of an earlier run whose attention block a fine-tuning run reuses
+/// (SPEC 10). Its genome is kept whole, so the fine-tuning run replays from its own file.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SourceRun {
+    /// The source run's shape.
+    pub shape: Shape,
+    /// The source run's controller.
+    pub controller: ControllerKind,
+    /// The source run's seed.
+    pub seed: u64,
+    /// The source run's evaluation budget.
+    pub budget_evals: u64,
+    /// The source best's fitness in its own run (m/s).
+    #[serde(with = "super::run::finite_or_null")]
+    pub fitness: f64,
+    /// The source best's genome; its first 32 genes are frozen in the new run.
+    #[serde(deserialize_with = "super::run::finite_genes")]
+    pub genome: Vec<f32>,
+}
+
+/// Everything that determines a run's result; see the module doc.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct EvolutionConfig {
+    /// The robot's morphology (serialized as rows, top first).
+    pub shape: Shape,
+    /// The controller family evolved.
+    pub controller: ControllerKind,
+    /// The run seed every random draw derives from (at most 2^53 - 1).
+    pub seed: u64,
+    /// Simulated seconds per evaluation episode.
+    pub seconds: f64,
+    /// Training terrain family or fixed terrain.
+    pub terrain: TrainingTerrain,
+    /// GA settings, including the evaluation budget `budget_evals`.
+    pub ga: GaConfig,
+    /// For fine-tuning runs: the individual whose attention block is frozen.
+    pub source: Option<SourceRun>,
+}
+
+impl EvolutionConfig {
+    /// The paper's setup (SPEC 9): GA defaults, 30-s episodes on fresh `hilly-1-10` terrains.
+    pub fn paper(shape: Shape, controller: ControllerKind, budget_evals: u64, seed: u64) -> Self {
+        EvolutionConfig {
+            shape,
+            controller,
+            seed,
+            seconds: PAPER_SECONDS,
+            terrain: TrainingTerrain::Family(PAPER_TERRAIN.to_string()),
+            ga: GaConfig {
+                budget_evals,
+                ..GaConfig::default()
+            },
+            source: None,
+        }
+    }
+
+    /// SPEC 10's fine-tuning of `source` on `shape`: same controller, the 32 attention genes
+    /// frozen, otherwise the paper's setup.
+    pub fn finetune(source: SourceRun, shape: Shape, budget_evals: u64, seed: u64) -> Self {
+        let mut config = EvolutionConfig::paper(shape, source.controller, budget_evals, seed);
+        config.ga.frozen_prefix = ATTENTION_PARAMS;
+        config.source = Some(source);
+        config
+    }
+
+    /// Genome length of the evolved controller on the evolved shape.
+    pub fn genome_len(&self) -> usize {
+        self.controller.param_count(self.shape.voxel_count())
+    }
+
+    /// Checks every setting; messages say what is accepted.
+    pub fn validate(&self) -> Result<()> {
+        let bad = |m: String| Err(Error::Input(m));
+        if !(self.seconds > 0.0 && self.seconds <= MAX_SECONDS) {
+            return bad(format!(
+                "episode seconds must be in (0, {MAX_SECONDS}], got {}",
+                self.seconds
+            ));
+        }
+        if self.seed > MAX_SEED {
+            return bad(format!(
+                "seed {} is too large: at most 2^53 - 1 = {MAX_SEED}",
+                self.seed
+            ));
+        }
+        self.ga.validate(self.genome_len())?;
+        if self.ga.budget_evals < self.ga.population as u64 {
+            return bad(format!(
+                "an evaluation budget of {} is less than one population of {}: the budget \
+                 must cover at least the initial population",
+                self.ga.budget_evals, self.ga.population
+            ));
+        }
+        match &self.source {
+            Some(source) => self.validate_source(source),
+            None if self.ga.frozen_prefix > 0 => bad(format!(
+                "a frozen prefix of {} genes needs a source run to copy them from",
+                self.ga.frozen_prefix
+            )),
+            None => Ok(()),
+        }
+    }
+
+    /// Fine-tuning needs attention on both sides and exactly the attention block frozen.
+    fn validate_source(&self, source: &SourceRun) -> Result<()> {
+        let has_attention = |k: ControllerKind| {
+            matches!(k, ControllerKind::Attention | ControllerKind::SlowAttention)
+        };
+        if !has_attention(source.controller) || !has_attention(self.controller) {
+            return Err(Error::Input(format!(
+                "fine-tuning transfers an attention block: the source controller is {} and the \
+                 new one {}, both must be attention or slow-attention",
+                source.controller, self.controller
+            )));
+        }
+        if self.ga.frozen_prefix != ATTENTION_PARAMS {
+            return Err(Error::Input(format!(
+                "fine-tuning freezes the {ATTENTION_PARAMS} attention genes, the GA freezes {}",
+                self.ga.frozen_prefix
+            )));
+        }
+        let expected = source.controller.param_count(source.shape.voxel_count());
+        if source.genome.len() != expected {
+            return Err(Error::Input(format!(
+                "the source genome has {} genes, a {} controller for {} needs {expected}",
+                source.genome.len(),
+                source.controller,
+                source.shape.to_rows()
+            )));
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn terrain_families_and_fixed_names() {
+        let family = TrainingTerrain::parse("hilly-1-10").unwrap();
+        assert_eq!(family.name_for(123_456), "hilly-1-10-3456");
+        let steppy = TrainingTerrain::parse("steppy-0.5-8").unwrap();
+        assert_eq!(steppy.name_for(20_007), "steppy-0.5-8-7");
+        let flat = TrainingTerrain::parse("flat").unwrap();
+        assert_eq!(flat.name_for(99), "flat");
+        assert!(matches!(
+            TrainingTerrain::parse("hilly-1-10-3"),
+            Ok(TrainingTerrain::Fixed(_))
+        ));
+        let err = TrainingTerrain::parse("hills").unwrap_err().to_string();
+        assert!(err.contains("hilly-H-W") && err.contains("flat"), "{err}");
+    }
+
+    #[test]
+    fn validation_names_the_bad_setting() {
+        let shape = Shape::parse("biped-4x3").unwrap();
+        let ok = EvolutionConfig::paper(shape, ControllerKind::Mlp, 30_000, 1);
+        assert!(ok.validate().is_ok());
+        let small = EvolutionConfig::paper(ok.shape.clone(), ControllerKind::Mlp, 99, 1);
+        assert!(small.validate().unwrap_err().to_string().contains("99"));
+        let mut big_seed = ok.clone();
+        big_seed.seed = MAX_SEED + 1;
+        assert!(big_seed.validate().is_err());
+        let mut frozen = ok;
+        frozen.ga.frozen_prefix = 32;
+        assert!(frozen
+            .validate()
+            .unwrap_err()
+            .to_string()
+            .contains("source"));
+    }
+}

@@ -1,0 +1,189 @@
+//! An evolutionary run: the GA of `genetics` driven on locomotion episodes, ask/tell style.
+//!
+//! [`Evolution::next_batch`] turns the GA's candidates into [`Job`]s; each job carries
+//! everything needed to evaluate it alone (genome, shape, controller, terrain name, noise seed,
+//! episode length), so the caller may spread a batch over threads (the CLI, with rayon) or
+//! workers (the page) and hand the fitness values back in index order to [`Evolution::tell`].
+//! Candidate `index` of generation `g` is evaluated on the terrain derived from
+//! `evaluation_seed(run seed, g, index, Terrain)` and with sensor noise seeded by
+//! `evaluation_seed(run seed, g, index, SensorNoise)`; the GA's own stream is seeded by
+//! `evaluation_seed(run seed, 0, 0, Genetics)`. Hence the result never depends on the number
+//! of threads or workers. The core has no clock: wall times come from the caller.
+
+use super::config::EvolutionConfig;
+use super::evaluate::fitness;
+use super::finetune::initial_population;
+use super::run::{Best, GenerationRecord, RunFile, Timing};
+use super::seeds::{evaluation_seed, Purpose};
+use crate::controllers::ControllerKind;
+use crate::error::{Error, Result};
+use crate::genetics::{Candidate, Ga};
+use crate::simulation::{Shape, Terrain};
+use serde::{Deserialize, Serialize};
+
+/// One evaluation to perform, self-contained.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Job {
+    /// Generation of the batch.
+    pub generation: u32,
+    /// Index in the batch (parents first, then offspring).
+    pub index: u32,
+    /// The genome to evaluate.
+    pub genome: Vec<f32>,
+    /// The robot's shape.
+    pub shape: Shape,
+    /// The controller family.
+    pub controller: ControllerKind,
+    /// The terrain name, e.g. `hilly-1-10-4821`.
+    pub terrain: String,
+    /// Seed of the sensor-noise stream.
+    pub noise_seed: u64,
+    /// Simulated seconds.
+    pub seconds: f64,
+}
+
+impl Job {
+    /// The fitness of this job: the episode's velocity, NaN (the worst) if it exploded.
+    pub fn fitness(&self) -> f64 {
+        match Terrain::parse(&self.terrain) {
+            Ok(terrain) => fitness(
+                &self.shape,
+                terrain,
+                self.controller,
+                &self.genome,
+                Some(self.noise_seed),
+                self.seconds,
+            ),
+            Err(_) => f64::NAN,
+        }
+    }
+}
+
+/// An evolutionary run in progress; see the module doc.
+#[derive(Debug, Clone)]
+pub struct Evolution {
+    config: EvolutionConfig,
+    ga: Ga,
+    history: Vec<GenerationRecord>,
+}
+
+impl Evolution {
+    /// Starts a run: from scratch, or as a fine-tuning run when `config.source` is set
+    /// (SPEC 10, see [`initial_population`]). Fails on an invalid configuration.
+    pub fn new(config: EvolutionConfig) -> Result<Evolution> {
+        config.validate()?;
+        let ga_seed = evaluation_seed(config.seed, 0, 0, Purpose::Genetics);
+        let ga = match &config.source {
+            None => Ga::new(config.ga.clone(), config.genome_len(), ga_seed)?,
+            Some(source) => {
+                let initial = initial_population(&config, source);
+                Ga::with_initial(config.ga.clone(), initial, ga_seed)?
+            }
+        };
+        Ok(Evolution {
+            config,
+            ga,
+            history: Vec::new(),
+        })
+    }
+
+    /// The jobs of the pending generation (the same until told); empty once the budget is spent.
+    pub fn next_batch(&mut self) -> Vec<Job> {
+        self.ga.ask().into_iter().map(|c| self.job(c)).collect()
+    }
+
+    fn job(&self, c: Candidate) -> Job {
+        let (seed, g, i) = (self.config.seed, c.generation, c.index);
+        let terrain_seed = evaluation_seed(seed, g, i, Purpose::Terrain);
+        Job {
+            generation: g,
+            index: i,
+            genome: c.genome,
+            shape: self.config.shape.clone(),
+            controller: self.config.controller,
+            terrain: self.config.terrain.name_for(terrain_seed),
+            noise_seed: evaluation_seed(seed, g, i, Purpose::SensorNoise),
+            seconds: self.config.seconds,
+        }
+    }
+
+    /// Reports the pending batch's fitness values in index order, with the caller's wall
+    /// seconds since the start of the run. Fails, changing nothing, on a wrong count.
+    pub fn tell(&mut self, fitness: &[f64], wall_seconds: f64) -> Result<GenerationRecord> {
+        let stats = self.ga.tell(fitness)?;
+        let record = GenerationRecord::new(&stats, wall_seconds);
+        self.history.push(record);
+        Ok(record)
+    }
+
+    /// Runs to the end of the budget: `evaluate_batch` returns one fitness per job, in order;
+    /// `on_generation` sees each generation's record; `clock` gives the wall seconds since
+    /// the start (return 0.0 where there is no clock).
+    pub fn run(
+        &mut self,
+        mut evaluate_batch: impl FnMut(&[Job]) -> Vec<f64>,
+        mut on_generation: impl FnMut(&GenerationRecord),
+        mut clock: impl FnMut() -> f64,
+    ) -> Result<()> {
+        loop {
+            let jobs = self.next_batch();
+            if jobs.is_empty() {
+                return Ok(());
+            }
+            let fitness = evaluate_batch(&jobs);
+            let record = self.tell(&fitness, clock())?;
+            on_generation(&record);
+        }
+    }
+
+    /// True once the budget is spent.
+    pub fn is_done(&self) -> bool {
+        self.ga.is_done()
+    }
+
+    /// Evaluations told so far.
+    pub fn evaluations(&self) -> u64 {
+        self.ga.evaluations()
+    }
+
+    /// Evaluations the whole run will take: the initial population plus two populations per
+    /// generation while the budget is not reached (30100 for the paper's 30000).
+    pub fn planned_evaluations(&self) -> u64 {
+        let pop = self.config.ga.population as u64;
+        let rest = self.config.ga.budget_evals.saturating_sub(pop);
+        pop + 2 * pop * rest.div_ceil(2 * pop)
+    }
+
+    /// The configuration.
+    pub fn config(&self) -> &EvolutionConfig {
+        &self.config
+    }
+
+    /// Records of the generations told so far.
+    pub fn history(&self) -> &[GenerationRecord] {
+        &self.history
+    }
+
+    /// The current best individual; `None` before generation 0 is told.
+    pub fn best(&self) -> Option<Best> {
+        let (genome, fitness) = self.ga.best();
+        if genome.is_empty() {
+            return None;
+        }
+        let (kind, shape) = (self.config.controller, self.config.shape.clone());
+        Some(Best::new(kind, shape, genome.to_vec(), fitness))
+    }
+
+    /// The run file of the run so far; fails before generation 0 is told.
+    pub fn run_file(&self, timing: Option<Timing>) -> Result<RunFile> {
+        let best = self.best().ok_or_else(|| {
+            Error::Input("no generation has been evaluated yet: there is no best".into())
+        })?;
+        Ok(RunFile::new(
+            self.config.clone(),
+            self.history.clone(),
+            best,
+            timing,
+        ))
+    }
+}

@@ -1,0 +1,53 @@
+//! Fine-tuning (SPEC 10): transfer the 32-gene attention block of an evolved individual to
+//! another morphology and evolve only the downstream genes.
+//!
+//! The initial population is the source individual (its downstream genes re-drawn if the new
+//! genome has another length or the controller differs) followed by `population - 1` genomes
+//! that copy the attention block and draw every other gene uniformly in
+//! [init_low, init_high] (the GA fills those: [`crate::genetics::Ga::with_initial`]). The GA
+//! freezes the first 32 genes (`frozen_prefix`), so every individual keeps the block
+//! bit-identical. A re-drawn source downstream comes from the stream seeded by
+//! `evaluation_seed(run seed, 0, 1, Genetics)`, apart from the GA's own (index 0).
+
+use super::config::{EvolutionConfig, SourceRun};
+use super::run::{Best, RunFile};
+use super::seeds::{evaluation_seed, Purpose};
+use crate::controllers::ATTENTION_PARAMS;
+use crate::random::rng_from;
+use rand::Rng;
+
+/// The first member(s) of a fine-tuning run's population: the source individual, adapted
+/// to the new genome length (see the module doc). The configuration is already validated.
+pub fn initial_population(config: &EvolutionConfig, source: &SourceRun) -> Vec<Vec<f32>> {
+    let same_layout = source.shape == config.shape && source.controller == config.controller;
+    if same_layout {
+        return vec![source.genome.clone()];
+    }
+    let (low, high) = (config.ga.init_low, config.ga.init_high);
+    let mut rng = rng_from(evaluation_seed(config.seed, 0, 1, Purpose::Genetics));
+    let mut genome = source.genome[..ATTENTION_PARAMS].to_vec();
+    while genome.len() < config.genome_len() {
+        genome.push(low + (high - low) * rng.gen::<f32>());
+    }
+    vec![genome]
+}
+
+/// The identity of a source run for [`EvolutionConfig::finetune`]: its best individual and
+/// the settings that produced it.
+pub fn source_of(run: &RunFile) -> SourceRun {
+    let Best {
+        controller,
+        shape,
+        genome,
+        fitness,
+        ..
+    } = run.best.clone();
+    SourceRun {
+        shape,
+        controller,
+        seed: run.config.seed,
+        budget_evals: run.config.ga.budget_evals,
+        fitness,
+        genome,
+    }
+}
