@@ -2,7 +2,6 @@
 //! The experiment commands of `vsr`: a tiny run end to end (the same file on 1 and 2 threads),
 //! and exit code 2 with a readable message on every kind of bad input, without writing output.
 
-use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 use serde_json::{json, Value};
@@ -14,38 +13,33 @@ fn vsr(args: &[&str]) -> Output {
         .unwrap()
 }
 
-fn scratch(name: &str) -> PathBuf {
+/// Runs `vsr` with a command line split at whitespace (the scratch paths have none).
+fn vsr_line(line: &str) -> Output {
+    vsr(&line.split_whitespace().collect::<Vec<_>>())
+}
+
+/// A fresh path in this test process's scratch directory.
+fn scratch(name: &str) -> String {
     let dir = std::env::temp_dir().join(format!("vsr-cli-test-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
+    dir.join(name).to_str().unwrap().to_string()
 }
 
 /// A tiny biped run (population 10, 30 evaluations, 2-s episodes) written to `out`.
-fn tiny_run(controller: &str, threads: &str, out: &Path) -> Output {
-    let out = out.to_str().unwrap();
-    vsr(&[
-        "evolve",
-        "--shape",
-        "biped-4x3",
-        "--controller",
-        controller,
-        "--evals",
-        "30",
-        "--seed",
-        "3",
-        "--population",
-        "10",
-        "--seconds",
-        "2",
-        "--threads",
-        threads,
-        "--out",
-        out,
-    ])
+fn tiny_run(controller: &str, threads: u32, out: &str) {
+    let out = vsr_line(&format!(
+        "evolve --shape biped-4x3 --controller {controller} --evals 30 --seed 3 \
+         --population 10 --seconds 2 --threads {threads} --out {out}"
+    ));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
 }
 
 /// The run file without what depends on the machine (wall times, thread count).
-fn comparable(path: &Path) -> Value {
+fn comparable(path: &str) -> Value {
     let mut v: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
     v["timing"] = Value::Null;
     for g in v["generations"].as_array_mut().unwrap() {
@@ -54,204 +48,140 @@ fn comparable(path: &Path) -> Value {
     v
 }
 
+/// The JSON a successful command printed.
+fn json_of(line: &str) -> Value {
+    let out = vsr_line(line);
+    assert!(
+        out.status.success(),
+        "{line}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
 /// Asserts exit code 2 and that stderr contains `expected`.
-fn fails_with(args: &[&str], expected: &str) {
-    let out = vsr(args);
+fn fails_with(line: &str, expected: &str) {
+    let out = vsr_line(line);
     let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+    assert_eq!(out.status.code(), Some(2), "{line}: {stderr}");
     assert!(
         stderr.contains(expected),
-        "{args:?}: expected '{expected}' in: {stderr}"
+        "{line}: expected '{expected}' in: {stderr}"
     );
 }
 
 #[test]
 fn params_prints_the_count() {
-    let out = vsr(&["params", "--shape", "comb-7x2", "--controller", "mlp-comm"]);
+    let out = vsr_line("params --shape comb-7x2 --controller mlp-comm");
     assert_eq!(String::from_utf8_lossy(&out.stdout).trim(), "445");
 }
 
 #[test]
-fn a_tiny_run_is_the_same_on_one_and_two_threads_and_can_be_used() {
+fn a_tiny_run_is_the_same_on_one_and_two_threads() {
     let (one, two) = (scratch("one.json"), scratch("two.json"));
-    assert!(tiny_run("attention", "1", &one).status.success());
-    assert!(tiny_run("attention", "2", &two).status.success());
+    tiny_run("attention", 1, &one);
+    tiny_run("attention", 2, &two);
     assert_eq!(comparable(&one), comparable(&two));
-    let g = one.to_str().unwrap();
-    let out = vsr(&[
-        "evaluate",
-        "--genome",
-        g,
-        "--terrain",
-        "flat",
-        "--seconds",
-        "2",
-    ]);
-    let result: Value = serde_json::from_slice(&out.stdout).unwrap();
+}
+
+#[test]
+fn a_run_file_can_be_evaluated_validated_ablated_and_fine_tuned() {
+    let g = scratch("source.json");
+    tiny_run("attention", 2, &g);
+    let result = json_of(&format!("evaluate --genome {g} --terrain flat --seconds 2"));
     assert!(result["velocity"].as_f64().unwrap().is_finite());
-    let out = vsr(&["validate", "--genome", g, "--seconds", "1", "--json"]);
-    let result: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let result = json_of(&format!("validate --genome {g} --seconds 1 --json"));
     assert_eq!(result["terrains"].as_array().unwrap().len(), 10);
     assert!(result["median"].as_f64().is_some());
-    let out = vsr(&[
-        "ablate",
-        "--genome",
-        g,
-        "--seconds",
-        "1",
-        "--last-second",
-        "2",
-        "--json",
-    ]);
-    let points: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let points = json_of(&format!(
+        "ablate --genome {g} --seconds 1 --last-second 2 --json"
+    ));
     assert_eq!(points.as_array().unwrap().len(), 3);
     let tuned = scratch("tuned.json");
-    let t = tuned.to_str().unwrap();
-    let out = vsr(&[
-        "finetune",
-        "--from",
-        g,
-        "--shape",
-        "comb-7x2",
-        "--evals",
-        "30",
-        "--seed",
-        "4",
-        "--population",
-        "10",
-        "--seconds",
-        "2",
-        "--out",
-        t,
-    ]);
+    let out = vsr_line(&format!(
+        "finetune --from {g} --shape comb-7x2 --evals 30 --seed 4 --population 10 \
+         --seconds 2 --out {tuned}"
+    ));
     assert!(
         out.status.success(),
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let (a, b) = (comparable(&one), comparable(&tuned));
-    assert_eq!(
-        a["best"]["genome"].as_array().unwrap()[..32],
-        b["best"]["genome"].as_array().unwrap()[..32]
-    );
+    let (a, b) = (comparable(&g), comparable(&tuned));
+    let block = |v: &Value| v["best"]["genome"].as_array().unwrap()[..32].to_vec();
+    assert_eq!(block(&a), block(&b));
+    assert_eq!(b["best"]["genome"].as_array().unwrap().len(), 77);
     assert_eq!(b["config"]["source"]["seed"], json!(3));
 }
 
 #[test]
 fn bad_input_exits_with_code_2_and_writes_nothing() {
     let out = scratch("never.json");
-    let o = out.to_str().unwrap();
     let evolve = |controller: &str, evals: &str, shape: &str| {
-        vec![
-            "evolve",
-            "--shape",
-            shape,
-            "--controller",
-            controller,
-            "--evals",
-            evals,
-            "--seed",
-            "1",
-            "--out",
-            o,
-        ]
-        .into_iter()
-        .map(String::from)
-        .collect::<Vec<_>>()
+        format!(
+            "evolve --shape {shape} --controller {controller} --evals {evals} --seed 1 --out {out}"
+        )
     };
-    let run = |args: Vec<String>, expected: &str| {
-        let args: Vec<&str> = args.iter().map(String::as_str).collect();
-        fails_with(&args, expected);
-    };
-    run(
-        evolve("transformer", "1000", "biped-4x3"),
-        "unknown controller 'transformer'",
-    );
-    run(evolve("mlp", "5", "biped-4x3"), "budget of 5");
-    run(evolve("mlp", "1000", "1111-11"), "invalid shape");
-    run(evolve("mlp", "-3", "biped-4x3"), "--evals");
+    let unknown = evolve("transformer", "1000", "biped-4x3");
+    fails_with(&unknown, "unknown controller 'transformer'");
+    fails_with(&evolve("mlp", "5", "biped-4x3"), "budget of 5");
+    fails_with(&evolve("mlp", "1000", "1111-11"), "invalid shape");
+    fails_with(&evolve("mlp", "-3", "biped-4x3"), "'-3'");
     fails_with(
-        &[
-            "evolve",
-            "--shape",
-            "biped-4x3",
-            "--controller",
-            "mlp",
-            "--evals",
-            "100",
-            "--seed",
-            "1",
-            "--out",
-            "/no/such/dir/run.json",
-        ],
-        "does not exist",
+        &format!("{} --threads 0", evolve("mlp", "100", "biped-4x3")),
+        "at least 1",
     );
-    assert!(!out.exists(), "a failed command must not write its output");
     fails_with(
-        &["validate", "--genome", "/no/such/run.json"],
+        &format!("{} --terrain hills", evolve("mlp", "100", "biped-4x3")),
+        "hilly-H-W",
+    );
+    let no_dir = "evolve --shape biped-4x3 --controller mlp --evals 100 --seed 1 \
+                  --out /no/such/dir/run.json";
+    fails_with(no_dir, "does not exist");
+    assert!(
+        !std::path::Path::new(&out).exists(),
+        "a failed command must not write its output"
+    );
+    fails_with(
+        "validate --genome /no/such/run.json",
         "cannot read run file",
     );
 }
 
 #[test]
 fn bad_run_files_exit_with_code_2() {
-    let good = scratch("good.json");
-    assert!(tiny_run("mlp", "2", &good).status.success());
-    let base: Value = serde_json::from_str(&std::fs::read_to_string(&good).unwrap()).unwrap();
-    let g = good.to_str().unwrap();
-    fails_with(
-        &[
-            "evaluate",
-            "--genome",
-            g,
-            "--terrain",
-            "flat",
-            "--shape",
-            "comb-7x2",
-        ],
-        "has 45 parameters",
-    );
-    fails_with(
-        &["evaluate", "--genome", g, "--terrain", "mountains"],
-        "invalid terrain",
-    );
-    fails_with(&["ablate", "--genome", g], "is a mlp controller");
-    let edits: Vec<(&str, Value, &str)> = vec![
-        ("nan.json", json!(null), "gene 2 is null"),
+    let g = scratch("good.json");
+    tiny_run("mlp", 2, &g);
+    let wrong_size = format!("evaluate --genome {g} --terrain flat --shape comb-7x2");
+    fails_with(&wrong_size, "has 45 parameters");
+    let bad_terrain = format!("evaluate --genome {g} --terrain mountains");
+    fails_with(&bad_terrain, "invalid terrain");
+    fails_with(&format!("ablate --genome {g}"), "is a mlp controller");
+    let base: Value = serde_json::from_str(&std::fs::read_to_string(&g).unwrap()).unwrap();
+    let mut nan = base.clone();
+    nan["best"]["genome"][2] = Value::Null;
+    let mut other_controller = base;
+    other_controller["best"]["controller"] = json!("attention");
+    other_controller["config"]["controller"] = json!("attention");
+    let cases = [
+        ("nan.json", nan.to_string(), "gene 2 is null"),
         (
-            "controller.json",
-            json!("attention"),
+            "other.json",
+            other_controller.to_string(),
             "attention controller",
         ),
+        ("text.json", "hello".to_string(), "not valid JSON"),
     ];
-    for (name, value, expected) in edits {
-        let mut v = base.clone();
-        if value.is_null() {
-            v["best"]["genome"][2] = value;
-        } else {
-            v["best"]["controller"] = value.clone();
-            v["config"]["controller"] = value;
-        }
+    for (name, text, expected) in cases {
         let path = scratch(name);
-        std::fs::write(&path, v.to_string()).unwrap();
-        fails_with(&["validate", "--genome", path.to_str().unwrap()], expected);
+        std::fs::write(&path, text).unwrap();
+        fails_with(&format!("validate --genome {path}"), expected);
     }
-    let text = scratch("text.json");
-    std::fs::write(&text, "hello").unwrap();
-    fails_with(
-        &[
-            "finetune",
-            "--from",
-            text.to_str().unwrap(),
-            "--shape",
-            "comb-7x2",
-            "--evals",
-            "100",
-            "--seed",
-            "1",
-            "--out",
-            scratch("t2.json").to_str().unwrap(),
-        ],
-        "not valid JSON",
+    let finetune_text = format!(
+        "finetune --from {} --shape comb-7x2 --evals 100 --seed 1 --out {}",
+        scratch("text.json"),
+        scratch("t2.json")
     );
+    fails_with(&finetune_text, "not valid JSON");
+    assert!(!std::path::Path::new(&scratch("t2.json")).exists());
 }

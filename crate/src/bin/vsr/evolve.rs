@@ -1,13 +1,15 @@
 //! `vsr evolve`: an evolutionary run from scratch, evaluated in parallel with rayon, written to
 //! a run file at the end. Also the runner shared with `vsr finetune`.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use vsr::controllers::ControllerKind;
-use vsr::experiment::{Evolution, EvolutionConfig, GenerationRecord, Job, Timing, TrainingTerrain};
+use vsr::experiment::{
+    Evolution, EvolutionConfig, GenerationRecord, Job, RunFile, Timing, TrainingTerrain,
+};
 use vsr::simulation::Shape;
 use vsr::{Error, Result};
 
@@ -89,6 +91,13 @@ pub fn execute(mut config: EvolutionConfig, options: &RunOptions) -> Result<()> 
         wall_seconds,
     }))?;
     crate::runfile::save(&options.out, &run)?;
+    print_summary(&run, &options.out);
+    Ok(())
+}
+
+/// One line on stdout about a finished run.
+fn print_summary(run: &RunFile, out: &Path) {
+    let (last, timing) = (run.generations.last(), run.timing);
     println!(
         "{} {} on {}: best {:.3} m/s after {} evaluations ({} generations) in {:.1} s on {} \
          threads; wrote {}",
@@ -96,13 +105,12 @@ pub fn execute(mut config: EvolutionConfig, options: &RunOptions) -> Result<()> 
         run.config.shape.to_rows(),
         String::from(run.config.terrain.clone()),
         run.best.fitness,
-        evolution.evaluations(),
+        last.map_or(0, |g| g.evaluations),
         run.generations.len(),
-        wall_seconds,
-        threads,
-        options.out.display()
+        timing.map_or(0.0, |t| t.wall_seconds),
+        timing.map_or(0, |t| t.threads),
+        out.display()
     );
-    Ok(())
 }
 
 /// A local rayon pool of `threads` threads (all cores when `None`).
