@@ -141,9 +141,15 @@ impl World {
             &mut self.contacts,
         );
         self.touching.iter_mut().for_each(|t| *t = false);
-        for c in &self.contacts {
+        for c in self.contacts.iter().filter(|c| c.separation <= 0.0) {
             self.touching[c.square / 4] = true;
         }
+    }
+
+    /// Changes the robot-ground friction coefficient (default 1.414, SPEC 3); for
+    /// experiments and tests.
+    pub fn set_friction(&mut self, friction: f64) {
+        self.solver.friction = friction;
     }
 
     /// Steps taken so far.
