@@ -85,11 +85,19 @@ test('an invalid shape shows a readable message and the previous robot keeps goi
   assert.deepEqual(problems, []);
 });
 
-test('an invalid terrain shows a readable message', async () => {
+test('a preset loads, then an invalid terrain shows a readable message and keeps it', async () => {
+  await page.locator('#shape').fill('comb-7x2');
+  await page.locator('#shape').press('Enter');
+  await page.waitForFunction(() => /^11 voxels/.test(document.getElementById('status')?.textContent ?? ''),
+    undefined, { timeout: 10_000 });
+  assert.equal(await page.locator('#message').isHidden(), true, 'a valid shape clears the message');
   await page.locator('#terrain').fill('hilly-one');
   await page.locator('#terrain').press('Enter');
   await page.waitForFunction(() => /invalid terrain/i.test(document.getElementById('message')?.textContent ?? ''),
     undefined, { timeout: 10_000 });
+  const t0 = await figure('sim-time');
+  await waitForSimTime(t0 + 0.5);
+  assert.match(String(await page.locator('#status').textContent()), /^11 voxels/, 'still the comb');
   assert.deepEqual(problems, []);
 });
 
