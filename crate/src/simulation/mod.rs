@@ -2,9 +2,21 @@
 //! springs, ropes and contacts on a terrain polyline, stepped at dt = 1/60 s.
 //! Knows bodies, springs, contacts, terrains and sensors; nothing about genomes.
 
+pub mod assembly;
+pub mod body;
+pub mod collide;
+pub mod constants;
+pub mod contact;
+pub mod ground;
 pub mod java_random;
+pub mod joint;
+pub mod ropes;
 pub mod shape;
+pub mod springs;
 pub mod terrain;
+pub mod voxel;
+pub mod world;
 
-
-
+pub use shape::Shape;
+pub use terrain::Terrain;
+pub use world::World;

@@ -1,1 +1,21 @@
+//! `vsr`: the command-line face of VSR Playground. Each subcommand lives in its own
+//! file; all of them are thin shells over the library. Bad arguments exit with code 2
+//! and a message on stderr.
+
+#[cfg(not(target_arch = "wasm32"))]
+mod bench;
+#[cfg(not(target_arch = "wasm32"))]
+mod cli;
+#[cfg(not(target_arch = "wasm32"))]
+mod simulate;
+#[cfg(not(target_arch = "wasm32"))]
+mod terrain;
+
+#[cfg(not(target_arch = "wasm32"))]
+fn main() {
+    std::process::exit(cli::run());
+}
+
+/// The CLI is native only; the wasm build of the package uses the library.
+#[cfg(target_arch = "wasm32")]
 fn main() {}

@@ -1,0 +1,185 @@
+//! A locomotion episode (SPEC 8): a robot on a terrain driven by a policy whose output
+//! is latched every 20 steps (k_act = 20), with the reference's clock: at loop
+//! iteration k (from 0) the world steps first, then the time is (k + 1) dt and the
+//! policy is asked when k % 20 == 0; its output drives the following steps. Fitness is the centre's x displacement from after the first step to
+//! after the last, over the elapsed time.
+
+use super::gait::PhaseGait;
+use crate::error::{Error, Result};
+use crate::simulation::constants::{ACTUATION_HOLD_STEPS, DT};
+use crate::simulation::{Shape, Terrain, World};
+
+/// Number of steps the reference loop takes for `seconds` of simulated time: it adds
+/// dt to t in floating point while t < seconds (1801 steps for 30 s).
+pub fn steps_for(seconds: f64) -> u64 {
+    let (mut t, mut n) = (0.0, 0u64);
+    while t < seconds {
+        t += DT;
+        n += 1;
+    }
+    n
+}
+
+/// The result of an episode.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Outcome {
+    /// Fitness: x displacement of the centre after step 1 -> after the last step,
+    /// divided by the time between them (m/s).
+    pub velocity: f64,
+    /// That displacement (m).
+    pub distance: f64,
+    /// Steps taken.
+    pub steps: u64,
+    /// Simulated seconds.
+    pub seconds: f64,
+}
+
+/// A robot on a terrain under a phase gait, stepped on demand (the page's episode).
+#[derive(Debug, Clone)]
+pub struct GaitEpisode {
+    world: World,
+    terrain: Terrain,
+    gait: PhaseGait,
+    columns: Vec<usize>,
+    actuation: Vec<f64>,
+    first_x: Option<f64>,
+}
+
+impl GaitEpisode {
+    /// Builds the episode from a shape ("biped-4x3", "1111-1111-1001"), a terrain name
+    /// and a gait u = sin(2 pi f t + phi x).
+    pub fn new(shape: &str, terrain: &str, frequency: f64, phase: f64) -> Result<GaitEpisode> {
+        let shape = Shape::parse(shape)?;
+        let terrain = Terrain::parse(terrain)?;
+        let gait = PhaseGait::new(frequency, phase)?;
+        Ok(GaitEpisode::from_parts(&shape, terrain, gait))
+    }
+
+    /// Builds the episode from parsed parts.
+    pub fn from_parts(shape: &Shape, terrain: Terrain, gait: PhaseGait) -> GaitEpisode {
+        let world = World::new(shape.voxels(), terrain.xs(), terrain.ys());
+        let columns: Vec<usize> = shape.voxels().iter().map(|c| c.0).collect();
+        GaitEpisode {
+            actuation: vec![0.0; columns.len()],
+            world,
+            terrain,
+            gait,
+            columns,
+            first_x: None,
+        }
+    }
+
+    /// Advances `steps` steps; an error if the simulation became non-finite.
+    pub fn step(&mut self, steps: usize) -> Result<()> {
+        for _ in 0..steps {
+            self.world.step();
+            let k = self.world.steps();
+            if (k - 1) % ACTUATION_HOLD_STEPS as u64 == 0 {
+                let t = k as f64 * DT;
+                self.gait.actuate(t, &self.columns, &mut self.actuation);
+                self.world.set_actuation(&self.actuation);
+            }
+            if self.first_x.is_none() {
+                self.first_x = Some(self.world.centre().0);
+            }
+        }
+        if self.world.is_finite() {
+            Ok(())
+        } else {
+            Err(Error::Unstable(format!(
+                "non-finite state after {} steps",
+                self.world.steps()
+            )))
+        }
+    }
+
+    /// Runs to `seconds` of simulated time (reference step count) and reports.
+    pub fn run(&mut self, seconds: f64) -> Result<Outcome> {
+        let target = steps_for(seconds);
+        let remaining = target.saturating_sub(self.world.steps());
+        self.step(remaining as usize)?;
+        Ok(self.outcome())
+    }
+
+    /// The fitness so far.
+    pub fn outcome(&self) -> Outcome {
+        let steps = self.world.steps();
+        let distance = self.first_x.map_or(0.0, |x0| self.world.centre().0 - x0);
+        let elapsed = steps.saturating_sub(1) as f64 * DT;
+        Outcome {
+            velocity: if elapsed > 0.0 {
+                distance / elapsed
+            } else {
+                0.0
+            },
+            distance,
+            steps,
+            seconds: steps as f64 * DT,
+        }
+    }
+
+    /// The actuation currently held for every voxel.
+    pub fn actuation(&self) -> &[f64] {
+        &self.actuation
+    }
+
+    /// The world (read-only).
+    pub fn world(&self) -> &World {
+        &self.world
+    }
+
+    /// The terrain.
+    pub fn terrain(&self) -> &Terrain {
+        &self.terrain
+    }
+
+    /// Simulated seconds so far.
+    pub fn time(&self) -> f64 {
+        self.world.time()
+    }
+
+    /// Number of voxels.
+    pub fn voxel_count(&self) -> usize {
+        self.world.voxel_count()
+    }
+
+    /// Robot centre x (m).
+    pub fn centre_x(&self) -> f64 {
+        self.world.centre().0
+    }
+
+    /// Robot centre y (m).
+    pub fn centre_y(&self) -> f64 {
+        self.world.centre().1
+    }
+
+    /// Writes 8 floats per voxel: outer corners x, y in order SW, SE, NE, NW.
+    pub fn write_voxel_corners(&self, out: &mut [f32]) {
+        for (v, chunk) in out.chunks_exact_mut(8).enumerate().take(self.voxel_count()) {
+            for (c, (x, y)) in self.world.voxel_corners(v).into_iter().enumerate() {
+                chunk[2 * c] = x as f32;
+                chunk[2 * c + 1] = y as f32;
+            }
+        }
+    }
+
+    /// Writes one float per voxel: its area ratio.
+    pub fn write_area_ratios(&self, out: &mut [f32]) {
+        for (v, a) in out.iter_mut().enumerate().take(self.voxel_count()) {
+            *a = self.world.area_ratio(v) as f32;
+        }
+    }
+
+    /// Writes 12 floats per voxel: its 4 corner squares as centre x, y and angle,
+    /// order SW, SE, NE, NW.
+    pub fn write_corner_bodies(&self, out: &mut [f32]) {
+        for (s, chunk) in out
+            .chunks_exact_mut(3)
+            .enumerate()
+            .take(4 * self.voxel_count())
+        {
+            let (x, y, a) = self.world.square_pose(s);
+            chunk.copy_from_slice(&[x as f32, y as f32, a as f32]);
+        }
+    }
+}

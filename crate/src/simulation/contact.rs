@@ -1,0 +1,150 @@
+//! Contact constraints between pieces and the (static) ground, solved by sequential
+//! impulses like the reference: Coulomb friction (1.414) then a non-negative normal
+//! impulse with restitution (0.1 above 1 m/s approach), warm started from the previous
+//! step's impulses of the same contact key; then Baumgarte-limited position correction.
+
+use super::body::{Pieces, Velocity};
+use super::collide::Contact;
+use super::constants::{
+    BAUMGARTE, FRICTION, LINEAR_SLOP, MAX_LINEAR_CORRECTION, RESTITUTION, RESTITUTION_VELOCITY,
+};
+
+/// A contact prepared for one step.
+#[derive(Debug, Clone, Copy, Default)]
+struct Row {
+    piece: usize,
+    /// Push direction (toward the body).
+    n: (f64, f64),
+    /// Offset of the contact point from the piece's centre of mass.
+    r: (f64, f64),
+    normal_mass: f64,
+    tangent_mass: f64,
+    /// Target separating velocity from restitution.
+    bounce: f64,
+    normal_impulse: f64,
+    tangent_impulse: f64,
+}
+
+/// The contact solver's state: this step's rows and last step's impulses by key.
+#[derive(Debug, Clone, Default)]
+pub struct ContactSolver {
+    rows: Vec<Row>,
+    keys: Vec<u64>,
+    previous: Vec<(u64, f64, f64)>,
+}
+
+#[inline]
+fn cross(r: (f64, f64), n: (f64, f64)) -> f64 {
+    r.0 * n.1 - r.1 * n.0
+}
+
+impl ContactSolver {
+    /// Prepares the rows for `contacts` and applies warm-start impulses of contacts
+    /// that persist from the previous step.
+    pub fn prepare(&mut self, contacts: &[Contact], pieces: &mut Pieces) {
+        self.previous.clear();
+        for (row, key) in self.rows.iter().zip(&self.keys) {
+            self.previous
+                .push((*key, row.normal_impulse, row.tangent_impulse));
+        }
+        self.rows.clear();
+        self.keys.clear();
+        let mut k = 0;
+        for c in contacts {
+            let (n, r, _) = c.evaluate(pieces);
+            let p = c.piece;
+            let (im, ii) = (pieces.inv_mass[p], pieces.inv_inertia[p]);
+            let t = (n.1, -n.0);
+            let (rn, rt) = (cross(r, n), cross(r, t));
+            let (vx, vy) = pieces.point_velocity(p, r.0, r.1);
+            let vn = vx * n.0 + vy * n.1;
+            while k < self.previous.len() && self.previous[k].0 < c.key {
+                k += 1;
+            }
+            let (ni, ti) = match self.previous.get(k) {
+                Some(&(key, ni, ti)) if key == c.key => (ni, ti),
+                _ => (0.0, 0.0),
+            };
+            let row = Row {
+                piece: p,
+                n,
+                r,
+                normal_mass: 1.0 / (im + ii * rn * rn),
+                tangent_mass: 1.0 / (im + ii * rt * rt),
+                bounce: if vn < -RESTITUTION_VELOCITY {
+                    -RESTITUTION * vn
+                } else {
+                    0.0
+                },
+                normal_impulse: ni,
+                tangent_impulse: ti,
+            };
+            apply(pieces, &row, ni * n.0 + ti * t.0, ni * n.1 + ti * t.1);
+            self.rows.push(row);
+            self.keys.push(c.key);
+        }
+    }
+
+    /// One sweep: friction, then the normal impulse, for every contact.
+    pub fn solve_velocity(&mut self, pieces: &mut Pieces) {
+        for row in &mut self.rows {
+            let t = (row.n.1, -row.n.0);
+            let (vx, vy) = pieces.point_velocity(row.piece, row.r.0, row.r.1);
+            let vt = vx * t.0 + vy * t.1;
+            let max = FRICTION * row.normal_impulse;
+            let old = row.tangent_impulse;
+            row.tangent_impulse = (old - vt * row.tangent_mass).clamp(-max, max);
+            let d = row.tangent_impulse - old;
+            apply(pieces, row, d * t.0, d * t.1);
+
+            let (vx, vy) = pieces.point_velocity(row.piece, row.r.0, row.r.1);
+            let vn = vx * row.n.0 + vy * row.n.1;
+            let old = row.normal_impulse;
+            row.normal_impulse = (old - (vn - row.bounce) * row.normal_mass).max(0.0);
+            let d = row.normal_impulse - old;
+            apply(pieces, row, d * row.n.0, d * row.n.1);
+        }
+    }
+
+    /// One position sweep over `contacts`; true when none penetrates by more than
+    /// three times the slop.
+    pub fn solve_position(contacts: &[Contact], pieces: &mut Pieces) -> bool {
+        let mut min_separation: f64 = 0.0;
+        for c in contacts {
+            let (n, r, separation) = c.evaluate(pieces);
+            min_separation = min_separation.min(separation);
+            let correction =
+                (BAUMGARTE * (separation + LINEAR_SLOP)).clamp(-MAX_LINEAR_CORRECTION, 0.0);
+            if correction == 0.0 {
+                continue;
+            }
+            let p = c.piece;
+            let rn = cross(r, n);
+            let k = pieces.inv_mass[p] + pieces.inv_inertia[p] * rn * rn;
+            let impulse = -correction / k;
+            pieces.push_position(p, impulse * n.0, impulse * n.1, r.0, r.1);
+        }
+        min_separation >= -3.0 * LINEAR_SLOP
+    }
+
+    /// Number of contact rows this step.
+    pub fn len(&self) -> usize {
+        self.rows.len()
+    }
+
+    /// True if nothing touches the ground.
+    pub fn is_empty(&self) -> bool {
+        self.rows.is_empty()
+    }
+}
+
+/// Applies impulse (px, py) at the row's contact point.
+#[inline]
+fn apply(pieces: &mut Pieces, row: &Row, px: f64, py: f64) {
+    let p = row.piece;
+    let (im, ii) = (pieces.inv_mass[p], pieces.inv_inertia[p]);
+    let v: &mut Velocity = &mut pieces.vel[p];
+    v.vx += im * px;
+    v.vy += im * py;
+    v.w += ii * (row.r.0 * py - row.r.1 * px);
+}

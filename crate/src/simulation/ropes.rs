@@ -1,0 +1,103 @@
+//! Rope constraints: the centres of adjacent corner squares of a voxel never come
+//! closer than 1.2 m, so the squares cannot overlap (SPEC 2). A rope is a one-sided
+//! hard distance constraint, active only while it is at its limit: a clamped impulse in
+//! the velocity solver and a Baumgarte-limited push in the position solver.
+
+use super::body::{Pieces, Velocity};
+use super::constants::{LINEAR_SLOP, MAX_LINEAR_CORRECTION, ROPE_MIN_LENGTH};
+use super::joint::JointRow;
+
+/// One rope between the centres of two corner squares.
+#[derive(Debug, Clone, Copy)]
+pub struct RopeDef {
+    /// Piece and offset of the first square centre from its centre of mass.
+    pub a: (usize, f64, f64),
+    /// Piece and offset of the second square centre.
+    pub b: (usize, f64, f64),
+}
+
+/// Every rope of a robot, with the active rows of the current step.
+#[derive(Debug, Clone, Default)]
+pub struct Ropes {
+    defs: Vec<RopeDef>,
+    active: Vec<(usize, JointRow)>,
+    impulse: Vec<f64>,
+}
+
+impl Ropes {
+    /// Builds the rope set.
+    pub fn new(defs: Vec<RopeDef>) -> Self {
+        let n = defs.len();
+        Ropes {
+            defs,
+            active: Vec::with_capacity(n),
+            impulse: vec![0.0; n],
+        }
+    }
+
+    /// Number of ropes.
+    pub fn len(&self) -> usize {
+        self.defs.len()
+    }
+
+    /// True if there is no rope.
+    pub fn is_empty(&self) -> bool {
+        self.defs.is_empty()
+    }
+
+    fn row(&self, pieces: &Pieces, i: usize) -> JointRow {
+        let d = &self.defs[i];
+        let ra = pieces.rotate(d.a.0, d.a.1, d.a.2);
+        let rb = pieces.rotate(d.b.0, d.b.1, d.b.2);
+        JointRow::new(pieces, d.a.0, d.b.0, ra, rb)
+    }
+
+    /// Finds the ropes at their limit and applies their warm-start impulses.
+    pub fn prepare(&mut self, pieces: &mut Pieces) {
+        self.active.clear();
+        for i in 0..self.defs.len() {
+            let row = self.row(pieces, i);
+            if row.length <= ROPE_MIN_LENGTH {
+                row.apply(&mut pieces.vel, self.impulse[i]);
+                self.active.push((i, row));
+            } else {
+                self.impulse[i] = 0.0;
+            }
+        }
+    }
+
+    /// One sweep over the active ropes: the anchors may separate, never approach.
+    #[inline]
+    pub fn solve_velocity(&mut self, vel: &mut [Velocity]) {
+        for (i, row) in &self.active {
+            let lambda = -row.velocity(vel) / row.inv_mass;
+            let old = self.impulse[*i];
+            let new = (old + lambda).max(0.0);
+            self.impulse[*i] = new;
+            row.apply(vel, new - old);
+        }
+    }
+
+    /// One position sweep; returns true when no rope is shorter than its limit by more
+    /// than the slop.
+    pub fn solve_position(&self, pieces: &mut Pieces) -> bool {
+        let mut ok = true;
+        for (i, _) in &self.active {
+            let row = self.row(pieces, *i);
+            let error = row.length - ROPE_MIN_LENGTH;
+            if error >= -LINEAR_SLOP {
+                continue;
+            }
+            ok = false;
+            let c = (error + LINEAR_SLOP).clamp(-MAX_LINEAR_CORRECTION, 0.0);
+            let impulse = -c / row.inv_mass;
+            let d = &self.defs[*i];
+            let (px, py) = (row.nx * impulse, row.ny * impulse);
+            let ra = pieces.rotate(d.a.0, d.a.1, d.a.2);
+            let rb = pieces.rotate(d.b.0, d.b.1, d.b.2);
+            pieces.push_position(d.a.0, -px, -py, ra.0, ra.1);
+            pieces.push_position(d.b.0, px, py, rb.0, rb.1);
+        }
+        ok
+    }
+}

@@ -1,0 +1,189 @@
+//! The 18 soft springs of every voxel and their actuation.
+//!
+//! Each spring is a soft distance joint (SPEC 2) solved like the reference: a Box2D /
+//! dyn4j soft constraint, which is an implicit-Euler spring-damper folded into the
+//! sequential-impulse velocity solver. Its stiffness k = m_ref (2 pi f)^2 and damping
+//! c = 2 m_ref zeta (2 pi f) come from the effective mass m_ref of the two *single*
+//! corner squares it joins, recomputed every step from the current geometry exactly as
+//! the reference does. The impulse itself acts on the merged rigid pieces, so the
+//! implicit spring is exact for the merged system.
+//!
+//! Layout: static data per spring (pieces, anchors, rest-length table, voxel) in
+//! parallel vectors; `rows`, `soft` and `impulse` are per-step scratch, rebuilt by
+//! [`Springs::prepare`] without allocating.
+
+use super::body::{Pieces, Velocity};
+use super::constants::{
+    AREA_RATIO_MAX_DELTA, CORNER_INERTIA, CORNER_MASS, CORNER_SIDE, DT, SPRING_DAMPING_RATIO,
+    SPRING_FREQUENCY, VOXEL_SIDE,
+};
+use super::joint::JointRow;
+
+/// Softness terms of one spring for one step.
+#[derive(Debug, Clone, Copy, Default)]
+struct Soft {
+    /// 1 / (effective mass + softness).
+    inv_k: f64,
+    /// Velocity bias from the spring's stretch.
+    bias: f64,
+    /// Softness: impulse feedback per accumulated impulse.
+    gamma: f64,
+    /// Spring constant k (N/m), kept for the energy audit.
+    stiffness: f64,
+    /// Current length minus rest length (m), kept for the energy audit.
+    stretch: f64,
+}
+
+/// Kind of spring, which fixes its rest-length range.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SpringKind {
+    /// Inner or outer side spring (rest 0.6 m).
+    Side,
+    /// Crossed side spring (rest sqrt(1.2^2 + 0.6^2) m).
+    Crossed,
+    /// Central diagonal between opposite corner-square centres (rest 1.8 sqrt 2 m).
+    Diagonal,
+}
+
+impl SpringKind {
+    /// Spring length for a voxel whose side measures `side` metres.
+    pub fn length_for_side(self, side: f64) -> f64 {
+        let gap = side - 2.0 * CORNER_SIDE;
+        match self {
+            SpringKind::Side => gap,
+            SpringKind::Crossed => (CORNER_SIDE * CORNER_SIDE + gap * gap).sqrt(),
+            SpringKind::Diagonal => (side - CORNER_SIDE) * std::f64::consts::SQRT_2,
+        }
+    }
+
+    /// Rest lengths [at rest, fully contracted (u = +1), fully expanded (u = -1)].
+    pub fn rest_table(self) -> [f64; 3] {
+        let min_side = (VOXEL_AREA_MIN).sqrt();
+        let max_side = (VOXEL_AREA_MAX).sqrt();
+        [
+            self.length_for_side(VOXEL_SIDE),
+            self.length_for_side(min_side),
+            self.length_for_side(max_side),
+        ]
+    }
+}
+
+const VOXEL_AREA_MIN: f64 = VOXEL_SIDE * VOXEL_SIDE * (1.0 - AREA_RATIO_MAX_DELTA);
+const VOXEL_AREA_MAX: f64 = VOXEL_SIDE * VOXEL_SIDE * (1.0 + AREA_RATIO_MAX_DELTA);
+
+/// One spring as the assembler describes it.
+#[derive(Debug, Clone, Copy)]
+pub struct SpringDef {
+    /// Piece holding anchor a, and the anchor's offset from that piece's centre of mass.
+    pub a: (usize, f64, f64),
+    /// Piece holding anchor b, and its offset.
+    pub b: (usize, f64, f64),
+    /// Anchor a's offset from the centre of its own corner square (for m_ref).
+    pub qa: (f64, f64),
+    /// Anchor b's offset from the centre of its own corner square.
+    pub qb: (f64, f64),
+    /// Which rest-length range applies.
+    pub kind: SpringKind,
+    /// Voxel whose actuation drives this spring.
+    pub voxel: usize,
+}
+
+/// Every spring of a robot.
+#[derive(Debug, Clone, Default)]
+pub struct Springs {
+    defs: Vec<SpringDef>,
+    table: Vec<[f64; 3]>,
+    target: Vec<f64>,
+    rows: Vec<JointRow>,
+    soft: Vec<Soft>,
+    impulse: Vec<f64>,
+}
+
+impl Springs {
+    /// Builds the spring set, all at their rest length.
+    pub fn new(defs: Vec<SpringDef>) -> Self {
+        let table: Vec<[f64; 3]> = defs.iter().map(|d| d.kind.rest_table()).collect();
+        let n = defs.len();
+        Springs {
+            target: table.iter().map(|t| t[0]).collect(),
+            table,
+            defs,
+            rows: vec![JointRow::default(); n],
+            soft: vec![Soft::default(); n],
+            impulse: vec![0.0; n],
+        }
+    }
+
+    /// Number of springs.
+    pub fn len(&self) -> usize {
+        self.defs.len()
+    }
+
+    /// True if there is no spring.
+    pub fn is_empty(&self) -> bool {
+        self.defs.is_empty()
+    }
+
+    /// Sets every spring's rest length from its voxel's actuation u in [-1, 1]
+    /// (+1 contracts, -1 expands), moving linearly toward the range's end.
+    pub fn set_actuation(&mut self, actuation: &[f64]) {
+        for (i, d) in self.defs.iter().enumerate() {
+            let u = actuation[d.voxel].clamp(-1.0, 1.0);
+            let [rest, min, max] = self.table[i];
+            self.target[i] = if u >= 0.0 {
+                rest + u * (min - rest)
+            } else {
+                rest - u * (max - rest)
+            };
+        }
+    }
+
+    /// Prepares every row for this step and applies the warm-start impulses.
+    pub fn prepare(&mut self, pieces: &mut Pieces) {
+        let omega = 2.0 * std::f64::consts::PI * SPRING_FREQUENCY;
+        for (i, d) in self.defs.iter().enumerate() {
+            let ra = pieces.rotate(d.a.0, d.a.1, d.a.2);
+            let rb = pieces.rotate(d.b.0, d.b.1, d.b.2);
+            let row = JointRow::new(pieces, d.a.0, d.b.0, ra, rb);
+            let qa = pieces.rotate(d.a.0, d.qa.0, d.qa.1);
+            let qb = pieces.rotate(d.b.0, d.qb.0, d.qb.1);
+            let qna = qa.0 * row.ny - qa.1 * row.nx;
+            let qnb = qb.0 * row.ny - qb.1 * row.nx;
+            let inv_ref = 2.0 / CORNER_MASS + (qna * qna + qnb * qnb) / CORNER_INERTIA;
+            let m_ref = 1.0 / inv_ref;
+            let k = m_ref * omega * omega;
+            let c = 2.0 * m_ref * SPRING_DAMPING_RATIO * omega;
+            let gamma = 1.0 / (DT * (c + DT * k));
+            let stretch = row.length - self.target[i];
+            self.soft[i] = Soft {
+                inv_k: 1.0 / (row.inv_mass + gamma),
+                bias: stretch * DT * k * gamma,
+                gamma,
+                stiffness: k,
+                stretch,
+            };
+            row.apply(&mut pieces.vel, self.impulse[i]);
+            self.rows[i] = row;
+        }
+    }
+
+    /// One sequential-impulse sweep over every spring.
+    #[inline]
+    pub fn solve_velocity(&mut self, vel: &mut [Velocity]) {
+        for ((row, soft), acc) in self.rows.iter().zip(&self.soft).zip(&mut self.impulse) {
+            let cdot = row.velocity(vel);
+            let lambda = -soft.inv_k * (cdot + soft.bias + soft.gamma * *acc);
+            *acc += lambda;
+            row.apply(vel, lambda);
+        }
+    }
+
+    /// Potential energy stored in the springs (J): sum of k x^2 / 2 with the stiffness
+    /// and stretch of the last prepared step.
+    pub fn potential_energy(&self) -> f64 {
+        self.soft
+            .iter()
+            .map(|s| 0.5 * s.stiffness * s.stretch * s.stretch)
+            .sum()
+    }
+}
