@@ -82,6 +82,10 @@ async function handle(root, req, res) {
     'content-type': MIME[/** @type {keyof MIME} */ (path.extname(file).toLowerCase())] ?? 'application/octet-stream',
     'content-length': info.size,
     'cache-control': 'no-store',
+    // Cross-origin isolation: finer performance.now() in the worker (the engine-speed
+    // figure) and SharedArrayBuffer for later multi-worker runs. Everything is same-origin.
+    'cross-origin-opener-policy': 'same-origin',
+    'cross-origin-embedder-policy': 'require-corp',
   });
   if (req.method === 'HEAD') res.end();
   else createReadStream(file).pipe(res);

@@ -11,8 +11,9 @@ import { AREA_CONTRACTED, AREA_EXPANDED, BODY_FLOATS, CORNER_BODY_SIDE, CORNER_F
 const VIEW_WIDTH_M = 48;
 /** Metres of world visible from bottom to top (at least). */
 const VIEW_HEIGHT_M = 22;
-/** Camera smoothing time constant (s): larger is lazier. */
-const CAMERA_LAG_S = 0.3;
+/** Camera smoothing time constants (s), larger is lazier: vertical is lazier so hops don't shake the view. */
+const CAMERA_LAG_X_S = 0.3;
+const CAMERA_LAG_Y_S = 1.0;
 const RED = [214, 48, 49];
 const YELLOW = [246, 200, 30];
 const GREEN = [39, 160, 80];
@@ -81,9 +82,9 @@ export class Renderer {
   followRobot(dt) {
     if (!this.frame) return;
     const target = { x: this.frame.centreX, y: this.frame.centreY };
-    const k = this.snapCamera ? 1 : 1 - Math.exp(-Math.max(0, dt) / CAMERA_LAG_S);
-    this.camera.x += (target.x - this.camera.x) * k;
-    this.camera.y += (target.y - this.camera.y) * k;
+    const smooth = (/** @type {number} */ lag) => (this.snapCamera ? 1 : 1 - Math.exp(-Math.max(0, dt) / lag));
+    this.camera.x += (target.x - this.camera.x) * smooth(CAMERA_LAG_X_S);
+    this.camera.y += (target.y - this.camera.y) * smooth(CAMERA_LAG_Y_S);
     this.snapCamera = false;
   }
 
