@@ -101,6 +101,20 @@ test('a preset loads, then an invalid terrain shows a readable message and keeps
   assert.deepEqual(problems, []);
 });
 
+test('Pause stops the clock, Reset starts the episode again, Start resumes', async () => {
+  await page.locator('#pause').click();
+  await page.waitForFunction(() => document.body.dataset.running === 'false', undefined, { timeout: 5_000 });
+  const paused = await figure('sim-time');
+  await page.waitForTimeout(500);
+  assert.equal(await figure('sim-time'), paused, 'time stands still while paused');
+  await page.locator('#reset').click();
+  await page.waitForFunction(() => Number(document.getElementById('sim-time')?.dataset.value) < 0.1,
+    undefined, { timeout: 5_000 });
+  await page.locator('#start').click();
+  await waitForSimTime(1);
+  assert.deepEqual(problems, []);
+});
+
 /** True when some canvas pixels have a voxel colour (strongly red, yellow or green). */
 async function canvasHasRobotColours() {
   return page.evaluate(() => {
