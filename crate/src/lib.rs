@@ -5,8 +5,10 @@
 //! <- (`wasm` for the page, `bin/vsr` for the command line). The core has no clock,
 //! no I/O and no ambient randomness: every random draw comes from an explicit seed.
 
+pub mod controllers;
 pub mod error;
 pub mod experiment;
+pub mod genetics;
 pub mod simulation;
 
 #[cfg(target_arch = "wasm32")]

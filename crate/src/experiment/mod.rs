@@ -2,6 +2,7 @@
 
 pub mod episode;
 pub mod gait;
+pub mod seeds;
 
 pub use episode::{steps_for, GaitEpisode, Outcome};
 pub use gait::PhaseGait;

@@ -1,0 +1,150 @@
+//! Frozen attention (SPEC 7 ablation): an attention controller whose matrices stop changing.
+//!
+//! Before `freeze()` it is plain [`Attention`]. After it, each voxel keeps the A it had at
+//! that moment (16 floats per voxel, row-major, as in `attention()`) and applies it to the
+//! live readings: u_i = tanh(b + sum_r W[r n + i] tanh((A_frozen s)_r)). `reset()` keeps the
+//! frozen matrices, so a fresh episode can run with them. The genome layout is the attention one.
+
+use super::{io_fits, Attention, Controller, ATTENTION_FLOATS_PER_VOXEL};
+use crate::{Error, Result};
+
+/// Attention whose per-voxel matrices can be frozen; see the module doc.
+#[derive(Debug, Clone)]
+pub struct FrozenAttention {
+    inner: Attention,
+    frozen: bool,
+}
+
+impl FrozenAttention {
+    /// Wraps an attention controller (its parameters and current matrices are kept).
+    pub fn new(inner: Attention) -> Self {
+        Self {
+            inner,
+            frozen: false,
+        }
+    }
+
+    /// Keeps every voxel's current A from now on. Freezing before any control call freezes
+    /// all-zero matrices.
+    pub fn freeze(&mut self) {
+        self.frozen = true;
+    }
+
+    /// Freezes the given matrices (16 floats per voxel, e.g. recorded from another episode).
+    /// Fails on a wrong length or a non-finite value.
+    pub fn freeze_with(&mut self, matrices: &[f32]) -> Result<()> {
+        let expected = ATTENTION_FLOATS_PER_VOXEL * self.inner.voxel_count();
+        if matrices.len() != expected {
+            return Err(Error::Input(format!(
+                "expected {expected} attention values (16 per voxel), got {}",
+                matrices.len()
+            )));
+        }
+        if matrices.iter().any(|v| !v.is_finite()) {
+            return Err(Error::Input("attention values must be finite".into()));
+        }
+        self.inner.attention_mut().copy_from_slice(matrices);
+        self.frozen = true;
+        Ok(())
+    }
+
+    /// Goes back to recomputing A at every call.
+    pub fn unfreeze(&mut self) {
+        self.frozen = false;
+    }
+
+    /// True once `freeze` (or `freeze_with`) has been called, until `unfreeze`.
+    pub fn is_frozen(&self) -> bool {
+        self.frozen
+    }
+}
+
+impl Controller for FrozenAttention {
+    fn param_count(&self) -> usize {
+        self.inner.param_count()
+    }
+
+    fn params(&self) -> Vec<f32> {
+        self.inner.params()
+    }
+
+    fn set_params(&mut self, p: &[f32]) -> Result<()> {
+        self.inner.set_params(p)
+    }
+
+    fn reset(&mut self) {
+        if !self.frozen {
+            self.inner.reset();
+        }
+    }
+
+    fn control(&mut self, sensors: &[f32], out: &mut [f32]) {
+        if !io_fits(self.inner.voxel_count(), sensors, out) {
+            return;
+        }
+        if !self.frozen {
+            self.inner.update_attention(sensors);
+        }
+        self.inner.apply_attention(sensors, out);
+    }
+
+    fn needs_every_step(&self) -> bool {
+        false
+    }
+
+    fn attention(&self) -> Option<&[f32]> {
+        self.inner.attention()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
+
+    fn random_vec(rng: &mut ChaCha8Rng, len: usize, scale: f32) -> Vec<f32> {
+        (0..len).map(|_| rng.gen_range(-scale..scale)).collect()
+    }
+
+    #[test]
+    fn frozen_attention_keeps_a_while_sensors_still_drive_the_output() {
+        let mut rng = ChaCha8Rng::seed_from_u64(18);
+        let n = 3;
+        let mut plain = Attention::new(n);
+        let p = random_vec(&mut rng, plain.param_count(), 1.5);
+        plain.set_params(&p).unwrap();
+        let mut frozen = FrozenAttention::new(plain.clone());
+        let s0 = random_vec(&mut rng, 4 * n, 1.0);
+        let (mut u_plain, mut u_frozen) = (vec![0.0; n], vec![0.0; n]);
+        plain.control(&s0, &mut u_plain);
+        frozen.control(&s0, &mut u_frozen);
+        assert_eq!(u_plain, u_frozen, "before freeze it is plain attention");
+        frozen.freeze();
+        let a_frozen = frozen.attention().unwrap().to_vec();
+        let mut outputs = Vec::new();
+        for _ in 0..5 {
+            let s = random_vec(&mut rng, 4 * n, 1.0);
+            frozen.control(&s, &mut u_frozen);
+            plain.control(&s, &mut u_plain);
+            assert_eq!(frozen.attention().unwrap(), &a_frozen[..], "A stays fixed");
+            assert_ne!(
+                plain.attention().unwrap(),
+                &a_frozen[..],
+                "while plain A moves"
+            );
+            outputs.push(u_frozen.clone());
+        }
+        assert!(
+            outputs.windows(2).all(|w| w[0] != w[1]),
+            "live sensors still matter"
+        );
+        frozen.reset();
+        assert_eq!(
+            frozen.attention().unwrap(),
+            &a_frozen[..],
+            "a fresh episode keeps A"
+        );
+        assert!(frozen.freeze_with(&[0.0; 5]).is_err());
+    }
+}

@@ -1,0 +1,133 @@
+//! The controller families a user can pick by name, their parameter-count formulas, and
+//! the factory that builds one for a topology.
+
+use super::{Attention, Controller, Mlp, MlpComm, SlowAttention, Topology};
+use crate::{Error, Result};
+use serde::{Deserialize, Serialize};
+use std::fmt;
+use std::str::FromStr;
+
+/// A controller family, named in run files and on the command line
+/// (`attention`, `mlp`, `mlp-comm`, `slow-attention`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ControllerKind {
+    /// Local self-attention (SPEC 7): 32 + 4n + 1 parameters.
+    Attention,
+    /// Communication-less MLP baseline: 4n + 1 parameters.
+    Mlp,
+    /// Message-passing MLP baseline: (8n + 1) x 5 parameters.
+    MlpComm,
+    /// Attention with a slowly updated matrix: 32 + 4n + 1 + 2 parameters.
+    SlowAttention,
+}
+
+impl ControllerKind {
+    /// Every kind, in the order used for help texts.
+    pub const ALL: [ControllerKind; 4] = [
+        ControllerKind::Attention,
+        ControllerKind::Mlp,
+        ControllerKind::MlpComm,
+        ControllerKind::SlowAttention,
+    ];
+
+    /// The name accepted by `FromStr` and printed by `Display`.
+    pub fn name(self) -> &'static str {
+        match self {
+            ControllerKind::Attention => "attention",
+            ControllerKind::Mlp => "mlp",
+            ControllerKind::MlpComm => "mlp-comm",
+            ControllerKind::SlowAttention => "slow-attention",
+        }
+    }
+
+    /// Genome length for a robot of `n_voxels` voxels (73 / 41 / 405 / 75 for the biped).
+    pub fn param_count(self, n_voxels: usize) -> usize {
+        match self {
+            ControllerKind::Attention => Attention::param_count_for(n_voxels),
+            ControllerKind::Mlp => Mlp::param_count_for(n_voxels),
+            ControllerKind::MlpComm => MlpComm::param_count_for(n_voxels),
+            ControllerKind::SlowAttention => SlowAttention::param_count_for(n_voxels),
+        }
+    }
+}
+
+impl fmt::Display for ControllerKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for ControllerKind {
+    type Err = Error;
+
+    fn from_str(s: &str) -> Result<Self> {
+        let wanted = s.trim().to_ascii_lowercase();
+        Self::ALL
+            .into_iter()
+            .find(|k| k.name() == wanted)
+            .ok_or_else(|| {
+                let names: Vec<&str> = Self::ALL.iter().map(|k| k.name()).collect();
+                Error::Input(format!(
+                    "unknown controller '{s}', expected one of: {}",
+                    names.join(", ")
+                ))
+            })
+    }
+}
+
+/// Builds a controller of `kind` for `topology`, with every parameter at zero.
+pub fn build(kind: ControllerKind, topology: &Topology) -> Box<dyn Controller> {
+    let n = topology.voxel_count();
+    match kind {
+        ControllerKind::Attention => Box::new(Attention::new(n)),
+        ControllerKind::Mlp => Box::new(Mlp::new(n)),
+        ControllerKind::MlpComm => Box::new(MlpComm::new(topology.clone())),
+        ControllerKind::SlowAttention => Box::new(SlowAttention::new(n)),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip_and_unknown_names_list_the_choices() {
+        for k in ControllerKind::ALL {
+            assert_eq!(k.to_string().parse::<ControllerKind>().unwrap(), k);
+        }
+        let err = "transformer"
+            .parse::<ControllerKind>()
+            .unwrap_err()
+            .to_string();
+        assert!(
+            err.contains("mlp-comm") && err.contains("slow-attention"),
+            "{err}"
+        );
+    }
+
+    #[test]
+    fn serde_uses_the_same_names() {
+        let json = serde_json::to_string(&ControllerKind::MlpComm).unwrap();
+        assert_eq!(json, "\"mlp-comm\"");
+        let back: ControllerKind = serde_json::from_str("\"slow-attention\"").unwrap();
+        assert_eq!(back, ControllerKind::SlowAttention);
+    }
+
+    #[test]
+    fn stateful_controllers_say_so_and_only_attention_exposes_matrices() {
+        let t = Topology::isolated(3);
+        let flags: Vec<(bool, bool)> = ControllerKind::ALL
+            .iter()
+            .map(|&k| {
+                let c = build(k, &t);
+                (c.needs_every_step(), c.attention().is_some())
+            })
+            .collect();
+        // attention, mlp, mlp-comm, slow-attention
+        assert_eq!(
+            flags,
+            [(false, true), (false, false), (true, false), (true, true)]
+        );
+    }
+}

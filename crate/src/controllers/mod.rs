@@ -1,0 +1,125 @@
+//! Controllers: the brain every voxel runs. A controller sees only sensor rows and a
+//! neighbour table ([`Topology`]), never the world, and maps readings to actuations.
+//!
+//! Data layout shared by every controller:
+//! - `sensors`: 4 readings per voxel in voxel index order, `[area, vx, vy, touch]`, so voxel
+//!   `i`'s readings are `sensors[4 i .. 4 i + 4]` (length `4 n`);
+//! - `out`: one actuation per voxel in voxel index order, in [-1, 1] (length `n`);
+//! - `params`: a flat `f32` genome whose layout each controller module documents;
+//! - `attention()`: 16 floats per voxel, voxel `i`'s row-major 4x4 matrix at `[16 i .. 16 i + 16]`.
+//!
+//! If the lengths of `sensors` or `out` do not match the topology, `control` writes zeros to
+//! `out` and does nothing else (check once per episode with [`check_io`]).
+
+mod attention;
+mod frozen;
+mod kind;
+mod mlp;
+mod mlp_comm;
+mod slow;
+mod topology;
+
+pub use attention::{Attention, ATTENTION_DIM, ATTENTION_PARAMS};
+pub use frozen::FrozenAttention;
+pub use kind::{build, ControllerKind};
+pub use mlp::Mlp;
+pub use mlp_comm::{MlpComm, MLP_COMM_OUTPUTS};
+pub use slow::SlowAttention;
+pub use topology::{opposite, Topology, DIRECTION_NAMES, DOWN, LEFT, RIGHT, UP};
+
+use crate::{Error, Result};
+
+/// Number of sensor readings per voxel: area, vx, vy, touch.
+pub const SENSORS_PER_VOXEL: usize = 4;
+/// Number of floats per voxel in an attention matrix (4x4, row-major).
+pub const ATTENTION_FLOATS_PER_VOXEL: usize = 16;
+
+/// A voxel controller: the same parameters drive every voxel of a robot.
+pub trait Controller: Send {
+    /// Length of the genome this controller reads.
+    fn param_count(&self) -> usize;
+    /// The current parameters, in the controller's documented genome layout.
+    fn params(&self) -> Vec<f32>;
+    /// Replaces the parameters. Fails, leaving the controller unchanged, on a length mismatch
+    /// or a non-finite value.
+    fn set_params(&mut self, p: &[f32]) -> Result<()>;
+    /// Clears the state carried between control calls (messages, slow attention), as at the
+    /// start of an episode.
+    fn reset(&mut self);
+    /// Computes one actuation per voxel from 4 readings per voxel (see the module doc).
+    fn control(&mut self, sensors: &[f32], out: &mut [f32]);
+    /// True when the controller has state, so it must be called at every step (not only
+    /// when the actuation is latched).
+    fn needs_every_step(&self) -> bool;
+    /// Each voxel's current attention matrix (16 floats per voxel), or `None` for
+    /// controllers without attention.
+    fn attention(&self) -> Option<&[f32]>;
+}
+
+/// Checks that `sensors` and `out` have the lengths a controller for `n_voxels` expects.
+pub fn check_io(n_voxels: usize, sensors: &[f32], out: &[f32]) -> Result<()> {
+    if sensors.len() != SENSORS_PER_VOXEL * n_voxels {
+        return Err(Error::Input(format!(
+            "expected {} sensor readings (4 for each of {n_voxels} voxels), got {}",
+            SENSORS_PER_VOXEL * n_voxels,
+            sensors.len()
+        )));
+    }
+    if out.len() != n_voxels {
+        return Err(Error::Input(format!(
+            "expected room for {n_voxels} actuations, got {}",
+            out.len()
+        )));
+    }
+    Ok(())
+}
+
+/// Checks a genome before `set_params` accepts it: right length, every value finite.
+pub(crate) fn validate_params(expected: usize, p: &[f32]) -> Result<()> {
+    if p.len() != expected {
+        return Err(Error::Input(format!(
+            "expected {expected} controller parameters, got {}",
+            p.len()
+        )));
+    }
+    match p.iter().position(|v| !v.is_finite()) {
+        Some(i) => Err(Error::Input(format!(
+            "controller parameter {i} is {}, parameters must be finite",
+            p[i]
+        ))),
+        None => Ok(()),
+    }
+}
+
+/// True when the lengths fit; otherwise zeroes `out` so a bad call actuates nothing.
+pub(crate) fn io_fits(n_voxels: usize, sensors: &[f32], out: &mut [f32]) -> bool {
+    let fits = check_io(n_voxels, sensors, out).is_ok();
+    if !fits {
+        out.fill(0.0);
+    }
+    fits
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn validate_params_names_the_problem() {
+        let err = validate_params(3, &[0.0, 1.0]).unwrap_err().to_string();
+        assert!(err.contains("expected 3") && err.contains("got 2"), "{err}");
+        let err = validate_params(2, &[0.0, f32::INFINITY])
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("parameter 1"), "{err}");
+        assert!(validate_params(2, &[0.0, -1.0]).is_ok());
+    }
+
+    #[test]
+    fn bad_io_lengths_zero_the_output() {
+        let mut out = [0.5; 3];
+        assert!(!io_fits(3, &[0.0; 11], &mut out));
+        assert_eq!(out, [0.0; 3]);
+        assert!(io_fits(3, &[0.0; 12], &mut out));
+    }
+}
