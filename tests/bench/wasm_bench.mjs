@@ -17,7 +17,8 @@ import { fileURLToPath } from 'node:url';
 import { performance } from 'node:perf_hooks';
 
 const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
-const PKG = path.join(ROOT, 'www', 'pkg');
+/** The wasm-pack output to measure (`--target web`); VSR_WASM_PKG overrides it. */
+const PKG = path.resolve(process.env.VSR_WASM_PKG ?? path.join(ROOT, 'www', 'pkg'));
 const SHAPES = ['biped-4x3', 'comb-7x2', 'biped-6x4', 'comb-14x2'];
 const TERRAIN = 'hilly-1-10-0';
 const FREQUENCY = 1;
