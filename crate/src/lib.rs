@@ -9,6 +9,7 @@ pub mod controllers;
 pub mod error;
 pub mod experiment;
 pub mod genetics;
+pub mod random;
 pub mod simulation;
 
 #[cfg(target_arch = "wasm32")]

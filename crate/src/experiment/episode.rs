@@ -5,9 +5,36 @@
 //! after the last, over the elapsed time.
 
 use super::gait::PhaseGait;
+use crate::controllers::{Controller, Topology};
 use crate::error::{Error, Result};
 use crate::simulation::constants::{ACTUATION_HOLD_STEPS, DT};
+use crate::simulation::sensors::Sensors;
 use crate::simulation::{Shape, Terrain, World};
+
+/// What drives the voxels.
+pub enum Policy {
+    /// An open-loop phase gait.
+    Gait(PhaseGait),
+    /// A controller fed by the voxels' sensors.
+    Brain(Box<dyn Controller>),
+}
+
+impl std::fmt::Debug for Policy {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Policy::Gait(g) => write!(f, "Gait({g:?})"),
+            Policy::Brain(c) => write!(f, "Brain({} params)", c.param_count()),
+        }
+    }
+}
+
+/// The neighbour table of a shape, for controllers.
+pub fn topology(shape: &Shape) -> Topology {
+    let rows = (0..shape.voxel_count())
+        .map(|i| shape.neighbours(i))
+        .collect();
+    Topology::new(rows).unwrap_or_else(|_| Topology::isolated(shape.voxel_count()))
+}
 
 /// Number of steps the reference loop takes for `seconds` of simulated time: it adds
 /// dt to t in floating point while t < seconds (1801 steps for 30 s).
@@ -34,39 +61,85 @@ pub struct Outcome {
     pub seconds: f64,
 }
 
-/// A robot on a terrain under a phase gait, stepped on demand (the page's episode).
-#[derive(Debug, Clone)]
-pub struct GaitEpisode {
+/// A robot on a terrain driven by a policy, stepped on demand.
+#[derive(Debug)]
+pub struct Episode {
     world: World,
     terrain: Terrain,
-    gait: PhaseGait,
+    policy: Policy,
+    sensors: Sensors,
     columns: Vec<usize>,
     actuation: Vec<f64>,
+    output: Vec<f32>,
     first_x: Option<f64>,
 }
 
-impl GaitEpisode {
+/// The page's first episode type: an [`Episode`] under a phase gait.
+pub type GaitEpisode = Episode;
+
+impl Episode {
     /// Builds the episode from a shape ("biped-4x3", "1111-1111-1001"), a terrain name
     /// and a gait u = sin(2 pi f t + phi x).
-    pub fn new(shape: &str, terrain: &str, frequency: f64, phase: f64) -> Result<GaitEpisode> {
+    pub fn new(shape: &str, terrain: &str, frequency: f64, phase: f64) -> Result<Episode> {
         let shape = Shape::parse(shape)?;
         let terrain = Terrain::parse(terrain)?;
         let gait = PhaseGait::new(frequency, phase)?;
-        Ok(GaitEpisode::from_parts(&shape, terrain, gait))
+        Ok(Episode::from_parts(&shape, terrain, gait))
     }
 
-    /// Builds the episode from parsed parts.
-    pub fn from_parts(shape: &Shape, terrain: Terrain, gait: PhaseGait) -> GaitEpisode {
+    /// Builds a phase-gait episode from parsed parts.
+    pub fn from_parts(shape: &Shape, terrain: Terrain, gait: PhaseGait) -> Episode {
+        Episode::with_policy(shape, terrain, Policy::Gait(gait), None)
+    }
+
+    /// Builds an episode driven by `policy`; `noise_seed` seeds the sensor noise
+    /// (None: noiseless sensors).
+    pub fn with_policy(
+        shape: &Shape,
+        terrain: Terrain,
+        mut policy: Policy,
+        noise_seed: Option<u64>,
+    ) -> Episode {
         let world = World::new(shape.voxels(), terrain.xs(), terrain.ys());
         let columns: Vec<usize> = shape.voxels().iter().map(|c| c.0).collect();
-        GaitEpisode {
-            actuation: vec![0.0; columns.len()],
+        if let Policy::Brain(c) = &mut policy {
+            c.reset();
+        }
+        let n = columns.len();
+        Episode {
+            actuation: vec![0.0; n],
+            output: vec![0.0; n],
+            sensors: Sensors::new(n, noise_seed),
             world,
             terrain,
-            gait,
+            policy,
             columns,
             first_x: None,
         }
+    }
+
+    /// Asks the policy after step k (1-based); its output is latched when `latch`.
+    fn act(&mut self, k: u64, latch: bool) {
+        match &mut self.policy {
+            Policy::Gait(g) if latch => {
+                g.actuate(k as f64 * DT, &self.columns, &mut self.actuation);
+            }
+            Policy::Gait(_) => return,
+            Policy::Brain(c) => {
+                self.sensors.sense(&self.world);
+                if !(latch || c.needs_every_step()) {
+                    return;
+                }
+                c.control(self.sensors.read(&self.world), &mut self.output);
+                if !latch {
+                    return;
+                }
+                for (a, &o) in self.actuation.iter_mut().zip(&self.output) {
+                    *a = f64::from(o);
+                }
+            }
+        }
+        self.world.set_actuation(&self.actuation);
     }
 
     /// Advances `steps` steps; an error if the simulation became non-finite.
@@ -74,11 +147,7 @@ impl GaitEpisode {
         for _ in 0..steps {
             self.world.step();
             let k = self.world.steps();
-            if (k - 1) % ACTUATION_HOLD_STEPS as u64 == 0 {
-                let t = k as f64 * DT;
-                self.gait.actuate(t, &self.columns, &mut self.actuation);
-                self.world.set_actuation(&self.actuation);
-            }
+            self.act(k, (k - 1) % ACTUATION_HOLD_STEPS as u64 == 0);
             if self.first_x.is_none() {
                 self.first_x = Some(self.world.centre().0);
             }
@@ -121,6 +190,25 @@ impl GaitEpisode {
     /// The actuation currently held for every voxel.
     pub fn actuation(&self) -> &[f64] {
         &self.actuation
+    }
+
+    /// The policy driving the voxels.
+    pub fn policy(&self) -> &Policy {
+        &self.policy
+    }
+
+    /// Mutable access to the policy (e.g. to freeze attention mid-episode).
+    pub fn policy_mut(&mut self) -> &mut Policy {
+        &mut self.policy
+    }
+
+    /// Each voxel's current attention matrix (16 floats per voxel), if the policy
+    /// has attention.
+    pub fn attention(&self) -> Option<&[f32]> {
+        match &self.policy {
+            Policy::Brain(c) => c.attention(),
+            Policy::Gait(_) => None,
+        }
     }
 
     /// The world (read-only).

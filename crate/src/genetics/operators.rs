@@ -12,18 +12,7 @@ pub const ALPHA_LOW: f64 = -0.5;
 /// Upper end of the extended geometric crossover's per-gene alpha.
 pub const ALPHA_HIGH: f64 = 1.5;
 
-/// One draw from N(0, 1) (Marsaglia's polar method; the second value is discarded so each
-/// draw consumes a whole number of rejection rounds).
-pub fn standard_normal(rng: &mut impl Rng) -> f64 {
-    loop {
-        let u = 2.0 * rng.gen::<f64>() - 1.0;
-        let v = 2.0 * rng.gen::<f64>() - 1.0;
-        let s = u * u + v * v;
-        if s > 0.0 && s < 1.0 {
-            return u * libm::sqrt(-2.0 * libm::log(s) / s);
-        }
-    }
-}
+pub use crate::random::standard_normal;
 
 /// Fitness as a sort key: NaN counts as the worst possible value.
 pub fn fitness_key(f: f64) -> f64 {

@@ -9,7 +9,7 @@
 //! implicit spring is exact for the merged system.
 //!
 //! Layout: static data per spring (pieces, anchors, rest-length table, voxel) in
-//! parallel vectors; `rows`, `soft` and `impulse` are per-step scratch, rebuilt by
+//! parallel vectors; the per-step rows live in [`Lanes`], rebuilt by
 //! [`Springs::prepare`] without allocating.
 
 use super::body::{Pieces, Velocity};
@@ -18,21 +18,7 @@ use super::constants::{
     SPRING_FREQUENCY, VOXEL_SIDE,
 };
 use super::joint::JointRow;
-
-/// Softness terms of one spring for one step.
-#[derive(Debug, Clone, Copy, Default)]
-struct Soft {
-    /// 1 / (effective mass + softness).
-    inv_k: f64,
-    /// Velocity bias from the spring's stretch.
-    bias: f64,
-    /// Softness: impulse feedback per accumulated impulse.
-    gamma: f64,
-    /// Spring constant k (N/m), kept for the energy audit.
-    stiffness: f64,
-    /// Current length minus rest length (m), kept for the energy audit.
-    stretch: f64,
-}
+use super::lanes::Lanes;
 
 /// Kind of spring, which fixes its rest-length range.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -94,23 +80,23 @@ pub struct Springs {
     defs: Vec<SpringDef>,
     table: Vec<[f64; 3]>,
     target: Vec<f64>,
-    rows: Vec<JointRow>,
-    soft: Vec<Soft>,
-    impulse: Vec<f64>,
+    lanes: Lanes,
+    /// Stiffness (N/m) and stretch (m) of the last prepared step, for the energy audit.
+    energy_terms: Vec<(f64, f64)>,
 }
 
 impl Springs {
-    /// Builds the spring set, all at their rest length.
-    pub fn new(defs: Vec<SpringDef>) -> Self {
+    /// Builds the spring set, all at their rest length. `pad` is the padding piece
+    /// index (see [`Lanes`]).
+    pub fn new(defs: Vec<SpringDef>, pad: usize) -> Self {
         let table: Vec<[f64; 3]> = defs.iter().map(|d| d.kind.rest_table()).collect();
-        let n = defs.len();
+        let pairs: Vec<(u32, u32)> = defs.iter().map(|d| (d.a.0 as u32, d.b.0 as u32)).collect();
         Springs {
             target: table.iter().map(|t| t[0]).collect(),
             table,
+            lanes: Lanes::new(&pairs, pad as u32),
+            energy_terms: vec![(0.0, 0.0); defs.len()],
             defs,
-            rows: vec![JointRow::default(); n],
-            soft: vec![Soft::default(); n],
-            impulse: vec![0.0; n],
         }
     }
 
@@ -125,10 +111,12 @@ impl Springs {
     }
 
     /// Sets every spring's rest length from its voxel's actuation u in [-1, 1]
-    /// (+1 contracts, -1 expands), moving linearly toward the range's end.
+    /// (+1 contracts, -1 expands), moving linearly toward the range's end. NaN acts
+    /// as 0.
     pub fn set_actuation(&mut self, actuation: &[f64]) {
         for (i, d) in self.defs.iter().enumerate() {
-            let u = actuation[d.voxel].clamp(-1.0, 1.0);
+            let u = actuation[d.voxel];
+            let u = if u.is_nan() { 0.0 } else { u.clamp(-1.0, 1.0) };
             let [rest, min, max] = self.table[i];
             self.target[i] = if u >= 0.0 {
                 rest + u * (min - rest)
@@ -139,51 +127,45 @@ impl Springs {
     }
 
     /// Prepares every row for this step and applies the warm-start impulses.
+    ///
+    /// With k = m_ref w^2 and c = 2 m_ref zeta w, the soft-constraint terms simplify:
+    /// gamma = 1 / (dt (c + dt k)) = (1 / m_ref) G and bias = stretch dt k gamma =
+    /// stretch B, with G and B constants of the spring law.
     pub fn prepare(&mut self, pieces: &mut Pieces) {
         let omega = 2.0 * std::f64::consts::PI * SPRING_FREQUENCY;
+        let g = 1.0 / (DT * (2.0 * SPRING_DAMPING_RATIO * omega + DT * omega * omega));
+        let b = DT * omega * omega * g;
         for (i, d) in self.defs.iter().enumerate() {
-            let ra = pieces.rotate(d.a.0, d.a.1, d.a.2);
-            let rb = pieces.rotate(d.b.0, d.b.1, d.b.2);
-            let row = JointRow::new(pieces, d.a.0, d.b.0, ra, rb);
-            let qa = pieces.rotate(d.a.0, d.qa.0, d.qa.1);
-            let qb = pieces.rotate(d.b.0, d.qb.0, d.qb.1);
+            let (pa, pb) = (d.a.0, d.b.0);
+            let ra = pieces.rotate(pa, d.a.1, d.a.2);
+            let rb = pieces.rotate(pb, d.b.1, d.b.2);
+            let row = JointRow::new(pieces, pa, pb, ra, rb);
+            let qa = pieces.rotate(pa, d.qa.0, d.qa.1);
+            let qb = pieces.rotate(pb, d.qb.0, d.qb.1);
             let qna = qa.0 * row.ny - qa.1 * row.nx;
             let qnb = qb.0 * row.ny - qb.1 * row.nx;
             let inv_ref = 2.0 / CORNER_MASS + (qna * qna + qnb * qnb) / CORNER_INERTIA;
-            let m_ref = 1.0 / inv_ref;
-            let k = m_ref * omega * omega;
-            let c = 2.0 * m_ref * SPRING_DAMPING_RATIO * omega;
-            let gamma = 1.0 / (DT * (c + DT * k));
+            let gamma = inv_ref * g;
             let stretch = row.length - self.target[i];
-            self.soft[i] = Soft {
-                inv_k: 1.0 / (row.inv_mass + gamma),
-                bias: stretch * DT * k * gamma,
-                gamma,
-                stiffness: k,
-                stretch,
-            };
-            row.apply(&mut pieces.vel, self.impulse[i]);
-            self.rows[i] = row;
+            let inv_k = 1.0 / (row.inv_mass + gamma);
+            let warm = self.lanes.set(i, &row, inv_k, stretch * b, gamma);
+            row.apply(&mut pieces.vel, warm);
+            self.energy_terms[i] = (omega * omega / inv_ref, stretch);
         }
     }
 
     /// One sequential-impulse sweep over every spring.
     #[inline]
     pub fn solve_velocity(&mut self, vel: &mut [Velocity]) {
-        for ((row, soft), acc) in self.rows.iter().zip(&self.soft).zip(&mut self.impulse) {
-            let cdot = row.velocity(vel);
-            let lambda = -soft.inv_k * (cdot + soft.bias + soft.gamma * *acc);
-            *acc += lambda;
-            row.apply(vel, lambda);
-        }
+        self.lanes.solve(vel);
     }
 
     /// Potential energy stored in the springs (J): sum of k x^2 / 2 with the stiffness
     /// and stretch of the last prepared step.
     pub fn potential_energy(&self) -> f64 {
-        self.soft
+        self.energy_terms
             .iter()
-            .map(|s| 0.5 * s.stiffness * s.stretch * s.stretch)
+            .map(|&(k, x)| 0.5 * k * x * x)
             .sum()
     }
 }

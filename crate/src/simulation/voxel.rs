@@ -47,6 +47,25 @@ impl World {
         (bottom + top) / 2.0
     }
 
+    /// Cosine and sine of voxel `v`'s angle, computed without trigonometry: the
+    /// bisector of its bottom and top edge directions (the same angle as the mean of
+    /// the two edge angles whenever the edges are less than 180 degrees apart).
+    pub fn voxel_frame(&self, v: usize) -> (f64, f64) {
+        let p = self.voxel_corners(v);
+        let unit = |dx: f64, dy: f64| {
+            let len = (dx * dx + dy * dy).sqrt();
+            (dx / len, dy / len)
+        };
+        let b = unit(p[1].0 - p[0].0, p[1].1 - p[0].1);
+        let t = unit(p[2].0 - p[3].0, p[2].1 - p[3].1);
+        let (c, s) = unit(b.0 + t.0, b.1 + t.1);
+        if c.is_finite() && s.is_finite() {
+            (c, s)
+        } else {
+            (1.0, 0.0)
+        }
+    }
+
     /// Velocity of voxel `v` (m/s): mean velocity of its corner squares' centres.
     pub fn voxel_velocity(&self, v: usize) -> (f64, f64) {
         let (mut vx, mut vy) = (0.0, 0.0);

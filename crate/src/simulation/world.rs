@@ -53,9 +53,12 @@ impl World {
             ropes,
         } = assemble(cells, &ground);
         let hints = vec![ground.segments() / 2; squares.len()];
+        let pad = pieces.len();
+        let mut pieces = pieces;
+        pieces.vel.push(Default::default());
         let mut world = World {
             pieces,
-            springs: Springs::new(springs),
+            springs: Springs::new(springs, pad),
             ropes: Ropes::new(ropes),
             ground,
             contacts: Vec::new(),
@@ -100,7 +103,8 @@ impl World {
 
     fn apply_gravity_and_damping(&mut self) {
         let keep = (1.0 - DT * DAMPING).clamp(0.0, 1.0);
-        for v in &mut self.pieces.vel {
+        let n = self.pieces.len();
+        for v in &mut self.pieces.vel[..n] {
             v.vy += GRAVITY * DT;
             v.vx *= keep;
             v.vy *= keep;

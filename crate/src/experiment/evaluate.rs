@@ -1,0 +1,55 @@
+//! Genome -> controller -> episode -> fitness: the single composition point used by
+//! evolution, validation, the CLI and the page.
+
+use super::episode::{topology, Episode, Outcome, Policy};
+use crate::controllers::{build, Controller, ControllerKind};
+use crate::error::{Error, Result};
+use crate::simulation::{Shape, Terrain};
+
+/// A controller of `kind` for `shape` with parameters `genome`; fails with a message
+/// on a length mismatch or a non-finite gene.
+pub fn controller_for(
+    kind: ControllerKind,
+    shape: &Shape,
+    genome: &[f32],
+) -> Result<Box<dyn Controller>> {
+    let expected = kind.param_count(shape.voxel_count());
+    if genome.len() != expected {
+        return Err(Error::Input(format!(
+            "a {kind} controller for shape {} ({} voxels) has {expected} parameters, the genome has {}",
+            shape.to_rows(),
+            shape.voxel_count(),
+            genome.len()
+        )));
+    }
+    let mut controller = build(kind, &topology(shape));
+    controller.set_params(genome)?;
+    Ok(controller)
+}
+
+/// Runs one locomotion episode of `seconds` and returns its outcome. An episode whose
+/// simulation becomes non-finite is reported as an error.
+pub fn evaluate(
+    shape: &Shape,
+    terrain: Terrain,
+    kind: ControllerKind,
+    genome: &[f32],
+    noise_seed: Option<u64>,
+    seconds: f64,
+) -> Result<Outcome> {
+    let controller = controller_for(kind, shape, genome)?;
+    let mut episode = Episode::with_policy(shape, terrain, Policy::Brain(controller), noise_seed);
+    episode.run(seconds)
+}
+
+/// Fitness for evolution: the episode's velocity, or NaN (worst) if it exploded.
+pub fn fitness(
+    shape: &Shape,
+    terrain: Terrain,
+    kind: ControllerKind,
+    genome: &[f32],
+    noise_seed: Option<u64>,
+    seconds: f64,
+) -> f64 {
+    evaluate(shape, terrain, kind, genome, noise_seed, seconds).map_or(f64::NAN, |o| o.velocity)
+}

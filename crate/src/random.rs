@@ -1,0 +1,25 @@
+//! Seeded randomness shared by every layer: the portable generator and a standard
+//! normal draw built only from IEEE arithmetic and `libm`, so native and wasm draw
+//! bit-identical numbers (rand_distr's samplers may use the platform's `exp`/`ln`).
+
+use rand::{Rng, SeedableRng};
+
+/// The project's generator: ChaCha8, portable across platforms and word sizes.
+pub type ProjectRng = rand_chacha::ChaCha8Rng;
+
+/// A generator seeded from a 64-bit seed.
+pub fn rng_from(seed: u64) -> ProjectRng {
+    ProjectRng::seed_from_u64(seed)
+}
+
+/// One N(0, 1) draw by Marsaglia's polar method (the second value is discarded).
+pub fn standard_normal(rng: &mut impl Rng) -> f64 {
+    loop {
+        let u = 2.0 * rng.gen::<f64>() - 1.0;
+        let v = 2.0 * rng.gen::<f64>() - 1.0;
+        let s = u * u + v * v;
+        if s > 0.0 && s < 1.0 {
+            return u * libm::sqrt(-2.0 * libm::log(s) / s);
+        }
+    }
+}
