@@ -19,7 +19,8 @@ use super::assembly::{assemble, Assembly};
 use super::body::{Pieces, Squares};
 use super::collide::{detect, Contact};
 use super::constants::{
-    DAMPING, DT, GRAVITY, MAX_ROTATION, MAX_TRANSLATION, POSITION_ITERATIONS, VELOCITY_ITERATIONS,
+    DAMPING, DT, GRAVITY, LINEAR_SLOP, MAX_ROTATION, MAX_TRANSLATION, POSITION_ITERATIONS,
+    VELOCITY_ITERATIONS,
 };
 use super::contact::ContactSolver;
 use super::ground::Ground;
@@ -141,7 +142,7 @@ impl World {
             &mut self.contacts,
         );
         self.touching.iter_mut().for_each(|t| *t = false);
-        for c in self.contacts.iter().filter(|c| c.separation <= 0.0) {
+        for c in self.contacts.iter().filter(|c| c.separation < LINEAR_SLOP) {
             self.touching[c.square / 4] = true;
         }
     }
@@ -167,7 +168,8 @@ impl World {
         self.touching.len()
     }
 
-    /// Whether any corner square of voxel `v` touches the ground now.
+    /// Whether any corner square of voxel `v` touches the ground now (a contact closer
+    /// than the slop: resting contacts sit within a hair of zero separation).
     pub fn touching(&self, v: usize) -> bool {
         self.touching[v]
     }
