@@ -4,14 +4,16 @@
 //! vertex or 0), both fixed in the piece frame. Per batch we rotate each lane's square
 //! centre once; per row we rotate only q, and the anchor is the sum. Every step then
 //! runs lane-parallel (`[f64; LANES]` loops the compiler packs into SIMD, including the
-//! square roots and divisions), and ends with the warm-start impulses.
+//! square roots and divisions), builds the batch's row coupling for the sweep
+//! ([`super::lane_solve`]) and ends with the warm-start impulses.
 
 // Lane loops index several parallel arrays by lane on purpose.
 #![allow(clippy::needless_range_loop)]
 
 use super::body::Pieces;
 use super::constants::{CORNER_INERTIA, CORNER_MASS};
-use super::lanes::{apply, Batch, Lane3, Lanes, Row4, RowDef, L, LANES};
+use super::lane_solve::{apply, coupling};
+use super::lanes::{Batch, Lane3, Lanes, Row4, RowDef, L, LANES};
 
 /// The spring law's constants (see [`super::springs::Springs::prepare`]).
 #[derive(Debug, Clone, Copy)]
@@ -129,8 +131,6 @@ fn row(g: &Geometry, target: &L, batch: &Batch, law: Law) -> (Row4, (L, L)) {
         let stretch = g.length[k] - target[k];
         let inv_mass = ima[k] + iia[k] * rna * rna + imb[k] + iib[k] * rnb * rnb;
         (row.nx[k], row.ny[k], row.rna[k], row.rnb[k]) = (nx, ny, rna, rnb);
-        (row.da[0][k], row.da[1][k], row.da[2][k]) = (ima[k] * nx, ima[k] * ny, iia[k] * rna);
-        (row.db[0][k], row.db[1][k], row.db[2][k]) = (imb[k] * nx, imb[k] * ny, iib[k] * rnb);
         row.inv_k[k] = batch.live[k] / (inv_mass + gamma);
         row.bias[k] = stretch * law.b;
         row.gamma[k] = gamma;
@@ -154,11 +154,12 @@ impl Lanes {
                 self.rows[r] = row;
                 self.energy[r] = energy;
             }
+            let (rows, acc) = (&self.rows[range.clone()], &self.impulse[range]);
+            let m = batch.coupling as usize;
+            coupling(rows, &batch.inv, &mut self.coupling[m..]);
             let mut va = Lane3::gather(&pieces.vel, &batch.a);
             let mut vb = Lane3::gather(&pieces.vel, &batch.b);
-            for r in range {
-                apply(&self.rows[r], &self.impulse[r], &mut va, &mut vb);
-            }
+            apply(rows, acc, &batch.inv, &mut va, &mut vb);
             va.scatter(&mut pieces.vel, &batch.a);
             vb.scatter(&mut pieces.vel, &batch.b);
         }

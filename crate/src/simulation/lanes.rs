@@ -13,7 +13,8 @@
 //!   (piece frame) and inverse masses;
 //! - per row, static ([`RowDef`]): each anchor's offset from its square's centre and
 //!   the target length set by the actuation;
-//! - per row, per step ([`Row4`]): what the velocity sweep needs.
+//! - per row, per step ([`Row4`]): what the velocity sweep needs;
+//! - per batch, per step: the coupling between its rows, `coupling[batch.coupling..]`.
 //!
 //! `rows[batch.start + j]` is row j of every lane of a batch. A missing lane points at
 //! the padding piece (index = number of real pieces, whose velocity slot exists but is
@@ -37,8 +38,6 @@ pub struct Row4 {
     pub ny: L,
     pub rna: L,
     pub rnb: L,
-    pub da: [L; 3],
-    pub db: [L; 3],
     pub inv_k: L,
     pub bias: L,
     pub gamma: L,
@@ -67,7 +66,9 @@ pub struct Batch {
     pub inv: [L; 4],
     /// 1 for a lane that carries springs, 0 for padding.
     pub live: L,
+    /// First row and first coupling entry (rows (rows - 1) / 2 of them).
     pub start: u32,
+    pub coupling: u32,
     pub rows: u32,
 }
 
@@ -77,6 +78,9 @@ pub struct Lanes {
     pub batches: Vec<Batch>,
     pub defs: Vec<RowDef>,
     pub rows: Vec<Row4>,
+    /// Per batch, the Gauss-Seidel coupling between its rows (see
+    /// [`super::lane_solve`]): entry (j, i), i < j, in row-major order.
+    pub coupling: Vec<L>,
     pub impulse: Vec<L>,
     /// Stiffness (N/m) and stretch (m) of the last prepared step, per row.
     pub energy: Vec<(L, L)>,
@@ -101,48 +105,6 @@ impl Lanes {
             }
         }
         sum
-    }
-
-    /// One sequential-impulse sweep over every batch.
-    pub fn solve(&mut self, vel: &mut [Velocity]) {
-        for batch in &self.batches {
-            let mut a = Lane3::gather(vel, &batch.a);
-            let mut b = Lane3::gather(vel, &batch.b);
-            let start = batch.start as usize;
-            let end = start + batch.rows as usize;
-            for (row, acc) in self.rows[start..end]
-                .iter()
-                .zip(&mut self.impulse[start..end])
-            {
-                let mut lambda = [0.0; LANES];
-                for k in 0..LANES {
-                    let cdot = row.nx[k] * (b.x[k] - a.x[k])
-                        + row.ny[k] * (b.y[k] - a.y[k])
-                        + row.rnb[k] * b.w[k]
-                        - row.rna[k] * a.w[k];
-                    lambda[k] = -row.inv_k[k] * (cdot + row.bias[k] + row.gamma[k] * acc[k]);
-                }
-                for k in 0..LANES {
-                    acc[k] += lambda[k];
-                }
-                apply(row, &lambda, &mut a, &mut b);
-            }
-            a.scatter(vel, &batch.a);
-            b.scatter(vel, &batch.b);
-        }
-    }
-}
-
-/// Applies impulses `lambda` (per lane) along the row: -lambda on a, +lambda on b.
-#[inline]
-pub fn apply(row: &Row4, lambda: &L, a: &mut Lane3, b: &mut Lane3) {
-    for k in 0..LANES {
-        a.x[k] -= row.da[0][k] * lambda[k];
-        a.y[k] -= row.da[1][k] * lambda[k];
-        a.w[k] -= row.da[2][k] * lambda[k];
-        b.x[k] += row.db[0][k] * lambda[k];
-        b.y[k] += row.db[1][k] * lambda[k];
-        b.w[k] += row.db[2][k] * lambda[k];
     }
 }
 

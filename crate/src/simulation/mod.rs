@@ -11,6 +11,7 @@ pub mod ground;
 pub mod java_random;
 pub mod joint;
 pub mod lane_prepare;
+pub mod lane_solve;
 pub mod lanes;
 pub mod packing;
 pub mod ropes;

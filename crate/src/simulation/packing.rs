@@ -51,6 +51,7 @@ fn new_batch(pad: u32, rows: u32) -> Batch {
         inv: [[0.0; LANES]; 4],
         live: [0.0; LANES],
         start: 0,
+        coupling: 0,
         rows,
     }
 }
@@ -118,9 +119,12 @@ impl Lanes {
             slot: vec![(0, 0); defs.len()],
             ..Lanes::default()
         };
+        let mut n_coupling = 0;
         for (mut batch, members) in pack(&groups(defs), pad) {
             batch.start = lanes.defs.len() as u32;
+            batch.coupling = n_coupling as u32;
             let n = batch.rows as usize;
+            n_coupling += n * (n - 1) / 2;
             lanes.batches.push(batch);
             lanes
                 .defs
@@ -131,6 +135,7 @@ impl Lanes {
         }
         let n = lanes.defs.len();
         lanes.rows = vec![Default::default(); n];
+        lanes.coupling = vec![[0.0; LANES]; n_coupling];
         lanes.impulse = vec![[0.0; LANES]; n];
         lanes.energy = vec![([0.0; LANES], [0.0; LANES]); n];
         lanes
