@@ -4,7 +4,7 @@
 //! vertex or 0), both fixed in the piece frame. Per batch we rotate each lane's square
 //! centre once; per row we rotate only q, and the anchor is the sum. Every step then
 //! runs lane-parallel (`[f64; LANES]` loops the compiler packs into SIMD, including the
-//! square roots and divisions), builds the batch's row coupling for the sweep
+//! square roots and divisions), builds the batch's group matrices for the sweep
 //! ([`super::lane_solve`]) and ends with the warm-start impulses.
 
 // Lane loops index several parallel arrays by lane on purpose.
@@ -12,7 +12,7 @@
 
 use super::body::Pieces;
 use super::constants::{CORNER_INERTIA, CORNER_MASS};
-use super::lane_solve::{apply, coupling};
+use super::lane_solve::{apply, group_matrices};
 use super::lanes::{Batch, Lane3, Lanes, Row4, RowDef, L, LANES};
 
 /// The spring law's constants (see [`super::springs::Springs::prepare`]).
@@ -154,9 +154,9 @@ impl Lanes {
                 self.rows[r] = row;
                 self.energy[r] = energy;
             }
+            let t = &mut self.coupling[batch.coupling as usize..];
+            group_matrices(&mut self.rows[range.clone()], &batch.inv, t);
             let (rows, acc) = (&self.rows[range.clone()], &self.impulse[range]);
-            let m = batch.coupling as usize;
-            coupling(rows, &batch.inv, &mut self.coupling[m..]);
             let mut va = Lane3::gather(&pieces.vel, &batch.a);
             let mut vb = Lane3::gather(&pieces.vel, &batch.b);
             apply(rows, acc, &batch.inv, &mut va, &mut vb);

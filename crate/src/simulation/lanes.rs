@@ -38,6 +38,8 @@ pub struct Row4 {
     pub ny: L,
     pub rna: L,
     pub rnb: L,
+    /// Row j of A = T diag(-inv_k) J (see [`super::lane_solve`]), over u = (vb - va, wa, wb).
+    pub a: [L; 4],
     pub inv_k: L,
     pub bias: L,
     pub gamma: L,
@@ -78,7 +80,7 @@ pub struct Lanes {
     pub batches: Vec<Batch>,
     pub defs: Vec<RowDef>,
     pub rows: Vec<Row4>,
-    /// Per batch, the Gauss-Seidel coupling between its rows (see
+    /// Per batch, the Gauss-Seidel transfer T between its rows (see
     /// [`super::lane_solve`]): entry (j, i), i < j, in row-major order.
     pub coupling: Vec<L>,
     pub impulse: Vec<L>,
