@@ -57,9 +57,10 @@ impl World {
         let pad = pieces.len();
         let mut pieces = pieces;
         pieces.vel.push(Default::default());
+        let springs = Springs::new(springs, &pieces, pad);
         let mut world = World {
             pieces,
-            springs: Springs::new(springs, pad),
+            springs,
             ropes: Ropes::new(ropes),
             ground,
             contacts: Vec::new(),
