@@ -26,7 +26,7 @@ fn stretch_trace(x0: f64, steps: usize) -> Vec<f64> {
         kind: SpringKind::Diagonal,
         voxel: 0,
     };
-    let mut springs = Springs::new(vec![def], 2);
+    let mut springs = Springs::new(vec![def], &pieces, 2);
     let mut out = Vec::new();
     for _ in 0..steps {
         springs.prepare(&mut pieces);
