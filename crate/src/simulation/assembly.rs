@@ -146,7 +146,7 @@ pub fn assemble(cells: &[(usize, usize)], ground: &Ground) -> Assembly {
 
 /// The 18 springs and 4 ropes of every voxel.
 fn joints(n_voxels: usize, squares: &Squares) -> (Vec<SpringDef>, Vec<RopeDef>) {
-    let at = |s: usize, q: (f64, f64)| (squares.piece[s], squares.lx[s] + q.0, squares.ly[s] + q.1);
+    let at = |s: usize| (squares.piece[s], squares.lx[s], squares.ly[s]);
     let mut springs = Vec::with_capacity(18 * n_voxels);
     let mut ropes = Vec::with_capacity(4 * n_voxels);
     for v in 0..n_voxels {
@@ -164,8 +164,8 @@ fn joints(n_voxels: usize, squares: &Squares) -> (Vec<SpringDef>, Vec<RopeDef>) 
             ];
             for (qa, qb, kind) in pairs {
                 springs.push(SpringDef {
-                    a: at(sa, qa),
-                    b: at(sb, qb),
+                    a: at(sa),
+                    b: at(sb),
                     qa,
                     qb,
                     kind,
@@ -173,15 +173,15 @@ fn joints(n_voxels: usize, squares: &Squares) -> (Vec<SpringDef>, Vec<RopeDef>) 
                 });
             }
             ropes.push(RopeDef {
-                a: at(sa, (0.0, 0.0)),
-                b: at(sb, (0.0, 0.0)),
+                a: at(sa),
+                b: at(sb),
             });
         }
         for (ca, cb) in [(Corner::Sw, Corner::Ne), (Corner::Se, Corner::Nw)] {
             let (sa, sb) = (4 * v + ca as usize, 4 * v + cb as usize);
             springs.push(SpringDef {
-                a: at(sa, (0.0, 0.0)),
-                b: at(sb, (0.0, 0.0)),
+                a: at(sa),
+                b: at(sb),
                 qa: (0.0, 0.0),
                 qb: (0.0, 0.0),
                 kind: SpringKind::Diagonal,

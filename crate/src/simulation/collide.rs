@@ -7,7 +7,7 @@
 //! order (square, then feature) with a stable key for warm starting.
 
 use super::body::{Pieces, Squares};
-use super::constants::CORNER_SIDE;
+use super::constants::{CONTACT_MARGIN, CORNER_SIDE};
 use super::ground::Ground;
 
 /// Half the side of a corner square (m).
@@ -55,6 +55,8 @@ pub struct Contact {
     pub piece: usize,
     /// Geometry.
     pub feature: Feature,
+    /// Separation when detected (m): negative when penetrating, at most the margin.
+    pub separation: f64,
 }
 
 impl Contact {
@@ -105,7 +107,7 @@ pub fn detect(
         let i0 = ground.segment_near(cx - RADIUS, *hint);
         let i1 = ground.segment_near(cx + RADIUS, i0);
         *hint = i0;
-        if cy - RADIUS > ground.max_height(i0, i1) {
+        if cy - RADIUS - CONTACT_MARGIN > ground.max_height(i0, i1) {
             continue;
         }
         for (v, &(ox, oy)) in VERTICES.iter().enumerate() {
@@ -113,8 +115,10 @@ pub fn detect(
             let (wx, wy) = pieces.to_world(p, local.0, local.1);
             let i = ground.segment_near(wx, i0);
             let (normal, offset) = ground.plane(i);
-            if normal.0 * wx + normal.1 * wy - offset < 0.0 {
+            let separation = normal.0 * wx + normal.1 * wy - offset;
+            if separation < CONTACT_MARGIN {
                 out.push(Contact {
+                    separation,
                     key: ((s as u64) << 32) | v as u64,
                     square: s,
                     piece: p,
@@ -150,7 +154,7 @@ fn peak_contact(
     let (c, sn) = (pieces.cos[p], pieces.sin[p]);
     let (dx, dy) = (q.0 - centre.0, q.1 - centre.1);
     let (qx, qy) = (c * dx + sn * dy, -sn * dx + c * dy);
-    if qx.abs() >= HALF || qy.abs() >= HALF {
+    if qx.abs() >= HALF + CONTACT_MARGIN || qy.abs() >= HALF + CONTACT_MARGIN {
         return None;
     }
     let depths = [HALF + qy, HALF - qx, HALF - qy, HALF + qx];
@@ -162,6 +166,7 @@ fn peak_contact(
     }
     let n = FACES[face];
     Some(Contact {
+        separation: -depths[face],
         key: ((s as u64) << 32) | (4 + j as u64),
         square: s,
         piece: p,

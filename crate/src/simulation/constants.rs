@@ -43,6 +43,10 @@ pub const VELOCITY_ITERATIONS: usize = 10;
 pub const POSITION_ITERATIONS: usize = 10;
 /// Penetration allowed without correction (m) (dyn4j linear tolerance).
 pub const LINEAR_SLOP: f64 = 0.005;
+/// Contacts are kept while a corner is closer to the ground than this (m), as
+/// speculative contacts that may close the gap in one step but not bounce off it;
+/// without the margin a loaded corner chatters on and off the ground.
+pub const CONTACT_MARGIN: f64 = 2.0 * LINEAR_SLOP;
 /// Fraction of the penetration corrected per position iteration.
 pub const BAUMGARTE: f64 = 0.2;
 /// Largest position correction per iteration (m).

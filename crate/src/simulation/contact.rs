@@ -6,7 +6,7 @@
 use super::body::{Pieces, Velocity};
 use super::collide::Contact;
 use super::constants::{
-    BAUMGARTE, FRICTION, LINEAR_SLOP, MAX_LINEAR_CORRECTION, RESTITUTION, RESTITUTION_VELOCITY,
+    BAUMGARTE, DT, FRICTION, LINEAR_SLOP, MAX_LINEAR_CORRECTION, RESTITUTION, RESTITUTION_VELOCITY,
 };
 
 /// A contact prepared for one step.
@@ -19,18 +19,32 @@ struct Row {
     r: (f64, f64),
     normal_mass: f64,
     tangent_mass: f64,
-    /// Target separating velocity from restitution.
+    /// Target normal velocity: restitution's bounce, or for a speculative contact
+    /// (still apart) the (negative) speed that just closes the gap in one step.
     bounce: f64,
     normal_impulse: f64,
     tangent_impulse: f64,
 }
 
 /// The contact solver's state: this step's rows and last step's impulses by key.
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Clone)]
 pub struct ContactSolver {
+    /// Coulomb friction coefficient between the robot and the ground.
+    pub friction: f64,
     rows: Vec<Row>,
     keys: Vec<u64>,
     previous: Vec<(u64, f64, f64)>,
+}
+
+impl Default for ContactSolver {
+    fn default() -> Self {
+        ContactSolver {
+            friction: FRICTION,
+            rows: Vec::new(),
+            keys: Vec::new(),
+            previous: Vec::new(),
+        }
+    }
 }
 
 #[inline]
@@ -51,7 +65,7 @@ impl ContactSolver {
         self.keys.clear();
         let mut k = 0;
         for c in contacts {
-            let (n, r, _) = c.evaluate(pieces);
+            let (n, r, separation) = c.evaluate(pieces);
             let p = c.piece;
             let (im, ii) = (pieces.inv_mass[p], pieces.inv_inertia[p]);
             let t = (n.1, -n.0);
@@ -71,7 +85,9 @@ impl ContactSolver {
                 r,
                 normal_mass: 1.0 / (im + ii * rn * rn),
                 tangent_mass: 1.0 / (im + ii * rt * rt),
-                bounce: if vn < -RESTITUTION_VELOCITY {
+                bounce: if separation > 0.0 {
+                    -separation / DT
+                } else if vn < -RESTITUTION_VELOCITY {
                     -RESTITUTION * vn
                 } else {
                     0.0
@@ -87,11 +103,12 @@ impl ContactSolver {
 
     /// One sweep: friction, then the normal impulse, for every contact.
     pub fn solve_velocity(&mut self, pieces: &mut Pieces) {
+        let friction = self.friction;
         for row in &mut self.rows {
             let t = (row.n.1, -row.n.0);
             let (vx, vy) = pieces.point_velocity(row.piece, row.r.0, row.r.1);
             let vt = vx * t.0 + vy * t.1;
-            let max = FRICTION * row.normal_impulse;
+            let max = friction * row.normal_impulse;
             let old = row.tangent_impulse;
             row.tangent_impulse = (old - vt * row.tangent_mass).clamp(-max, max);
             let d = row.tangent_impulse - old;

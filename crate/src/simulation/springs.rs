@@ -8,16 +8,15 @@
 //! the reference does. The impulse itself acts on the merged rigid pieces, so the
 //! implicit spring is exact for the merged system.
 //!
-//! Layout: static data per spring (pieces, anchors, rest-length table, voxel) in
-//! parallel vectors; the per-step rows live in [`Lanes`], rebuilt by
-//! [`Springs::prepare`] without allocating.
+//! Layout: per spring only its voxel and rest-length table (for the actuation); the
+//! anchors, targets and per-step rows live in [`Lanes`] (four-lane batches), rebuilt
+//! by [`Springs::prepare`] without allocating.
 
 use super::body::{Pieces, Velocity};
 use super::constants::{
-    AREA_RATIO_MAX_DELTA, CORNER_INERTIA, CORNER_MASS, CORNER_SIDE, DT, SPRING_DAMPING_RATIO,
-    SPRING_FREQUENCY, VOXEL_SIDE,
+    AREA_RATIO_MAX_DELTA, CORNER_SIDE, DT, SPRING_DAMPING_RATIO, SPRING_FREQUENCY, VOXEL_SIDE,
 };
-use super::joint::JointRow;
+use super::lane_prepare::Law;
 use super::lanes::Lanes;
 
 /// Kind of spring, which fixes its rest-length range.
@@ -60,9 +59,10 @@ const VOXEL_AREA_MAX: f64 = VOXEL_SIDE * VOXEL_SIDE * (1.0 + AREA_RATIO_MAX_DELT
 /// One spring as the assembler describes it.
 #[derive(Debug, Clone, Copy)]
 pub struct SpringDef {
-    /// Piece holding anchor a, and the anchor's offset from that piece's centre of mass.
+    /// Piece holding anchor a, and the offset of anchor a's corner square centre from
+    /// that piece's centre of mass (piece frame); the anchor itself is at that plus `qa`.
     pub a: (usize, f64, f64),
-    /// Piece holding anchor b, and its offset.
+    /// Piece holding anchor b, and the offset of its square centre.
     pub b: (usize, f64, f64),
     /// Anchor a's offset from the centre of its own corner square (for m_ref).
     pub qa: (f64, f64),
@@ -77,52 +77,51 @@ pub struct SpringDef {
 /// Every spring of a robot.
 #[derive(Debug, Clone, Default)]
 pub struct Springs {
-    defs: Vec<SpringDef>,
+    voxel: Vec<usize>,
     table: Vec<[f64; 3]>,
-    target: Vec<f64>,
     lanes: Lanes,
-    /// Stiffness (N/m) and stretch (m) of the last prepared step, for the energy audit.
-    energy_terms: Vec<(f64, f64)>,
 }
 
 impl Springs {
-    /// Builds the spring set, all at their rest length. `pad` is the padding piece
-    /// index (see [`Lanes`]).
-    pub fn new(defs: Vec<SpringDef>, pad: usize) -> Self {
+    /// Builds the spring set between `pieces`, all at their rest length. `pad` is the
+    /// padding piece index (see [`Lanes`]).
+    pub fn new(defs: Vec<SpringDef>, pieces: &Pieces, pad: usize) -> Self {
         let table: Vec<[f64; 3]> = defs.iter().map(|d| d.kind.rest_table()).collect();
-        let pairs: Vec<(u32, u32)> = defs.iter().map(|d| (d.a.0 as u32, d.b.0 as u32)).collect();
+        let mut lanes = Lanes::new(&defs, pieces, pad as u32);
+        for (i, t) in table.iter().enumerate() {
+            lanes.set_target(i, t[0]);
+        }
         Springs {
-            target: table.iter().map(|t| t[0]).collect(),
+            voxel: defs.iter().map(|d| d.voxel).collect(),
             table,
-            lanes: Lanes::new(&pairs, pad as u32),
-            energy_terms: vec![(0.0, 0.0); defs.len()],
-            defs,
+            lanes,
         }
     }
 
     /// Number of springs.
     pub fn len(&self) -> usize {
-        self.defs.len()
+        self.voxel.len()
     }
 
     /// True if there is no spring.
     pub fn is_empty(&self) -> bool {
-        self.defs.is_empty()
+        self.voxel.is_empty()
     }
 
     /// Sets every spring's rest length from its voxel's actuation u in [-1, 1]
     /// (+1 contracts, -1 expands), moving linearly toward the range's end. NaN acts
     /// as 0.
     pub fn set_actuation(&mut self, actuation: &[f64]) {
-        for (i, d) in self.defs.iter().enumerate() {
-            let u = actuation[d.voxel];
+        for (i, &v) in self.voxel.iter().enumerate() {
+            let u = actuation[v];
             let u = if u.is_nan() { 0.0 } else { u.clamp(-1.0, 1.0) };
             let [rest, min, max] = self.table[i];
-            self.target[i] = if u >= 0.0 {
+            let target = if u >= 0.0 {
                 rest + u * (min - rest)
             } else {
                 rest - u * (max - rest)
             };
+            self.lanes.set_target(i, target);
         }
     }
 
@@ -134,24 +133,12 @@ impl Springs {
     pub fn prepare(&mut self, pieces: &mut Pieces) {
         let omega = 2.0 * std::f64::consts::PI * SPRING_FREQUENCY;
         let g = 1.0 / (DT * (2.0 * SPRING_DAMPING_RATIO * omega + DT * omega * omega));
-        let b = DT * omega * omega * g;
-        for (i, d) in self.defs.iter().enumerate() {
-            let (pa, pb) = (d.a.0, d.b.0);
-            let ra = pieces.rotate(pa, d.a.1, d.a.2);
-            let rb = pieces.rotate(pb, d.b.1, d.b.2);
-            let row = JointRow::new(pieces, pa, pb, ra, rb);
-            let qa = pieces.rotate(pa, d.qa.0, d.qa.1);
-            let qb = pieces.rotate(pb, d.qb.0, d.qb.1);
-            let qna = qa.0 * row.ny - qa.1 * row.nx;
-            let qnb = qb.0 * row.ny - qb.1 * row.nx;
-            let inv_ref = 2.0 / CORNER_MASS + (qna * qna + qnb * qnb) / CORNER_INERTIA;
-            let gamma = inv_ref * g;
-            let stretch = row.length - self.target[i];
-            let inv_k = 1.0 / (row.inv_mass + gamma);
-            let warm = self.lanes.set(i, &row, inv_k, stretch * b, gamma);
-            row.apply(&mut pieces.vel, warm);
-            self.energy_terms[i] = (omega * omega / inv_ref, stretch);
-        }
+        let law = Law {
+            g,
+            b: DT * omega * omega * g,
+            omega2: omega * omega,
+        };
+        self.lanes.prepare(pieces, law);
     }
 
     /// One sequential-impulse sweep over every spring.
@@ -163,9 +150,6 @@ impl Springs {
     /// Potential energy stored in the springs (J): sum of k x^2 / 2 with the stiffness
     /// and stretch of the last prepared step.
     pub fn potential_energy(&self) -> f64 {
-        self.energy_terms
-            .iter()
-            .map(|&(k, x)| 0.5 * k * x * x)
-            .sum()
+        self.lanes.potential_energy()
     }
 }

@@ -19,7 +19,8 @@ use super::assembly::{assemble, Assembly};
 use super::body::{Pieces, Squares};
 use super::collide::{detect, Contact};
 use super::constants::{
-    DAMPING, DT, GRAVITY, MAX_ROTATION, MAX_TRANSLATION, POSITION_ITERATIONS, VELOCITY_ITERATIONS,
+    DAMPING, DT, GRAVITY, LINEAR_SLOP, MAX_ROTATION, MAX_TRANSLATION, POSITION_ITERATIONS,
+    VELOCITY_ITERATIONS,
 };
 use super::contact::ContactSolver;
 use super::ground::Ground;
@@ -56,9 +57,10 @@ impl World {
         let pad = pieces.len();
         let mut pieces = pieces;
         pieces.vel.push(Default::default());
+        let springs = Springs::new(springs, &pieces, pad);
         let mut world = World {
             pieces,
-            springs: Springs::new(springs, pad),
+            springs,
             ropes: Ropes::new(ropes),
             ground,
             contacts: Vec::new(),
@@ -141,9 +143,15 @@ impl World {
             &mut self.contacts,
         );
         self.touching.iter_mut().for_each(|t| *t = false);
-        for c in &self.contacts {
+        for c in self.contacts.iter().filter(|c| c.separation < LINEAR_SLOP) {
             self.touching[c.square / 4] = true;
         }
+    }
+
+    /// Changes the robot-ground friction coefficient (default 1.414, SPEC 3); for
+    /// experiments and tests.
+    pub fn set_friction(&mut self, friction: f64) {
+        self.solver.friction = friction;
     }
 
     /// Steps taken so far.
@@ -161,7 +169,8 @@ impl World {
         self.touching.len()
     }
 
-    /// Whether any corner square of voxel `v` touches the ground now.
+    /// Whether any corner square of voxel `v` touches the ground now (a contact closer
+    /// than the slop: resting contacts sit within a hair of zero separation).
     pub fn touching(&self, v: usize) -> bool {
         self.touching[v]
     }

@@ -1,1 +1,23 @@
-//! wasm boundary (being written)
+//! The WebAssembly boundary: the only module that uses `wasm_bindgen`.
+//!
+//! Thin handles over core types, one file per wrapped type, mirroring the core's tree:
+//! [`Episode`] wraps `experiment::GaitEpisode`. Bulk per-frame data leaves linear memory
+//! as flat `Float32Array`s whose layouts are documented on the getters that fill them
+//! and, for the page, once in `www/protocol.js`. Core errors become JS `Error`s (never
+//! traps) so a worker can report bad input and keep its previous state.
+#![deny(clippy::unwrap_used)]
+
+mod bench;
+mod episode;
+
+pub use bench::bench_episode;
+pub use episode::Episode;
+
+use wasm_bindgen::prelude::wasm_bindgen;
+
+/// Installs the panic hook so that a Rust panic (a bug, never bad input) is printed to
+/// the console with its message before the trap. Call once after instantiating the module.
+#[wasm_bindgen]
+pub fn start() {
+    console_error_panic_hook::set_once();
+}

@@ -1,0 +1,91 @@
+//! [`Episode`]: a JS handle on one open-loop phase-gait episode
+//! (`experiment::GaitEpisode`), stepped by the page's worker in slices.
+
+use wasm_bindgen::prelude::{wasm_bindgen, JsError};
+
+use crate::experiment::GaitEpisode;
+
+/// One robot on one terrain, driven by the phase gait u(t) = sin(2 pi f t + phi x).
+#[wasm_bindgen]
+pub struct Episode {
+    inner: GaitEpisode,
+}
+
+#[wasm_bindgen]
+impl Episode {
+    /// Builds the robot `shape` (a preset such as `biped-4x3` or rows such as
+    /// `1111-1111-1001`) on `terrain` (such as `hilly-1-10-0`) with gait frequency
+    /// `frequency` (Hz) and phase `phase` (rad per column). Bad input throws an `Error`
+    /// whose message says what is wrong.
+    #[wasm_bindgen(constructor)]
+    pub fn new(shape: &str, terrain: &str, frequency: f64, phase: f64) -> Result<Episode, JsError> {
+        let inner = GaitEpisode::new(shape, terrain, frequency, phase)?;
+        Ok(Episode { inner })
+    }
+
+    /// Advances the simulation by `steps` steps of 1/60 s. Throws if it became unstable.
+    pub fn step(&mut self, steps: usize) -> Result<(), JsError> {
+        Ok(self.inner.step(steps)?)
+    }
+
+    /// Simulated time in seconds.
+    #[wasm_bindgen(getter)]
+    pub fn time(&self) -> f64 {
+        self.inner.time()
+    }
+
+    /// Number of voxels n; frame buffers have lengths 8n, n and 12n.
+    #[wasm_bindgen(getter, js_name = voxelCount)]
+    pub fn voxel_count(&self) -> usize {
+        self.inner.voxel_count()
+    }
+
+    /// Mean x of the voxel centres (m).
+    #[wasm_bindgen(getter, js_name = centreX)]
+    pub fn centre_x(&self) -> f64 {
+        self.inner.centre_x()
+    }
+
+    /// Mean y of the voxel centres (m, y up).
+    #[wasm_bindgen(getter, js_name = centreY)]
+    pub fn centre_y(&self) -> f64 {
+        self.inner.centre_y()
+    }
+
+    /// Voxel outlines, length 8n: for voxel i at `8i`, its outer corner points
+    /// x, y in the order SW, SE, NE, NW (m).
+    pub fn corners(&self) -> Vec<f32> {
+        let mut out = vec![0.0; 8 * self.inner.voxel_count()];
+        self.inner.write_voxel_corners(&mut out);
+        out
+    }
+
+    /// Area ratios, length n: area / rest area, 0.775 contracted .. 1.225 expanded.
+    #[wasm_bindgen(js_name = areaRatios)]
+    pub fn area_ratios(&self) -> Vec<f32> {
+        let mut out = vec![0.0; self.inner.voxel_count()];
+        self.inner.write_area_ratios(&mut out);
+        out
+    }
+
+    /// Rigid corner squares (1.2 m wide), length 12n: for voxel i at `12i`, four
+    /// triples centre x, centre y, angle (rad) in the order SW, SE, NE, NW.
+    #[wasm_bindgen(js_name = cornerBodies)]
+    pub fn corner_bodies(&self) -> Vec<f32> {
+        let mut out = vec![0.0; 12 * self.inner.voxel_count()];
+        self.inner.write_corner_bodies(&mut out);
+        out
+    }
+
+    /// Terrain polyline x coordinates (m), walls included; pairs with [`Self::terrain_ys`].
+    #[wasm_bindgen(js_name = terrainXs)]
+    pub fn terrain_xs(&self) -> Vec<f64> {
+        self.inner.terrain().xs().to_vec()
+    }
+
+    /// Terrain polyline y coordinates (m, y up), walls included.
+    #[wasm_bindgen(js_name = terrainYs)]
+    pub fn terrain_ys(&self) -> Vec<f64> {
+        self.inner.terrain().ys().to_vec()
+    }
+}

@@ -1,0 +1,98 @@
+// @ts-check
+/**
+ * A tiny static file server for www/ (module workers need http, and wasm needs the
+ * application/wasm type for streaming compilation). Serves on 127.0.0.1 only.
+ *
+ *   node scripts/serve.mjs          # http://127.0.0.1:8080, or PORT=9000 node ...
+ *
+ * Also importable: `serve({ root, port: 0 })` gives a free port for tests.
+ */
+import { createReadStream } from 'node:fs';
+import { stat } from 'node:fs/promises';
+import { createServer } from 'node:http';
+import path from 'node:path';
+import { fileURLToPath, pathToFileURL } from 'node:url';
+
+const HERE = path.dirname(fileURLToPath(import.meta.url));
+/** The folder served by default. */
+export const WWW = path.resolve(HERE, '..', 'www');
+
+/** Content types by file extension. */
+const MIME = {
+  '.html': 'text/html; charset=utf-8',
+  '.js': 'text/javascript; charset=utf-8',
+  '.mjs': 'text/javascript; charset=utf-8',
+  '.css': 'text/css; charset=utf-8',
+  '.json': 'application/json; charset=utf-8',
+  '.wasm': 'application/wasm',
+  '.png': 'image/png',
+  '.svg': 'image/svg+xml',
+  '.ico': 'image/x-icon',
+  '.ts': 'text/plain; charset=utf-8',
+  '.txt': 'text/plain; charset=utf-8',
+};
+
+/**
+ * Starts serving `root` on 127.0.0.1.
+ * @param {{root?: string, port?: number}} [options] port 0 picks a free port
+ * @returns {Promise<{server: import('node:http').Server, url: string}>}
+ */
+export function serve({ root = WWW, port = 8080 } = {}) {
+  const server = createServer((req, res) => {
+    handle(root, req, res).catch((error) => {
+      res.writeHead(500, { 'content-type': 'text/plain' });
+      res.end(String(error));
+    });
+  });
+  return new Promise((resolve, reject) => {
+    server.once('error', reject);
+    server.listen(port, '127.0.0.1', () => {
+      const address = /** @type {import('node:net').AddressInfo} */ (server.address());
+      resolve({ server, url: `http://127.0.0.1:${address.port}/` });
+    });
+  });
+}
+
+/**
+ * @param {string} root
+ * @param {import('node:http').IncomingMessage} req
+ * @param {import('node:http').ServerResponse} res
+ */
+async function handle(root, req, res) {
+  if (req.method !== 'GET' && req.method !== 'HEAD') {
+    res.writeHead(405, { allow: 'GET, HEAD' }).end();
+    return;
+  }
+  const urlPath = decodeURIComponent(new URL(req.url ?? '/', 'http://localhost').pathname);
+  let file = path.resolve(root, '.' + urlPath);
+  if (file !== root && !file.startsWith(root + path.sep)) {
+    res.writeHead(403).end('forbidden');
+    return;
+  }
+  let info = await stat(file).catch(() => null);
+  if (info?.isDirectory()) {
+    file = path.join(file, 'index.html');
+    info = await stat(file).catch(() => null);
+  }
+  if (!info?.isFile()) {
+    res.writeHead(404, { 'content-type': 'text/plain' }).end(`not found: ${urlPath}`);
+    return;
+  }
+  res.writeHead(200, {
+    'content-type': MIME[/** @type {keyof MIME} */ (path.extname(file).toLowerCase())] ?? 'application/octet-stream',
+    'content-length': info.size,
+    'cache-control': 'no-store',
+    // Cross-origin isolation: finer performance.now() in the worker (the engine-speed
+    // figure) and SharedArrayBuffer for later multi-worker runs. Everything is same-origin.
+    'cross-origin-opener-policy': 'same-origin',
+    'cross-origin-embedder-policy': 'require-corp',
+  });
+  if (req.method === 'HEAD') res.end();
+  else createReadStream(file).pipe(res);
+}
+
+if (process.argv[1] && import.meta.url === pathToFileURL(path.resolve(process.argv[1])).href) {
+  const port = Number(process.env.PORT ?? 8080);
+  const { url } = await serve({ port });
+  console.log(`Serving www/ at ${url}  (Ctrl-C to stop)`);
+}

@@ -1,0 +1,101 @@
+#![cfg(not(target_arch = "wasm32"))]
+//! Fidelity against numbers measured on the reference simulator (fixtures copied from
+//! shared/reference): placement, a voxel's area-ratio response, and the distribution
+//! of gait velocities. The dynamics are chaotic, so trajectories are compared only
+//! before the first ground contact and gaits only as distributions.
+
+use serde_json::Value;
+use vsr::experiment::{GaitEpisode, PhaseGait};
+use vsr::simulation::{Shape, Terrain, World};
+
+fn fixture(name: &str) -> Value {
+    let path = format!("{}/tests/fixtures/{name}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).expect("fixture present");
+    serde_json::from_str(&text).expect("fixture is JSON")
+}
+
+fn f(v: &Value) -> f64 {
+    v.as_f64().expect("number")
+}
+
+#[test]
+fn placement_matches_the_reference() {
+    for p in fixture("placements.json")["placements"]
+        .as_array()
+        .expect("list")
+    {
+        let shape = Shape::parse(p["shape"].as_str().expect("name")).expect("valid");
+        let terrain = Terrain::parse(p["terrain"].as_str().expect("name")).expect("valid");
+        let w = World::new(shape.voxels(), terrain.xs(), terrain.ys());
+        let (cx, cy) = w.centre();
+        let (x0, y0, x1, y1) = w.bounding_box();
+        let want = |k: &str, i: usize| f(&p[k][i]);
+        for (got, exp) in [
+            (cx, want("centre", 0)),
+            (cy, want("centre", 1)),
+            (x0, want("bbox_min", 0)),
+            (y0, want("bbox_min", 1)),
+            (x1, want("bbox_max", 0)),
+            (y1, want("bbox_max", 1)),
+        ] {
+            assert!(
+                (got - exp).abs() < 1e-9,
+                "{} on {}: {got} vs {exp}",
+                p["shape"],
+                p["terrain"]
+            );
+        }
+    }
+}
+
+#[test]
+fn area_ratio_response_matches_the_reference_before_landing() {
+    let r = fixture("area-ratio-biped-flat.json");
+    let reference: Vec<f64> = r["area_ratio"]
+        .as_array()
+        .expect("list")
+        .iter()
+        .map(f)
+        .collect();
+    let gait = PhaseGait::new(1.0, 0.0).expect("finite");
+    let shape = Shape::parse("biped-4x3").expect("valid");
+    let mut e = GaitEpisode::from_parts(&shape, Terrain::parse("flat").expect("valid"), gait);
+    // The first 30 steps: released from rest, contraction at step 21 (u 0.10 -> 0.81).
+    for (k, want) in reference.iter().take(30).enumerate() {
+        e.step(1).expect("stable");
+        let got = e.world().area_ratio(0);
+        assert!(
+            (got - want).abs() < 0.002,
+            "step {}: area {got}, reference {want}",
+            k + 1
+        );
+    }
+}
+
+#[test]
+fn gait_velocities_fall_in_the_reference_distributions() {
+    let r = fixture("gaits-biped-flat.json");
+    let conditions = r["conditions"].as_array().expect("list");
+    let shape = Shape::parse("biped-4x3").expect("valid");
+    let mut inside = 0;
+    let mut report = Vec::new();
+    for c in conditions {
+        let gait = PhaseGait::new(f(&c["f"]), f(&c["phi"])).expect("finite");
+        let mut e = GaitEpisode::from_parts(&shape, Terrain::parse("flat").expect("valid"), gait);
+        let v = e.run(30.0).expect("stable").velocity;
+        let (mean, sd) = (f(&c["mean_velocity"]), f(&c["sd_velocity"]));
+        if (v - mean).abs() <= 2.0 * sd {
+            inside += 1;
+        }
+        report.push(format!(
+            "f={} phi={}: {v:.3} vs {mean:.3} +- {sd:.3}",
+            c["f"], c["phi"]
+        ));
+    }
+    assert!(
+        inside * 100 >= conditions.len() * 80,
+        "only {inside} of {} gaits within the reference mean +- 2 sd:\n{}",
+        conditions.len(),
+        report.join("\n")
+    );
+}

@@ -1,0 +1,104 @@
+//! The wasm boundary, run under Node by `wasm-pack test --node`: an `Episode` builds
+//! from a shape string, steps, fills frame buffers of the documented lengths with
+//! finite numbers, and reports bad input as a JS `Error` instead of trapping.
+#![cfg(target_arch = "wasm32")]
+
+use vsr::wasm::{bench_episode, Episode};
+use wasm_bindgen::{JsCast, JsValue};
+use wasm_bindgen_test::wasm_bindgen_test;
+
+/// The message of a JS error, after checking that it really is an `Error` object.
+fn error_message(error: wasm_bindgen::JsError) -> String {
+    let value = JsValue::from(error);
+    let error = value.dyn_ref::<js_sys::Error>().expect("a JS Error object");
+    String::from(error.message())
+}
+
+#[wasm_bindgen_test]
+fn preset_and_row_string_build_the_same_biped() {
+    let preset = Episode::new("biped-4x3", "flat", 1.0, 1.5).expect("preset builds");
+    let rows = Episode::new("1111-1111-1001", "flat", 1.0, 1.5).expect("rows build");
+    assert_eq!(preset.voxel_count(), 10);
+    assert_eq!(rows.voxel_count(), 10);
+    assert_eq!(preset.corners(), rows.corners());
+}
+
+#[wasm_bindgen_test]
+fn frame_buffers_have_the_documented_lengths() {
+    for (shape, n) in [("biped-4x3", 10), ("comb-7x2", 11), ("1", 1)] {
+        let episode = Episode::new(shape, "hilly-1-10-0", 1.0, 1.5).expect("valid shape");
+        assert_eq!(episode.voxel_count(), n, "{shape}");
+        assert_eq!(episode.corners().len(), 8 * n, "{shape} corners");
+        assert_eq!(episode.area_ratios().len(), n, "{shape} area ratios");
+        assert_eq!(
+            episode.corner_bodies().len(),
+            12 * n,
+            "{shape} corner bodies"
+        );
+    }
+}
+
+#[wasm_bindgen_test]
+fn stepping_advances_time_and_keeps_numbers_finite() {
+    let mut episode = Episode::new("biped-4x3", "hilly-1-10-0", 1.0, 1.5).expect("valid");
+    let x0 = episode.centre_x();
+    episode.step(120).expect("stable");
+    assert!(
+        (episode.time() - 2.0).abs() < 1e-9,
+        "120 steps are 2 s, got {}",
+        episode.time()
+    );
+    let frame = [
+        episode.corners(),
+        episode.area_ratios(),
+        episode.corner_bodies(),
+    ]
+    .concat();
+    assert!(
+        frame.iter().all(|v| v.is_finite()),
+        "a frame value is not finite"
+    );
+    assert!(episode.centre_x().is_finite() && episode.centre_y().is_finite());
+    assert_ne!(episode.centre_x(), x0, "the robot moved");
+    let ratios = episode.area_ratios();
+    assert!(
+        ratios.iter().all(|&a| (0.6..1.4).contains(&a)),
+        "area ratios {ratios:?}"
+    );
+}
+
+#[wasm_bindgen_test]
+fn terrain_polyline_has_walls() {
+    let episode = Episode::new("biped-4x3", "hilly-1-10-0", 1.0, 1.5).expect("valid");
+    let (xs, ys) = (episode.terrain_xs(), episode.terrain_ys());
+    assert_eq!(xs.len(), 205);
+    assert_eq!(ys.len(), xs.len());
+    assert_eq!((xs[0], ys[0]), (0.0, 100.0));
+    assert_eq!(ys[ys.len() - 1], 100.0);
+}
+
+#[wasm_bindgen_test]
+fn invalid_shapes_are_js_errors_not_traps() {
+    for shape in ["", "11x1-1001", "1111-11", "101", "not-a-preset"] {
+        let error = Episode::new(shape, "flat", 1.0, 1.5)
+            .err()
+            .unwrap_or_else(|| panic!("{shape:?} should be rejected"));
+        let message = error_message(error);
+        assert!(message.contains("shape"), "{shape:?}: {message}");
+    }
+}
+
+#[wasm_bindgen_test]
+fn invalid_terrain_and_gait_are_js_errors() {
+    let terrain = Episode::new("biped-4x3", "hilly-one", 1.0, 1.5).err();
+    assert!(error_message(terrain.expect("rejected")).contains("terrain"));
+    let gait = Episode::new("biped-4x3", "flat", f64::NAN, 1.5).err();
+    assert!(error_message(gait.expect("rejected")).contains("gait"));
+}
+
+#[wasm_bindgen_test]
+fn bench_episode_runs_and_reports_a_finite_displacement() {
+    let dx = bench_episode("biped-4x3", "hilly-1-10-0", 1.0, 1.5, 60).expect("valid");
+    assert!(dx.is_finite());
+    assert!(bench_episode("", "flat", 1.0, 1.5, 60).is_err());
+}

@@ -1,0 +1,113 @@
+// @ts-check
+/**
+ * The message protocol between the page (main.js) and the simulation worker
+ * (worker.js), and the layout of every frame buffer. Defined here once; both sides
+ * import these names instead of spelling strings.
+ *
+ * Page -> worker
+ *   {type: 'load', params}   build a new episode from {@link EpisodeParams}; on failure
+ *                            the worker answers 'error' and keeps its previous episode
+ *   {type: 'start'}          run (paced by `speed`)
+ *   {type: 'pause'}          stop stepping; the last frame stays on screen
+ *   {type: 'reset'}          rebuild the current episode from its parameters (t = 0)
+ *   {type: 'speed', speed}   simulated seconds per wall second; 0 means as fast as possible
+ *
+ * Worker -> page
+ *   {type: 'ready'}                      the wasm module is instantiated
+ *   {type: 'loaded', params, voxels, terrainXs, terrainYs}
+ *                                        a new episode replaced the previous one
+ *   {type: 'frame', ...Frame}            the latest state, buffers transferred
+ *   {type: 'state', running}             the run/pause state changed
+ *   {type: 'error', message, fatal}      bad input (fatal = false: nothing changed) or a
+ *                                        crash of the wasm module (fatal = true: the page
+ *                                        must start a new worker)
+ *
+ * Frame buffers (all Float32Array, n = number of voxels, lengths in floats; the same
+ * layouts are documented on the Rust getters in crate/src/wasm/episode.rs):
+ *   corners  8n   voxel i at 8i: outer corner points x, y in order SW, SE, NE, NW (m)
+ *   areas     n   voxel i at i: area / rest area, 0.775 contracted .. 1.225 expanded
+ *   bodies  12n   voxel i at 12i: four rigid corner squares (1.2 m wide) as centre x,
+ *                 centre y, angle (rad), in order SW, SE, NE, NW
+ * Terrain (sent once per episode, Float64Array): polyline xs, ys in m, y up, walls included.
+ */
+
+/** Message types sent by the page to the worker. */
+export const ToWorker = Object.freeze({
+  LOAD: 'load',
+  START: 'start',
+  PAUSE: 'pause',
+  RESET: 'reset',
+  SPEED: 'speed',
+});
+
+/** Message types sent by the worker to the page. */
+export const FromWorker = Object.freeze({
+  READY: 'ready',
+  LOADED: 'loaded',
+  FRAME: 'frame',
+  STATE: 'state',
+  ERROR: 'error',
+});
+
+/** Floats per voxel in `corners`: 4 corner points x, y. */
+export const CORNER_FLOATS = 8;
+/** Floats per voxel in `areas`. */
+export const AREA_FLOATS = 1;
+/** Floats per voxel in `bodies`: 4 corner squares x, y, angle. */
+export const BODY_FLOATS = 12;
+/** Width of a rigid corner square (m). */
+export const CORNER_BODY_SIDE = 1.2;
+/** Area ratio of a fully contracted voxel (u = +1). */
+export const AREA_CONTRACTED = 0.775;
+/** Area ratio of a fully expanded voxel (u = -1). */
+export const AREA_EXPANDED = 1.225;
+/** Simulation time step (s). */
+export const DT = 1 / 60;
+
+/**
+ * @typedef {object} EpisodeParams
+ * @property {string} shape      preset (`biped-4x3`) or rows top first (`1111-1111-1001`)
+ * @property {string} terrain    terrain name (`hilly-1-10-0`)
+ * @property {number} frequency  gait frequency f (Hz)
+ * @property {number} phase      gait phase phi (rad per column)
+ */
+
+/**
+ * @typedef {object} Frame
+ * @property {number} time         simulated seconds
+ * @property {number} voxels       number of voxels n
+ * @property {number} centreX      mean x of voxel centres (m)
+ * @property {number} centreY      mean y of voxel centres (m)
+ * @property {number} simPerWall   simulated s per wall s while running (achieved)
+ * @property {number} simPerCompute simulated s per s spent inside `step` (engine speed)
+ * @property {Float32Array} corners 8n floats, see the layout above
+ * @property {Float32Array} areas   n floats
+ * @property {Float32Array} bodies  12n floats
+ */
+
+/**
+ * The episode the page starts with. f = 0.5 Hz, phi = 1.5 is the gait under which the
+ * reference simulator's biped walks forward fastest and most reliably on flat ground
+ * (mean 1.03 m/s, every run forward: shared/reference/gaits-biped-flat.json).
+ */
+export const DEFAULT_PARAMS = Object.freeze({
+  shape: 'biped-4x3',
+  terrain: 'hilly-1-10-0',
+  frequency: 0.5,
+  phase: 1.5,
+});
+
+/** Shape presets offered in the shape field. */
+export const SHAPE_PRESETS = Object.freeze(['biped-4x3', 'comb-7x2', 'biped-6x4', 'comb-14x2']);
+
+/**
+ * Checks that a frame's buffers have the documented lengths.
+ * @param {Frame} frame
+ * @returns {boolean}
+ */
+export function frameIsConsistent(frame) {
+  const n = frame.voxels;
+  return frame.corners.length === CORNER_FLOATS * n
+    && frame.areas.length === AREA_FLOATS * n
+    && frame.bodies.length === BODY_FLOATS * n;
+}

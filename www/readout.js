@@ -1,0 +1,57 @@
+// @ts-check
+/**
+ * The live figures under the canvas: simulated time, the robot's x and velocity, and
+ * the speed of the simulation. Each <output> also carries its raw number in
+ * `data-value` so that tests read numbers, not formatted text.
+ */
+
+/** Window over which the velocity is measured (simulated s). */
+const VELOCITY_WINDOW_S = 1;
+
+export class Readout {
+  /** @param {Document} doc */
+  constructor(doc) {
+    this.fields = {
+      time: field(doc, 'sim-time'),
+      x: field(doc, 'robot-x'),
+      velocity: field(doc, 'robot-v'),
+      simPerWall: field(doc, 'sim-rate'),
+      simPerCompute: field(doc, 'engine-rate'),
+    };
+    /** Recent (time, x) samples, oldest first. @type {{t: number, x: number}[]} */
+    this.history = [];
+  }
+
+  /** Forgets the velocity history (a new episode starts). */
+  reset() {
+    this.history = [];
+  }
+
+  /** @param {import('./protocol.js').Frame} frame */
+  update(frame) {
+    const last = this.history[this.history.length - 1];
+    if (last && frame.time < last.t) this.history = [];
+    this.history.push({ t: frame.time, x: frame.centreX });
+    while (this.history.length > 2 && frame.time - this.history[1].t >= VELOCITY_WINDOW_S) this.history.shift();
+    const first = this.history[0];
+    const velocity = frame.time > first.t ? (frame.centreX - first.x) / (frame.time - first.t) : NaN;
+    show(this.fields.time, frame.time, `${frame.time.toFixed(2)} s`);
+    show(this.fields.x, frame.centreX, `${frame.centreX.toFixed(2)} m`);
+    show(this.fields.velocity, velocity, `${velocity.toFixed(2)} m/s`);
+    show(this.fields.simPerWall, frame.simPerWall, `${frame.simPerWall.toFixed(2)} sim s / wall s`);
+    show(this.fields.simPerCompute, frame.simPerCompute, `${Math.round(frame.simPerCompute)}x real time`);
+  }
+}
+
+/** @param {Document} doc @param {string} id */
+function field(doc, id) {
+  const el = doc.getElementById(id);
+  if (!el) throw new Error(`the page has no #${id}`);
+  return el;
+}
+
+/** @param {HTMLElement} el @param {number} value @param {string} text */
+function show(el, value, text) {
+  el.dataset.value = String(value);
+  el.textContent = Number.isFinite(value) ? text : '…';
+}

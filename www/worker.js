@@ -1,0 +1,192 @@
+// @ts-check
+/**
+ * The simulation worker (a module worker). It owns the wasm `Episode`, steps it in
+ * short slices so that control messages are handled promptly, and posts frames whose
+ * buffers are transferred, not copied. Message types and buffer layouts: protocol.js.
+ */
+import init, { Episode, start as installPanicHook } from './pkg/vsr.js';
+import { DT, FromWorker, ToWorker } from './protocol.js';
+
+/** Longest run of stepping before yielding to the message queue (ms). */
+const SLICE_BUDGET_MS = 8;
+/** Minimum wall time between two posted frames (ms): about the display rate. */
+const FRAME_INTERVAL_MS = 1000 / 60;
+/** Steps per call into wasm inside a slice; small enough to respect the budget. */
+const STEPS_PER_CALL = 4;
+/** If pacing falls further behind than this (simulated s), the lag is dropped. */
+const MAX_LAG_S = 0.25;
+/** Window over which the speed figures are measured (wall ms). */
+const RATE_WINDOW_MS = 500;
+
+const ready = init().then(() => installPanicHook());
+
+/** @type {Episode | null} */
+let episode = null;
+/** @type {import('./protocol.js').EpisodeParams | null} */
+let params = null;
+let running = false;
+/** Simulated seconds per wall second; 0 = as fast as possible. */
+let speed = 1;
+/** Pacing anchor: wall time (ms) and simulated time (s) when running (re)started. */
+let anchor = { wall: 0, sim: 0 };
+/** Speed measurement window. */
+let rate = { wall: 0, sim: 0, compute: 0, simPerWall: NaN, simPerCompute: NaN };
+let lastFramePosted = -Infinity;
+let tickScheduled = false;
+const yieldChannel = new MessageChannel();
+yieldChannel.port1.onmessage = () => tick();
+
+/** @param {MessageEvent} event */
+self.onmessage = async (event) => {
+  try {
+    await ready;
+  } catch (error) {
+    reportError(`could not load the simulator (wasm): ${messageOf(error)}`, true);
+    return;
+  }
+  try {
+    handle(event.data);
+  } catch (error) {
+    reportError(messageOf(error), error instanceof WebAssembly.RuntimeError);
+  }
+};
+
+/** @param {{type: string, params?: import('./protocol.js').EpisodeParams, speed?: number}} msg */
+function handle(msg) {
+  switch (msg.type) {
+    case ToWorker.LOAD: if (msg.params) load(msg.params); break;
+    case ToWorker.RESET: if (params) load(params); break;
+    case ToWorker.START: setRunning(true); break;
+    case ToWorker.PAUSE: setRunning(false); break;
+    case ToWorker.SPEED: speed = Math.max(0, Number(msg.speed) || 0); restartClocks(); break;
+    default: reportError(`unknown message type ${JSON.stringify(msg.type)}`, false);
+  }
+}
+
+/**
+ * Replaces the episode. Bad parameters throw before anything is replaced, so the
+ * previous robot keeps running and the error goes back to the page.
+ * @param {import('./protocol.js').EpisodeParams} next
+ */
+function load(next) {
+  const fresh = new Episode(next.shape, next.terrain, next.frequency, next.phase);
+  episode?.free();
+  episode = fresh;
+  params = { ...next };
+  const terrainXs = fresh.terrainXs();
+  const terrainYs = fresh.terrainYs();
+  self.postMessage({ type: FromWorker.LOADED, params, voxels: fresh.voxelCount, terrainXs, terrainYs },
+    [terrainXs.buffer, terrainYs.buffer]);
+  restartClocks();
+  postFrame();
+  schedule();
+}
+
+/** @param {boolean} run */
+function setRunning(run) {
+  running = run;
+  restartClocks();
+  self.postMessage({ type: FromWorker.STATE, running });
+  schedule();
+}
+
+function restartClocks() {
+  const now = performance.now();
+  anchor = { wall: now, sim: episode ? episode.time : 0 };
+  rate = { wall: now, sim: anchor.sim, compute: 0, simPerWall: NaN, simPerCompute: NaN };
+}
+
+function schedule() {
+  if (running && episode && !tickScheduled) {
+    tickScheduled = true;
+    yieldChannel.port2.postMessage(null);
+  }
+}
+
+/** One slice: step toward the paced target (or for the budget), maybe post a frame. */
+function tick() {
+  tickScheduled = false;
+  if (!running || !episode) return;
+  try {
+    stepSlice(episode);
+  } catch (error) {
+    running = false;
+    self.postMessage({ type: FromWorker.STATE, running });
+    reportError(messageOf(error), error instanceof WebAssembly.RuntimeError);
+    return;
+  }
+  const now = performance.now();
+  if (now - lastFramePosted >= FRAME_INTERVAL_MS) postFrame();
+  if (speed > 0 && targetSteps(episode, now) === 0) {
+    setTimeout(schedule, FRAME_INTERVAL_MS / 2);
+  } else {
+    schedule();
+  }
+}
+
+/** @param {Episode} ep */
+function stepSlice(ep) {
+  const begin = performance.now();
+  let budget = speed > 0 ? targetSteps(ep, begin) : Infinity;
+  while (budget > 0 && performance.now() - begin < SLICE_BUDGET_MS) {
+    const n = Math.min(STEPS_PER_CALL, budget);
+    ep.step(n);
+    budget -= n;
+  }
+  rate.compute += performance.now() - begin;
+}
+
+/**
+ * Steps still owed to keep simulated time at `speed` x wall time; drops the lag when
+ * the machine cannot keep up, instead of spiralling.
+ * @param {Episode} ep
+ * @param {number} now
+ */
+function targetSteps(ep, now) {
+  const want = anchor.sim + ((now - anchor.wall) / 1000) * speed;
+  if (want - ep.time > MAX_LAG_S) anchor = { wall: now, sim: ep.time };
+  return Math.max(0, Math.floor((Math.min(want, ep.time + MAX_LAG_S) - ep.time) / DT + 1e-6));
+}
+
+function postFrame() {
+  if (!episode) return;
+  const now = performance.now();
+  lastFramePosted = now;
+  updateRates(episode, now);
+  const corners = episode.corners();
+  const areas = episode.areaRatios();
+  const bodies = episode.cornerBodies();
+  self.postMessage({
+    type: FromWorker.FRAME, time: episode.time, voxels: episode.voxelCount,
+    centreX: episode.centreX, centreY: episode.centreY,
+    simPerWall: running ? rate.simPerWall : NaN, simPerCompute: rate.simPerCompute,
+    corners, areas, bodies,
+  }, [corners.buffer, areas.buffer, bodies.buffer]);
+}
+
+/** @param {Episode} ep @param {number} now */
+function updateRates(ep, now) {
+  const wall = now - rate.wall;
+  if (wall < RATE_WINDOW_MS) return;
+  const sim = ep.time - rate.sim;
+  rate.simPerWall = sim / (wall / 1000);
+  rate.simPerCompute = rate.compute > 0 ? sim / (rate.compute / 1000) : NaN;
+  rate.wall = now;
+  rate.sim = ep.time;
+  rate.compute = 0;
+}
+
+/** @param {string} message @param {boolean} fatal */
+function reportError(message, fatal) {
+  self.postMessage({ type: FromWorker.ERROR, message, fatal });
+}
+
+/** @param {unknown} error */
+function messageOf(error) {
+  return error instanceof Error ? error.message : String(error);
+}
+
+ready.then(
+  () => self.postMessage({ type: FromWorker.READY }),
+  (error) => reportError(`could not load the simulator (wasm): ${messageOf(error)}`, true),
+);
