@@ -19,7 +19,7 @@ pub struct Args {
     #[arg(long, allow_hyphen_values = true)]
     gait: String,
     /// Simulated seconds.
-    #[arg(long, default_value_t = 30.0)]
+    #[arg(long, default_value_t = 30.0, allow_hyphen_values = true)]
     seconds: f64,
     /// Also record voxel V's area ratio and held actuation after every step (JSON
     /// field "trace").
