@@ -19,12 +19,31 @@ fn vsr(args: &[&str]) -> (i32, String, String) {
 #[test]
 fn simulate_json_has_the_documented_fields() {
     let (code, out, err) = vsr(&[
-        "simulate", "--shape", "biped-4x3", "--terrain", "flat", "--gait", "1,0.5", "--seconds", "5", "--json",
+        "simulate",
+        "--shape",
+        "biped-4x3",
+        "--terrain",
+        "flat",
+        "--gait",
+        "1,0.5",
+        "--seconds",
+        "5",
+        "--json",
     ]);
     assert_eq!(code, 0, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).expect("one JSON object");
-    for key in ["velocity", "distance", "steps", "voxels", "seconds", "wall_seconds"] {
-        assert!(v.get(key).is_some_and(|x| x.is_number()), "missing {key} in {out}");
+    for key in [
+        "velocity",
+        "distance",
+        "steps",
+        "voxels",
+        "seconds",
+        "wall_seconds",
+    ] {
+        assert!(
+            v.get(key).is_some_and(|x| x.is_number()),
+            "missing {key} in {out}"
+        );
     }
     assert_eq!(v["steps"], 301);
     assert_eq!(v["voxels"], 10);
@@ -45,16 +64,47 @@ fn terrain_json_is_the_polyline_with_walls() {
 fn bad_arguments_exit_2_with_a_message() {
     let cases: [(&[&str], &str); 6] = [
         (&["simulate", "--shape", "11-0x", "--gait", "1,0"], "shape"),
-        (&["simulate", "--shape", "1001", "--gait", "1,0"], "separate"),
-        (&["simulate", "--shape", "biped-4x3", "--terrain", "hill", "--gait", "1,0"], "terrain"),
-        (&["simulate", "--shape", "biped-4x3", "--gait", "fast"], "gait"),
-        (&["simulate", "--shape", "biped-4x3", "--gait", "1,0", "--seconds", "-3"], "seconds"),
+        (
+            &["simulate", "--shape", "1001", "--gait", "1,0"],
+            "separate",
+        ),
+        (
+            &[
+                "simulate",
+                "--shape",
+                "biped-4x3",
+                "--terrain",
+                "hill",
+                "--gait",
+                "1,0",
+            ],
+            "terrain",
+        ),
+        (
+            &["simulate", "--shape", "biped-4x3", "--gait", "fast"],
+            "gait",
+        ),
+        (
+            &[
+                "simulate",
+                "--shape",
+                "biped-4x3",
+                "--gait",
+                "1,0",
+                "--seconds",
+                "-3",
+            ],
+            "seconds",
+        ),
         (&["terrain", "steppy-1-10"], "terrain"),
     ];
     for (args, word) in cases {
         let (code, _, err) = vsr(args);
         assert_eq!(code, 2, "{args:?} exit code");
-        assert!(err.contains(word), "{args:?}: message {err:?} should mention {word}");
+        assert!(
+            err.contains(word),
+            "{args:?}: message {err:?} should mention {word}"
+        );
     }
     let (code, _, err) = vsr(&["simulate", "--gait", "1,0"]);
     assert_eq!(code, 2, "missing --shape: {err}");

@@ -19,7 +19,8 @@ pub struct Args {
     #[arg(long, default_value = "hilly-1-10-0")]
     terrain: String,
     /// Also time whole evolution steps per controller (1 thread and all threads) and the
-    /// controller's cost over the bare simulation; takes about a minute.
+    /// controller's cost over the bare simulation (about a minute); with --json the output
+    /// becomes {"simulation": [...], "evolution": {...}}.
     #[arg(long)]
     evolution: bool,
     /// Population of the timed evolution steps.
@@ -53,14 +54,26 @@ pub fn run(args: Args) -> vsr::Result<()> {
             "realtime_factor": 30.0 / best,
         }));
     }
-    if args.json {
-        println!("{}", serde_json::Value::Array(rows));
-        return Ok(());
-    }
-    print_rows(&args, rows);
-    if args.evolution {
-        println!();
-        crate::bench_evolution::run(args.population, args.repeats.min(3))?;
+    let evolution = match args.evolution {
+        true => Some(crate::bench_evolution::measure(
+            args.population,
+            args.repeats.min(3),
+        )?),
+        false => None,
+    };
+    match (args.json, evolution) {
+        (true, None) => println!("{}", serde_json::Value::Array(rows)),
+        (true, Some(e)) => println!(
+            "{}",
+            serde_json::json!({ "simulation": rows, "evolution": e })
+        ),
+        (false, evolution) => {
+            print_rows(&args, rows);
+            if let Some(e) = evolution {
+                println!();
+                crate::bench_evolution::print(&e);
+            }
+        }
     }
     Ok(())
 }
