@@ -23,3 +23,38 @@ pub fn standard_normal(rng: &mut impl Rng) -> f64 {
         }
     }
 }
+
+/// A stream of N(0, 1) draws by the polar method that keeps the second value of each
+/// pair (as Java's `nextGaussian` does): half the logarithms of [`standard_normal`].
+#[derive(Debug, Clone)]
+pub struct NormalStream {
+    rng: ProjectRng,
+    spare: Option<f64>,
+}
+
+impl NormalStream {
+    /// A stream seeded from `seed`.
+    pub fn new(seed: u64) -> Self {
+        NormalStream {
+            rng: rng_from(seed),
+            spare: None,
+        }
+    }
+
+    /// The next N(0, 1) draw.
+    pub fn next(&mut self) -> f64 {
+        if let Some(z) = self.spare.take() {
+            return z;
+        }
+        loop {
+            let u = 2.0 * self.rng.gen::<f64>() - 1.0;
+            let v = 2.0 * self.rng.gen::<f64>() - 1.0;
+            let s = u * u + v * v;
+            if s > 0.0 && s < 1.0 {
+                let m = libm::sqrt(-2.0 * libm::log(s) / s);
+                self.spare = Some(v * m);
+                return u * m;
+            }
+        }
+    }
+}

@@ -12,7 +12,7 @@
 
 use super::constants::DT;
 use super::world::World;
-use crate::random::{rng_from, standard_normal, ProjectRng};
+use crate::random::NormalStream;
 
 /// Readings per voxel.
 pub const READINGS: usize = 4;
@@ -76,7 +76,7 @@ impl Window {
 pub struct Sensors {
     velocity: Window,
     touch: Window,
-    noise: Option<ProjectRng>,
+    noise: Option<NormalStream>,
     readings: Vec<f32>,
 }
 
@@ -86,7 +86,7 @@ impl Sensors {
         Sensors {
             velocity: Window::new(VELOCITY_WINDOW, 2 * voxels),
             touch: Window::new(TOUCH_WINDOW, voxels),
-            noise: noise_seed.map(rng_from),
+            noise: noise_seed.map(NormalStream::new),
             readings: vec![0.0; READINGS * voxels],
         }
     }
@@ -116,7 +116,7 @@ impl Sensors {
             ];
             for (r, value) in raw.into_iter().enumerate() {
                 let noise = match &mut self.noise {
-                    Some(rng) => NOISE_SD * standard_normal(rng),
+                    Some(stream) => NOISE_SD * stream.next(),
                     None => 0.0,
                 };
                 self.readings[READINGS * v + r] = (value + noise) as f32;
