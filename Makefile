@@ -2,6 +2,7 @@
 #   make run         install what is missing, build the page, serve it at http://127.0.0.1:8080
 #   make test        install what is missing (and chromium), then every check and test
 #   make bench-wasm  speed of the wasm build in Node (figures for the README)
+#   make bench-native-v3  opt-in: native speed built for x86-64-v3 (AVX2) CPUs only
 
 SHELL := /bin/bash
 export PATH := $(HOME)/.cargo/bin:$(PATH)
@@ -11,7 +12,7 @@ WASM_PACK_BUILD := wasm-pack build --release --target web --out-dir www/pkg --ou
 # The steps depend on each other's results (setup before builds, wasm before test-web).
 .NOTPARALLEL:
 
-.PHONY: run test setup setup-test wasm serve lint test-native test-wasm test-web bench-wasm
+.PHONY: run test setup setup-test wasm serve lint test-native test-wasm test-web bench-wasm bench-native-v3
 
 run: setup wasm serve
 
@@ -48,3 +49,12 @@ test-web:
 
 bench-wasm: setup wasm
 	node tests/bench/wasm_bench.mjs
+
+## Opt-in only, never the default build: the same code compiled for x86-64-v3 (AVX2; the
+## binary will not run on older CPUs), into its own target dir so the portable build is
+## untouched. `-C target-feature=-fma` keeps results bit-identical to the portable and
+## wasm builds (LLVM never contracts a * b + c without fast-math, but be explicit).
+bench-native-v3:
+	RUSTFLAGS="-C target-cpu=x86-64-v3 -C target-feature=-fma" \
+	  cargo build --release --target-dir target/x86-64-v3
+	target/x86-64-v3/release/vsr bench

@@ -20,11 +20,17 @@
 //! since T c depends only on the previous sweeps. T and A are built once per step by
 //! [`group_matrices`]; the velocity update uses per-lane inverse masses.
 
+//!
+//! The sweep and [`apply`] use explicit 4-wide SIMD (`wide::f64x4`: SSE2 pairs natively,
+//! simd128 pairs in wasm), loading the `[f64; LANES]` fields as vectors, in the same
+//! operation order as the lane-by-lane formulas, so results stay bit-identical.
+
 // Lane loops index several parallel arrays by lane on purpose.
 #![allow(clippy::needless_range_loop)]
 
 use super::body::Velocity;
 use super::lanes::{Lane3, Lanes, Row4, L, LANES};
+use wide::f64x4;
 
 /// The coupling m_ji (i < j, row-major) of a group's rows.
 #[inline]
@@ -87,25 +93,23 @@ pub fn group_matrices(rows: &mut [Row4], inv: &[L; 4], t: &mut [L]) {
 /// Applies per-row impulses `lambda` to the lanes' velocities: -J^T on a, +J^T on b.
 #[inline(always)]
 pub fn apply(rows: &[Row4], lambda: &[L], inv: &[L; 4], a: &mut Lane3, b: &mut Lane3) {
-    let [ima, iia, imb, iib] = inv;
-    let z = [0.0; LANES];
+    let v = |x: &L| f64x4::from(*x);
+    let z = f64x4::ZERO;
     let (mut px, mut py, mut ta, mut tb) = (z, z, z, z);
     for (row, l) in rows.iter().zip(lambda) {
-        for k in 0..LANES {
-            px[k] += row.nx[k] * l[k];
-            py[k] += row.ny[k] * l[k];
-            ta[k] += row.rna[k] * l[k];
-            tb[k] += row.rnb[k] * l[k];
-        }
+        let l = v(l);
+        px += v(&row.nx) * l;
+        py += v(&row.ny) * l;
+        ta += v(&row.rna) * l;
+        tb += v(&row.rnb) * l;
     }
-    for k in 0..LANES {
-        a.x[k] -= ima[k] * px[k];
-        a.y[k] -= ima[k] * py[k];
-        a.w[k] -= iia[k] * ta[k];
-        b.x[k] += imb[k] * px[k];
-        b.y[k] += imb[k] * py[k];
-        b.w[k] += iib[k] * tb[k];
-    }
+    let [ima, iia, imb, iib] = inv.map(f64x4::from);
+    a.x = (v(&a.x) - ima * px).to_array();
+    a.y = (v(&a.y) - ima * py).to_array();
+    a.w = (v(&a.w) - iia * ta).to_array();
+    b.x = (v(&b.x) + imb * px).to_array();
+    b.y = (v(&b.y) + imb * py).to_array();
+    b.w = (v(&b.w) + iib * tb).to_array();
 }
 
 /// One sweep over a batch of `R` rows.
@@ -119,36 +123,28 @@ fn solve_batch<const R: usize>(
     let rows: &[Row4; R] = rows[..R].try_into().expect("R rows");
     let acc: &mut [L; R] = (&mut acc[..R]).try_into().expect("R rows");
     let t = &t[..R * (R - 1) / 2];
-    let mut c = [[0.0; LANES]; R];
-    for j in 0..R {
+    let v = |x: &L| f64x4::from(*x);
+    let c: [f64x4; R] = std::array::from_fn(|j| {
         let r = &rows[j];
-        for k in 0..LANES {
-            c[j][k] = -r.inv_k[k] * (r.bias[k] + r.gamma[k] * acc[j][k]);
-        }
-    }
+        -v(&r.inv_k) * (v(&r.bias) + v(&r.gamma) * v(&acc[j]))
+    });
     let mut lambda = c;
     let mut idx = 0;
     for j in 1..R {
         for i in 0..j {
-            for k in 0..LANES {
-                lambda[j][k] += t[idx][k] * c[i][k];
-            }
+            lambda[j] += v(&t[idx]) * c[i];
             idx += 1;
         }
     }
-    for j in 0..R {
+    let (ux, uy) = (v(&b.x) - v(&a.x), v(&b.y) - v(&a.y));
+    let (wa, wb) = (v(&a.w), v(&b.w));
+    let lambda: [L; R] = std::array::from_fn(|j| {
         let r = &rows[j].a;
-        for k in 0..LANES {
-            let (ux, uy) = (b.x[k] - a.x[k], b.y[k] - a.y[k]);
-            let au = (r[0][k] * ux + r[1][k] * uy) + (r[2][k] * a.w[k] + r[3][k] * b.w[k]);
-            lambda[j][k] += au;
-        }
-    }
-    for j in 0..R {
-        for k in 0..LANES {
-            acc[j][k] += lambda[j][k];
-        }
-    }
+        let au = (v(&r[0]) * ux + v(&r[1]) * uy) + (v(&r[2]) * wa + v(&r[3]) * wb);
+        let l = lambda[j] + au;
+        acc[j] = (v(&acc[j]) + l).to_array();
+        l.to_array()
+    });
     apply(rows, &lambda, inv, a, b);
 }
 

@@ -1,11 +1,17 @@
 //! Rope constraints: the centres of adjacent corner squares of a voxel never come
 //! closer than 1.2 m, so the squares cannot overlap (SPEC 2). A rope is a one-sided
 //! hard distance constraint, active only while it is at its limit: a clamped impulse in
-//! the velocity solver and a Baumgarte-limited push in the position solver.
+//! the velocity solver and a Baumgarte-limited push in the position solver. Ropes are
+//! almost never at their limit, so [`Ropes::prepare`] first compares the squared
+//! distance with a slightly widened limit and builds the full row only near it.
 
 use super::body::{Pieces, Velocity};
 use super::constants::{LINEAR_SLOP, MAX_LINEAR_CORRECTION, ROPE_MIN_LENGTH};
 use super::joint::JointRow;
+
+/// Squared distances above this are surely longer than the rope limit, whatever the
+/// rounding of the square root: the full row is built only below it.
+const SURELY_SLACK2: f64 = ROPE_MIN_LENGTH * ROPE_MIN_LENGTH * (1.0 + 1e-9);
 
 /// One rope between the centres of two corner squares.
 #[derive(Debug, Clone, Copy)]
@@ -52,10 +58,24 @@ impl Ropes {
         JointRow::new(pieces, d.a.0, d.b.0, ra, rb)
     }
 
+    /// True if rope i is certainly longer than its limit (no square root needed).
+    #[inline]
+    fn surely_slack(&self, pieces: &Pieces, i: usize) -> bool {
+        let d = &self.defs[i];
+        let (ax, ay) = pieces.to_world(d.a.0, d.a.1, d.a.2);
+        let (bx, by) = pieces.to_world(d.b.0, d.b.1, d.b.2);
+        let (dx, dy) = (bx - ax, by - ay);
+        dx * dx + dy * dy > SURELY_SLACK2
+    }
+
     /// Finds the ropes at their limit and applies their warm-start impulses.
     pub fn prepare(&mut self, pieces: &mut Pieces) {
         self.active.clear();
         for i in 0..self.defs.len() {
+            if self.surely_slack(pieces, i) {
+                self.impulse[i] = 0.0;
+                continue;
+            }
             let row = self.row(pieces, i);
             if row.length <= ROPE_MIN_LENGTH {
                 row.apply(&mut pieces.vel, self.impulse[i]);
