@@ -42,7 +42,7 @@ impl NormalStream {
     }
 
     /// The next N(0, 1) draw.
-    pub fn next(&mut self) -> f64 {
+    pub fn draw(&mut self) -> f64 {
         if let Some(z) = self.spare.take() {
             return z;
         }

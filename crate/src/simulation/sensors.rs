@@ -116,7 +116,7 @@ impl Sensors {
             ];
             for (r, value) in raw.into_iter().enumerate() {
                 let noise = match &mut self.noise {
-                    Some(stream) => NOISE_SD * stream.next(),
+                    Some(stream) => NOISE_SD * stream.draw(),
                     None => 0.0,
                 };
                 self.readings[READINGS * v + r] = (value + noise) as f32;
