@@ -21,10 +21,22 @@ fn every_pretrained_module_replays_to_its_recorded_fitness() {
     for m in modules {
         let file = m["file"].as_str().expect("file");
         let run = RunFile::from_json(&pretrained(file)).expect("a valid run file");
-        assert_eq!(run.config.seed, m["seed"].as_u64().expect("seed"), "{file}: seed");
-        assert_eq!(run.best.controller.to_string(), m["controller"], "{file}: controller");
+        assert_eq!(
+            run.config.seed,
+            m["seed"].as_u64().expect("seed"),
+            "{file}: seed"
+        );
+        assert_eq!(
+            run.best.controller.to_string(),
+            m["controller"],
+            "{file}: controller"
+        );
         assert_eq!(run.best.shape.to_rows(), m["shape"], "{file}: shape");
-        assert_eq!(Some(run.best.fitness), m["training_best"].as_f64(), "{file}: best fitness");
+        assert_eq!(
+            Some(run.best.fitness),
+            m["training_best"].as_f64(),
+            "{file}: best fitness"
+        );
         let v = validate(&run.best, run.config.seconds).expect("validates");
         let recorded: Vec<f64> = m["validation"]
             .as_array()
@@ -34,6 +46,10 @@ fn every_pretrained_module_replays_to_its_recorded_fitness() {
             .collect();
         let replayed: Vec<f64> = v.terrains.iter().map(|t| t.velocity).collect();
         assert_eq!(replayed, recorded, "{file}: validation velocities");
-        assert_eq!(Some(v.median), m["validation_median"].as_f64(), "{file}: median");
+        assert_eq!(
+            Some(v.median),
+            m["validation_median"].as_f64(),
+            "{file}: median"
+        );
     }
 }
