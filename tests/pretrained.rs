@@ -21,10 +21,22 @@ fn every_pretrained_module_replays_to_its_recorded_fitness() {
     for m in modules {
         let file = m["file"].as_str().expect("file");
         let run = RunFile::from_json(&pretrained(file)).expect("a valid run file");
-        assert_eq!(run.config.seed, m["seed"].as_u64().expect("seed"), "{file}: seed");
-        assert_eq!(run.best.controller.to_string(), m["controller"], "{file}: controller");
+        assert_eq!(
+            run.config.seed,
+            m["seed"].as_u64().expect("seed"),
+            "{file}: seed"
+        );
+        assert_eq!(
+            run.best.controller.to_string(),
+            m["controller"],
+            "{file}: controller"
+        );
         assert_eq!(run.best.shape.to_rows(), m["shape"], "{file}: shape");
-        assert_eq!(Some(run.best.fitness), m["training_best"].as_f64(), "{file}: best fitness");
+        assert_eq!(
+            Some(run.best.fitness),
+            m["training_best"].as_f64(),
+            "{file}: best fitness"
+        );
         let v = validate(&run.best, run.config.seconds).expect("validates");
         let recorded: Vec<f64> = m["validation"]
             .as_array()
@@ -34,6 +46,43 @@ fn every_pretrained_module_replays_to_its_recorded_fitness() {
             .collect();
         let replayed: Vec<f64> = v.terrains.iter().map(|t| t.velocity).collect();
         assert_eq!(replayed, recorded, "{file}: validation velocities");
-        assert_eq!(Some(v.median), m["validation_median"].as_f64(), "{file}: median");
+        assert_eq!(
+            Some(v.median),
+            m["validation_median"].as_f64(),
+            "{file}: median"
+        );
     }
+}
+
+#[test]
+fn replay_is_the_episode_vsr_evaluate_runs_and_refuses_another_shape() {
+    use vsr::experiment::evaluate::{evaluate, replay};
+    use vsr::simulation::{Shape, Terrain};
+    let run = RunFile::from_json(&pretrained("biped-4x3-attention-seed1.json")).expect("valid");
+    let terrain = || Terrain::parse("hilly-1-10-0").expect("terrain");
+    let best = &run.best;
+    let mut episode = replay(best, None, terrain(), Some(0)).expect("its own shape");
+    let replayed = episode.run(5.0).expect("stable");
+    let evaluated = evaluate(
+        &best.shape,
+        terrain(),
+        best.controller,
+        &best.genome,
+        Some(0),
+        5.0,
+    );
+    assert_eq!(
+        replayed,
+        evaluated.expect("stable"),
+        "the page replays what the CLI evaluates"
+    );
+    assert_eq!(episode.attention().map(<[f32]>::len), Some(16 * 10));
+    let comb = Shape::parse("comb-7x2").expect("preset");
+    let error = replay(best, Some(&comb), terrain(), Some(0)).expect_err("another shape");
+    assert!(
+        error
+            .to_string()
+            .contains("needs shape 1111-1111-1001 (10 voxels), not 1111111-1010101"),
+        "{error}"
+    );
 }
