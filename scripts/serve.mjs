@@ -1,7 +1,9 @@
 // @ts-check
 /**
  * A tiny static file server for www/ (module workers need http, and wasm needs the
- * application/wasm type for streaming compilation). Serves on 127.0.0.1 only.
+ * application/wasm type for streaming compilation). Serves on 127.0.0.1 only, GET and
+ * HEAD only. The repository's pretrained/ run files are also served, read-only, at
+ * /pretrained/ (the page lists them from /pretrained/manifest.json), without a copy.
  *
  *   node scripts/serve.mjs          # http://127.0.0.1:8080, or PORT=9000 node ...
  *
@@ -16,6 +18,8 @@ import { fileURLToPath, pathToFileURL } from 'node:url';
 const HERE = path.dirname(fileURLToPath(import.meta.url));
 /** The folder served by default. */
 export const WWW = path.resolve(HERE, '..', 'www');
+/** Folders served under a URL prefix instead of from `root`. */
+export const MOUNTS = Object.freeze({ '/pretrained/': path.resolve(HERE, '..', 'pretrained') });
 
 /** Content types by file extension. */
 const MIME = {
@@ -33,13 +37,14 @@ const MIME = {
 };
 
 /**
- * Starts serving `root` on 127.0.0.1.
- * @param {{root?: string, port?: number}} [options] port 0 picks a free port
+ * Starts serving `root` (and `mounts`) on 127.0.0.1.
+ * @param {{root?: string, port?: number, mounts?: Record<string, string>}} [options]
+ *   port 0 picks a free port; mounts maps URL prefixes ending in '/' to folders
  * @returns {Promise<{server: import('node:http').Server, url: string}>}
  */
-export function serve({ root = WWW, port = 8080 } = {}) {
+export function serve({ root = WWW, port = 8080, mounts = MOUNTS } = {}) {
   const server = createServer((req, res) => {
-    handle(root, req, res).catch((error) => {
+    handle(root, mounts, req, res).catch((error) => {
       res.writeHead(500, { 'content-type': 'text/plain' });
       res.end(String(error));
     });
@@ -55,17 +60,20 @@ export function serve({ root = WWW, port = 8080 } = {}) {
 
 /**
  * @param {string} root
+ * @param {Record<string, string>} mounts
  * @param {import('node:http').IncomingMessage} req
  * @param {import('node:http').ServerResponse} res
  */
-async function handle(root, req, res) {
+async function handle(root, mounts, req, res) {
   if (req.method !== 'GET' && req.method !== 'HEAD') {
     res.writeHead(405, { allow: 'GET, HEAD' }).end();
     return;
   }
   const urlPath = decodeURIComponent(new URL(req.url ?? '/', 'http://localhost').pathname);
-  let file = path.resolve(root, '.' + urlPath);
-  if (file !== root && !file.startsWith(root + path.sep)) {
+  const prefix = Object.keys(mounts).find((p) => urlPath.startsWith(p));
+  const base = prefix ? mounts[prefix] : root;
+  let file = path.resolve(base, '.' + (prefix ? urlPath.slice(prefix.length - 1) : urlPath));
+  if (file !== base && !file.startsWith(base + path.sep)) {
     res.writeHead(403).end('forbidden');
     return;
   }
@@ -94,5 +102,5 @@ async function handle(root, req, res) {
 if (process.argv[1] && import.meta.url === pathToFileURL(path.resolve(process.argv[1])).href) {
   const port = Number(process.env.PORT ?? 8080);
   const { url } = await serve({ port });
-  console.log(`Serving www/ at ${url}  (Ctrl-C to stop)`);
+  console.log(`Serving www/ (and pretrained/) at ${url}  (Ctrl-C to stop)`);
 }

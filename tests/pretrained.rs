@@ -53,3 +53,36 @@ fn every_pretrained_module_replays_to_its_recorded_fitness() {
         );
     }
 }
+
+#[test]
+fn replay_is_the_episode_vsr_evaluate_runs_and_refuses_another_shape() {
+    use vsr::experiment::evaluate::{evaluate, replay};
+    use vsr::simulation::{Shape, Terrain};
+    let run = RunFile::from_json(&pretrained("biped-4x3-attention-seed1.json")).expect("valid");
+    let terrain = || Terrain::parse("hilly-1-10-0").expect("terrain");
+    let best = &run.best;
+    let mut episode = replay(best, None, terrain(), Some(0)).expect("its own shape");
+    let replayed = episode.run(5.0).expect("stable");
+    let evaluated = evaluate(
+        &best.shape,
+        terrain(),
+        best.controller,
+        &best.genome,
+        Some(0),
+        5.0,
+    );
+    assert_eq!(
+        replayed,
+        evaluated.expect("stable"),
+        "the page replays what the CLI evaluates"
+    );
+    assert_eq!(episode.attention().map(<[f32]>::len), Some(16 * 10));
+    let comb = Shape::parse("comb-7x2").expect("preset");
+    let error = replay(best, Some(&comb), terrain(), Some(0)).expect_err("another shape");
+    assert!(
+        error
+            .to_string()
+            .contains("needs shape 1111-1111-1001 (10 voxels), not 1111111-1010101"),
+        "{error}"
+    );
+}

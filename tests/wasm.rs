@@ -1,6 +1,7 @@
 //! The wasm boundary, run under Node by `wasm-pack test --node`: an `Episode` builds
 //! from a shape string, steps, fills frame buffers of the documented lengths with
-//! finite numbers, and reports bad input as a JS `Error` instead of trapping.
+//! finite numbers, and reports bad input as a JS `Error` instead of trapping. The same
+//! handle built from a pretrained run file walks and exposes its attention matrices.
 #![cfg(target_arch = "wasm32")]
 
 use vsr::wasm::{bench_episode, Episode};
@@ -101,4 +102,73 @@ fn bench_episode_runs_and_reports_a_finite_displacement() {
     let dx = bench_episode("biped-4x3", "hilly-1-10-0", 1.0, 1.5, 60).expect("valid");
     assert!(dx.is_finite());
     assert!(bench_episode("", "flat", 1.0, 1.5, 60).is_err());
+}
+
+const ATTENTION_RUN: &str = include_str!("../pretrained/biped-4x3-attention-seed1.json");
+const MLP_RUN: &str = include_str!("../pretrained/biped-4x3-mlp-seed1.json");
+
+#[wasm_bindgen_test]
+fn pretrained_attention_biped_walks_and_has_16_attention_floats_per_voxel() {
+    let mut episode = Episode::from_run_file(ATTENTION_RUN, "hilly-1-10-0", "").expect("valid");
+    assert_eq!(episode.controller(), "attention");
+    assert_eq!(episode.shape(), "1111-1111-1001");
+    assert_eq!(episode.voxel_count(), 10);
+    assert_eq!(episode.voxel_cells().len(), 20);
+    let x0 = episode.centre_x();
+    episode.step(300).expect("stable");
+    // Validation on hilly-1-10-0 gives 5.4 m/s over 30 s: 5 s must cover well over 2 m.
+    assert!(
+        episode.centre_x() - x0 > 2.0,
+        "moved {}",
+        episode.centre_x() - x0
+    );
+    let attention = episode.attention();
+    assert_eq!(attention.len(), 16 * 10);
+    assert!(
+        attention.iter().all(|a| (-1.0..=1.0).contains(a)),
+        "{attention:?}"
+    );
+    assert!(
+        attention.iter().any(|&a| a != 0.0),
+        "the matrices were computed"
+    );
+}
+
+#[wasm_bindgen_test]
+fn the_same_shape_by_preset_is_accepted_and_another_shape_is_a_js_error() {
+    let preset = Episode::from_run_file(ATTENTION_RUN, "flat", "biped-4x3").expect("same shape");
+    assert_eq!(preset.shape(), "1111-1111-1001");
+    let error = Episode::from_run_file(ATTENTION_RUN, "flat", "comb-7x2").err();
+    let message = error_message(error.expect("another shape is refused"));
+    assert!(message.contains("needs shape 1111-1111-1001"), "{message}");
+}
+
+#[wasm_bindgen_test]
+fn controllers_without_attention_and_the_gait_give_an_empty_attention() {
+    let mlp = Episode::from_run_file(MLP_RUN, "flat", "").expect("valid");
+    assert_eq!(mlp.controller(), "mlp");
+    assert!(mlp.attention().is_empty());
+    let gait = Episode::new("biped-4x3", "flat", 1.0, 1.5).expect("valid");
+    assert_eq!(gait.controller(), "phase gait");
+    assert!(gait.attention().is_empty());
+}
+
+#[wasm_bindgen_test]
+fn malformed_and_wrong_version_run_files_are_js_errors() {
+    let cut = &ATTENTION_RUN[..ATTENTION_RUN.len() / 2];
+    let message = error_message(
+        Episode::from_run_file(cut, "flat", "")
+            .err()
+            .expect("refused"),
+    );
+    assert!(message.contains("not valid JSON"), "{message}");
+    let v2 = ATTENTION_RUN.replacen("\"version\": 1", "\"version\": 2", 1);
+    let message = error_message(
+        Episode::from_run_file(&v2, "flat", "")
+            .err()
+            .expect("refused"),
+    );
+    assert!(message.contains("version 2 is not supported"), "{message}");
+    let terrain = Episode::from_run_file(ATTENTION_RUN, "hilly-one", "").err();
+    assert!(error_message(terrain.expect("refused")).contains("terrain"));
 }

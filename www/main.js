@@ -1,12 +1,14 @@
 // @ts-check
 /**
- * Page wiring: the controls, the simulation worker and the animation loop. The
- * worker owns the simulation; this thread only sends commands and draws the latest
- * frame it received (see protocol.js for the messages).
+ * Page wiring: the controls, the controller source, the simulation worker and the
+ * animation loop. The worker owns the simulation; this thread only sends commands and
+ * draws the latest frame it received (see protocol.js for the messages).
  */
+import { AttentionPanel } from './attention.js';
 import { DEFAULT_PARAMS, FromWorker, SHAPE_PRESETS, ToWorker, frameIsConsistent } from './protocol.js';
 import { Readout } from './readout.js';
 import { Renderer } from './renderer.js';
+import { SourcePicker } from './sources.js';
 
 /** Workers restarted after a crash before the page gives up. */
 const MAX_RESTARTS = 3;
@@ -24,8 +26,12 @@ const message = byId('message');
 const status = byId('status');
 const renderer = new Renderer(/** @type {HTMLCanvasElement} */ (byId('scene')));
 const readout = new Readout(document);
+const attention = new AttentionPanel(byId('attention-panel'), /** @type {HTMLCanvasElement} */ (byId('attention')));
+const picker = new SourcePicker(/** @type {HTMLSelectElement} */ (byId('source')),
+  /** @type {HTMLInputElement} */ (byId('run-file')), pickSource, showMessage);
 
 /** Parameters of the episode the worker runs now (the last one that loaded). */
+/** @type {import('./protocol.js').EpisodeParams} */
 let current = { ...DEFAULT_PARAMS };
 let running = true;
 let restarts = 0;
@@ -49,11 +55,13 @@ function onWorkerMessage(msg) {
     case FromWorker.LOADED:
       current = msg.params;
       renderer.setTerrain(msg.terrainXs, msg.terrainYs);
+      attention.setLayout(msg.cells);
       readout.reset();
-      setStatus(`${msg.voxels} voxels`);
+      showSource();
+      setStatus(`${msg.voxels} voxels, ${msg.controller}`);
       break;
     case FromWorker.FRAME:
-      if (frameIsConsistent(msg)) { renderer.setFrame(msg); readout.update(msg); }
+      if (frameIsConsistent(msg)) { renderer.setFrame(msg); readout.update(msg); attention.setFrame(msg); }
       break;
     case FromWorker.STATE: running = msg.running; updateButtons(); break;
     case FromWorker.ERROR: onWorkerError(msg.message, msg.fatal); break;
@@ -64,6 +72,7 @@ function onWorkerMessage(msg) {
 /** @param {string} text @param {boolean} fatal */
 function onWorkerError(text, fatal) {
   showMessage(text);
+  picker.show(current.runFile); // a refused source must not look chosen
   if (!fatal) return;
   worker.terminate();
   if (restarts++ < MAX_RESTARTS) worker = startWorker();
@@ -76,6 +85,7 @@ function formParams() {
     terrain: inputs.terrain.value.trim(),
     frequency: inputs.frequency.valueAsNumber,
     phase: inputs.phase.valueAsNumber,
+    runFile: current.runFile,
   };
 }
 
@@ -83,6 +93,24 @@ function formParams() {
 function applyForm() {
   showMessage('');
   worker.postMessage({ type: ToWorker.LOAD, params: formParams() });
+}
+
+/**
+ * Drives the robot with a new source: a run file on its own shape, or the phase gait
+ * on the shape in the form.
+ * @param {import('./protocol.js').RunFileSource | null} runFile
+ */
+function pickSource(runFile) {
+  showMessage('');
+  const params = { ...formParams(), runFile, shape: runFile ? '' : inputs.shape.value.trim() };
+  worker.postMessage({ type: ToWorker.LOAD, params });
+}
+
+/** Shows the source of the running episode: the picker, its shape, and the gait fields' use. */
+function showSource() {
+  picker.show(current.runFile);
+  inputs.shape.value = current.shape;
+  for (const input of [inputs.frequency, inputs.phase]) input.disabled = current.runFile !== null;
 }
 
 /** @param {string} text an error for the person, or '' to clear it */
@@ -132,5 +160,7 @@ buttons.pause.addEventListener('click', () => worker.postMessage({ type: ToWorke
 buttons.reset.addEventListener('click', () => { showMessage(''); worker.postMessage({ type: ToWorker.RESET }); });
 requestAnimationFrame(function loop(now) {
   renderer.draw(now);
+  attention.draw();
   requestAnimationFrame(loop);
 });
+picker.listPretrained();

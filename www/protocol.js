@@ -5,8 +5,11 @@
  * import these names instead of spelling strings.
  *
  * Page -> worker
- *   {type: 'load', params}   build a new episode from {@link EpisodeParams}; on failure
- *                            the worker answers 'error' and keeps its previous episode
+ *   {type: 'load', params}   build a new episode from {@link EpisodeParams}: the phase gait,
+ *                            or the run file `params.runFile` (its best individual on its
+ *                            own shape, sensor noise seed 0); on failure (bad input, a
+ *                            malformed file, another shape) the worker answers 'error' and
+ *                            keeps its previous episode
  *   {type: 'start'}          run (paced by `speed`)
  *   {type: 'pause'}          stop stepping; the last frame stays on screen
  *   {type: 'reset'}          rebuild the current episode from its parameters (t = 0)
@@ -14,8 +17,12 @@
  *
  * Worker -> page
  *   {type: 'ready'}                      the wasm module is instantiated
- *   {type: 'loaded', params, voxels, terrainXs, terrainYs}
- *                                        a new episode replaced the previous one
+ *   {type: 'loaded', params, voxels, controller, cells, terrainXs, terrainYs}
+ *                                        a new episode replaced the previous one; params.shape
+ *                                        is the run file's rows when a run file drives it;
+ *                                        controller: 'phase gait', 'attention', 'mlp', ...;
+ *                                        cells (Uint32Array, 2n): voxel i's grid column at 2i
+ *                                        (from the left) and row at 2i + 1 (from the bottom)
  *   {type: 'frame', ...Frame}            the latest state, buffers transferred
  *   {type: 'state', running}             the run/pause state changed
  *   {type: 'error', message, fatal}      bad input (fatal = false: nothing changed) or a
@@ -28,6 +35,9 @@
  *   areas     n   voxel i at i: area / rest area, 0.775 contracted .. 1.225 expanded
  *   bodies  12n   voxel i at 12i: four rigid corner squares (1.2 m wide) as centre x,
  *                 centre y, angle (rad), in order SW, SE, NE, NW
+ *   attention 16n or 0   voxel i at 16i: its attention matrix, 4 rows of 4 (row-major),
+ *                 rows (queries) and columns (keys) in SENSOR_NAMES order, values -1 .. 1;
+ *                 empty when the controller has no attention (phase gait, MLP, MLP-Comm)
  * Terrain (sent once per episode, Float64Array): polyline xs, ys in m, y up, walls included.
  */
 
@@ -61,6 +71,10 @@ export const CORNER_BODY_SIDE = 1.2;
 export const AREA_CONTRACTED = 0.775;
 /** Area ratio of a fully expanded voxel (u = -1). */
 export const AREA_EXPANDED = 1.225;
+/** Floats per voxel in `attention`: a 4 x 4 matrix. */
+export const ATTENTION_FLOATS = 16;
+/** A voxel's sensors, in the order of its readings and of its attention rows and columns. */
+export const SENSOR_NAMES = Object.freeze(['area', 'vx', 'vy', 'touch']);
 /** Simulation time step (s). */
 export const DT = 1 / 60;
 
@@ -70,6 +84,16 @@ export const DT = 1 / 60;
  * @property {string} terrain    terrain name (`hilly-1-10-0`)
  * @property {number} frequency  gait frequency f (Hz)
  * @property {number} phase      gait phase phi (rad per column)
+ * @property {RunFileSource | null} runFile  the run file whose controller drives the robot
+ *                               (then shape '' means the file's own shape, and f, phi are
+ *                               unused), or null for the phase gait
+ */
+
+/**
+ * @typedef {object} RunFileSource
+ * @property {string} key    identifies the source in the page's picker
+ * @property {string} label  what the picker shows
+ * @property {string} text   the run file's JSON (validated by the worker)
  */
 
 /**
@@ -83,6 +107,7 @@ export const DT = 1 / 60;
  * @property {Float32Array} corners 8n floats, see the layout above
  * @property {Float32Array} areas   n floats
  * @property {Float32Array} bodies  12n floats
+ * @property {Float32Array} attention 16n floats, or none
  */
 
 /**
@@ -95,6 +120,7 @@ export const DEFAULT_PARAMS = Object.freeze({
   terrain: 'hilly-1-10-0',
   frequency: 0.5,
   phase: 1.5,
+  runFile: null,
 });
 
 /** Shape presets offered in the shape field. */
@@ -109,5 +135,6 @@ export function frameIsConsistent(frame) {
   const n = frame.voxels;
   return frame.corners.length === CORNER_FLOATS * n
     && frame.areas.length === AREA_FLOATS * n
-    && frame.bodies.length === BODY_FLOATS * n;
+    && frame.bodies.length === BODY_FLOATS * n
+    && (frame.attention.length === 0 || frame.attention.length === ATTENTION_FLOATS * n);
 }

@@ -1,6 +1,7 @@
 // @ts-check
 /**
- * The simulation worker (a module worker). It owns the wasm `Episode`, steps it in
+ * The simulation worker (a module worker). It owns the wasm `Episode` (driven by the
+ * phase gait or by a run file's controller: the same handle either way), steps it in
  * short slices so that control messages are handled promptly, and posts frames whose
  * buffers are transferred, not copied. Message types and buffer layouts: protocol.js.
  */
@@ -64,19 +65,25 @@ function handle(msg) {
 }
 
 /**
- * Replaces the episode. Bad parameters throw before anything is replaced, so the
- * previous robot keeps running and the error goes back to the page.
+ * Replaces the episode. Bad parameters or a bad run file throw before anything is
+ * replaced, so the previous robot keeps running and the error goes back to the page.
  * @param {import('./protocol.js').EpisodeParams} next
  */
 function load(next) {
-  const fresh = new Episode(next.shape, next.terrain, next.frequency, next.phase);
+  const fresh = next.runFile
+    ? Episode.fromRunFile(next.runFile.text, next.terrain, next.shape)
+    : new Episode(next.shape, next.terrain, next.frequency, next.phase);
   episode?.free();
   episode = fresh;
-  params = { ...next };
+  // A run file's episode keeps its rows, so that a reset or another terrain reuses them.
+  params = { ...next, shape: next.runFile ? fresh.shape : next.shape };
   const terrainXs = fresh.terrainXs();
   const terrainYs = fresh.terrainYs();
-  self.postMessage({ type: FromWorker.LOADED, params, voxels: fresh.voxelCount, terrainXs, terrainYs },
-    [terrainXs.buffer, terrainYs.buffer]);
+  const cells = fresh.voxelCells();
+  self.postMessage({
+    type: FromWorker.LOADED, params, voxels: fresh.voxelCount, controller: fresh.controller,
+    cells, terrainXs, terrainYs,
+  }, [cells.buffer, terrainXs.buffer, terrainYs.buffer]);
   restartClocks();
   postFrame();
   schedule();
@@ -156,12 +163,13 @@ function postFrame() {
   const corners = episode.corners();
   const areas = episode.areaRatios();
   const bodies = episode.cornerBodies();
+  const attention = episode.attention();
   self.postMessage({
     type: FromWorker.FRAME, time: episode.time, voxels: episode.voxelCount,
     centreX: episode.centreX, centreY: episode.centreY,
     simPerWall: running ? rate.simPerWall : NaN, simPerCompute: rate.simPerCompute,
-    corners, areas, bodies,
-  }, [corners.buffer, areas.buffer, bodies.buffer]);
+    corners, areas, bodies, attention,
+  }, [corners.buffer, areas.buffer, bodies.buffer, attention.buffer]);
 }
 
 /** @param {Episode} ep @param {number} now */

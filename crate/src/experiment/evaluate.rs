@@ -2,6 +2,7 @@
 //! evolution, validation, the CLI and the page.
 
 use super::episode::{topology, Episode, Outcome, Policy};
+use super::run::Best;
 use crate::controllers::{build, Controller, ControllerKind};
 use crate::error::{Error, Result};
 use crate::simulation::{Shape, Terrain};
@@ -52,4 +53,34 @@ pub fn fitness(
     seconds: f64,
 ) -> f64 {
     evaluate(shape, terrain, kind, genome, noise_seed, seconds).map_or(f64::NAN, |o| o.velocity)
+}
+
+/// An episode in which a run file's best individual drives its own shape on `terrain`.
+/// `shape`, when given, must be that very shape (a preset or its rows): a genome fits
+/// the voxel count and neighbourhoods it was evolved on, so another shape is refused
+/// with a message naming the one it needs.
+pub fn replay(
+    best: &Best,
+    shape: Option<&Shape>,
+    terrain: Terrain,
+    noise_seed: Option<u64>,
+) -> Result<Episode> {
+    if let Some(other) = shape.filter(|s| **s != best.shape) {
+        return Err(Error::Input(format!(
+            "this {} controller needs shape {} ({} voxels), not {} ({} voxels); \
+             clear the shape field to use its own shape",
+            best.controller,
+            best.shape.to_rows(),
+            best.shape.voxel_count(),
+            other.to_rows(),
+            other.voxel_count()
+        )));
+    }
+    let controller = controller_for(best.controller, &best.shape, &best.genome)?;
+    Ok(Episode::with_policy(
+        &best.shape,
+        terrain,
+        Policy::Brain(controller),
+        noise_seed,
+    ))
 }

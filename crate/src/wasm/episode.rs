@@ -1,14 +1,23 @@
-//! [`Episode`]: a JS handle on one open-loop phase-gait episode
-//! (`experiment::GaitEpisode`), stepped by the page's worker in slices.
+//! [`Episode`]: a JS handle on one `experiment::Episode`, stepped by the page's worker in
+//! slices: its phase-gait constructor, the step and the frame getters. The run-file
+//! constructor and the attention getter are in `controlled.rs`; both kinds of episode
+//! are this one handle, so the worker steps and draws them with the same code.
 
 use wasm_bindgen::prelude::{wasm_bindgen, JsError};
 
-use crate::experiment::GaitEpisode;
+use crate::experiment::{Episode as CoreEpisode, PhaseGait};
+use crate::simulation::{Shape, Terrain};
 
-/// One robot on one terrain, driven by the phase gait u(t) = sin(2 pi f t + phi x).
+/// Name reported by [`Episode::controller`] for the phase gait.
+const GAIT_NAME: &str = "phase gait";
+
+/// One robot on one terrain, driven by the phase gait u(t) = sin(2 pi f t + phi x) or by a
+/// run file's controller.
 #[wasm_bindgen]
 pub struct Episode {
-    inner: GaitEpisode,
+    pub(super) inner: CoreEpisode,
+    pub(super) shape: Shape,
+    pub(super) controller: String,
 }
 
 #[wasm_bindgen]
@@ -19,8 +28,37 @@ impl Episode {
     /// whose message says what is wrong.
     #[wasm_bindgen(constructor)]
     pub fn new(shape: &str, terrain: &str, frequency: f64, phase: f64) -> Result<Episode, JsError> {
-        let inner = GaitEpisode::new(shape, terrain, frequency, phase)?;
-        Ok(Episode { inner })
+        let shape = Shape::parse(shape)?;
+        let gait = PhaseGait::new(frequency, phase)?;
+        let inner = CoreEpisode::from_parts(&shape, Terrain::parse(terrain)?, gait);
+        let controller = GAIT_NAME.to_string();
+        Ok(Episode {
+            inner,
+            shape,
+            controller,
+        })
+    }
+
+    /// What drives the voxels: `phase gait` or a controller family (`attention`, `mlp`, ...).
+    #[wasm_bindgen(getter)]
+    pub fn controller(&self) -> String {
+        self.controller.clone()
+    }
+
+    /// The robot's shape as rows of `0`/`1`, top row first (`1111-1111-1001`).
+    #[wasm_bindgen(getter)]
+    pub fn shape(&self) -> String {
+        self.shape.to_rows()
+    }
+
+    /// Grid cells, length 2n: for voxel i at `2i`, its column (from the left) and row (from
+    /// the bottom), so a drawing can lay per-voxel data out like the robot.
+    #[wasm_bindgen(js_name = voxelCells)]
+    pub fn voxel_cells(&self) -> Vec<u32> {
+        let cells = self.shape.voxels().iter();
+        cells
+            .flat_map(|&(x, y)| [x, y].map(|v| u32::try_from(v).unwrap_or(u32::MAX)))
+            .collect()
     }
 
     /// Advances the simulation by `steps` steps of 1/60 s. Throws if it became unstable.
@@ -34,7 +72,7 @@ impl Episode {
         self.inner.time()
     }
 
-    /// Number of voxels n; frame buffers have lengths 8n, n and 12n.
+    /// Number of voxels n; frame buffers have lengths 8n, n and 12n (attention: 16n or 0).
     #[wasm_bindgen(getter, js_name = voxelCount)]
     pub fn voxel_count(&self) -> usize {
         self.inner.voxel_count()

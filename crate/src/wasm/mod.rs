@@ -1,13 +1,15 @@
 //! The WebAssembly boundary: the only module that uses `wasm_bindgen`.
 //!
 //! Thin handles over core types, one file per wrapped type, mirroring the core's tree:
-//! [`Episode`] wraps `experiment::GaitEpisode`. Bulk per-frame data leaves linear memory
+//! [`Episode`] wraps `experiment::Episode` (built from a phase gait in `episode.rs`, from
+//! a run file in `controlled.rs`). Bulk per-frame data leaves linear memory
 //! as flat `Float32Array`s whose layouts are documented on the getters that fill them
 //! and, for the page, once in `www/protocol.js`. Core errors become JS `Error`s (never
 //! traps) so a worker can report bad input and keep its previous state.
 #![deny(clippy::unwrap_used)]
 
 mod bench;
+mod controlled;
 mod episode;
 
 pub use bench::bench_episode;
