@@ -2,9 +2,12 @@
 //! from a shape string, steps, fills frame buffers of the documented lengths with
 //! finite numbers, and reports bad input as a JS `Error` instead of trapping. The same
 //! handle built from a pretrained run file walks and exposes its attention matrices.
+//! The `Evolution` handle asks whole generations, refuses a wrong `tell`, and a tiny run's
+//! run file reads back through `RunFile::from_json`; `evaluateJob` refuses bad jobs.
 #![cfg(target_arch = "wasm32")]
 
-use vsr::wasm::{bench_episode, Episode};
+use vsr::experiment::RunFile;
+use vsr::wasm::{bench_episode, evaluate_job, Episode, Evolution};
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::wasm_bindgen_test;
 
@@ -171,4 +174,112 @@ fn malformed_and_wrong_version_run_files_are_js_errors() {
     assert!(message.contains("version 2 is not supported"), "{message}");
     let terrain = Episode::from_run_file(ATTENTION_RUN, "hilly-one", "").err();
     assert!(error_message(terrain.expect("refused")).contains("terrain"));
+}
+
+/// A tiny run: `population` per generation, 2-s episodes on flat, `budget` evaluations.
+fn tiny_config(population: usize, budget: u64) -> String {
+    format!(
+        r#"{{"shape": "biped-4x3", "controller": "attention", "seed": 7, "seconds": 2.0,
+            "terrain": "flat", "ga": {{"population": {population}, "budget_evals": {budget}}}}}"#
+    )
+}
+
+/// Evaluates every pending job of `evolution` in order, as an evaluation worker would.
+fn evaluate_pending(evolution: &mut Evolution) -> Vec<f64> {
+    let jobs: serde_json::Value =
+        serde_json::from_str(&evolution.ask().expect("ask")).expect("jobs JSON");
+    let jobs = jobs.as_array().expect("an array").clone();
+    let genomes = evolution.genomes();
+    let len = evolution.genome_length();
+    let text = |job: &serde_json::Value, key: &str| job[key].as_str().expect(key).to_string();
+    jobs.iter()
+        .enumerate()
+        .map(|(i, job)| {
+            let seconds = job["seconds"].as_f64().expect("seconds");
+            let genome = &genomes[i * len..(i + 1) * len];
+            let (shape, kind) = (text(job, "shape"), text(job, "controller"));
+            let (terrain, seed) = (text(job, "terrain"), text(job, "noiseSeed"));
+            evaluate_job(genome, &shape, &kind, &terrain, &seed, seconds).expect("valid job")
+        })
+        .collect()
+}
+
+#[wasm_bindgen_test]
+fn ask_gives_a_population_first_then_two_populations_per_generation() {
+    let mut evolution = Evolution::new(&tiny_config(6, 18)).expect("valid settings");
+    assert_eq!(evolution.genome_length(), 73);
+    assert_eq!(evolution.planned_evaluations(), 18.0);
+    let jobs: serde_json::Value = serde_json::from_str(&evolution.ask().expect("ask")).unwrap();
+    assert_eq!(jobs.as_array().map(Vec::len), Some(6));
+    assert_eq!(evolution.genomes().len(), 6 * 73);
+    assert_eq!(jobs[0]["terrain"], "flat");
+    assert!(jobs[0]["noiseSeed"]
+        .as_str()
+        .unwrap()
+        .parse::<u64>()
+        .is_ok());
+    evolution.tell(&[0.0; 6], 0.0).expect("six values");
+    let second: serde_json::Value = serde_json::from_str(&evolution.ask().unwrap()).unwrap();
+    assert_eq!(second.as_array().map(Vec::len), Some(12));
+    assert_eq!(second[0]["generation"], 1);
+}
+
+#[wasm_bindgen_test]
+fn tell_refuses_a_wrong_count_and_a_tell_without_ask() {
+    let mut evolution = Evolution::new(&tiny_config(6, 18)).expect("valid settings");
+    let early = error_message(evolution.tell(&[0.0; 6], 0.0).err().expect("refused"));
+    assert!(early.contains("call ask first"), "{early}");
+    evolution.ask().expect("ask");
+    let wrong = error_message(evolution.tell(&[0.0; 5], 0.0).err().expect("refused"));
+    assert!(wrong.contains("expected 6 fitness values"), "{wrong}");
+    // Nothing changed: the right count is still accepted, NaN (an explosion) included.
+    let record = evolution.tell(&[f64::NAN, 1.0, 0.5, 0.0, -1.0, 2.0], 0.0);
+    let record: serde_json::Value = serde_json::from_str(&record.expect("accepted")).unwrap();
+    assert_eq!(record["best"], 2.0);
+    assert_eq!(evolution.best_fitness(), 2.0);
+}
+
+#[wasm_bindgen_test]
+fn bad_settings_and_bad_jobs_are_js_errors() {
+    let zero = error_message(Evolution::new(&tiny_config(6, 0)).err().expect("refused"));
+    assert!(zero.contains("budget of 0"), "{zero}");
+    let bad_shape = tiny_config(6, 18).replace("biped-4x3", "101");
+    let message = error_message(Evolution::new(&bad_shape).err().expect("refused"));
+    assert!(message.contains("shape"), "{message}");
+    assert!(Evolution::new("{").is_err());
+    let genome = vec![0.0; 73];
+    assert!(evaluate_job(&genome[..72], "biped-4x3", "attention", "flat", "1", 2.0).is_err());
+    assert!(evaluate_job(&genome, "biped-4x3", "attention", "flat", "-1", 2.0).is_err());
+    assert!(evaluate_job(&genome, "biped-4x3", "attention", "hilly-one", "1", 2.0).is_err());
+    assert!(evaluate_job(&genome, "biped-4x3", "attention", "flat", "1", f64::NAN).is_err());
+    let f = evaluate_job(&genome, "biped-4x3", "attention", "flat", "1", 2.0).expect("valid");
+    assert!(f.is_finite());
+}
+
+#[wasm_bindgen_test]
+fn a_tiny_evolution_writes_a_run_file_that_reads_back() {
+    let mut evolution = Evolution::new(&tiny_config(6, 18)).expect("valid settings");
+    assert!(
+        evolution.run_file(1, 0.0).is_err(),
+        "no run file before generation 0"
+    );
+    while !evolution.is_done() {
+        let fitness = evaluate_pending(&mut evolution);
+        if fitness.is_empty() {
+            break;
+        }
+        evolution.tell(&fitness, 1.0).expect("told");
+    }
+    assert_eq!(evolution.evaluations(), 18.0);
+    let text = evolution.run_file(2, 3.5).expect("a run file");
+    let run = RunFile::from_json(&text).expect("reads back");
+    assert_eq!(run.format, "vsr-run");
+    assert_eq!(run.generations.len(), 2);
+    assert_eq!(run.best.genome.len(), 73);
+    assert_eq!(run.best.fitness, evolution.best_fitness());
+    assert_eq!(run.timing.map(|t| t.threads), Some(2));
+    assert_eq!(
+        run.config.terrain,
+        vsr::experiment::TrainingTerrain::parse("flat").unwrap()
+    );
 }

@@ -1,10 +1,12 @@
 // @ts-check
 /**
- * Page wiring: the controls, the controller source, the simulation worker and the
+ * Page wiring: the controls, the controller source, the Evolve panel (evolve.js, whose
+ * best individual drives the robot like any run file), the simulation worker and the
  * animation loop. The worker owns the simulation; this thread only sends commands and
  * draws the latest frame it received (see protocol.js for the messages).
  */
 import { AttentionPanel } from './attention.js';
+import { EvolvePanel } from './evolve.js';
 import { DEFAULT_PARAMS, FromWorker, SHAPE_PRESETS, ToWorker, frameIsConsistent } from './protocol.js';
 import { Readout } from './readout.js';
 import { Renderer } from './renderer.js';
@@ -29,6 +31,13 @@ const readout = new Readout(document);
 const attention = new AttentionPanel(byId('attention-panel'), /** @type {HTMLCanvasElement} */ (byId('attention')));
 const picker = new SourcePicker(/** @type {HTMLSelectElement} */ (byId('source')),
   /** @type {HTMLInputElement} */ (byId('run-file')), pickSource, showMessage);
+/** Picker key of the evolved best (one option, relabelled at each switch). */
+const EVOLVED_KEY = 'evolved';
+new EvolvePanel(document, {
+  shape: () => inputs.shape.value.trim(),
+  watch: (text, label) => pickSource({ key: EVOLVED_KEY, label, text }),
+  message: showMessage,
+});
 
 /** Parameters of the episode the worker runs now (the last one that loaded). */
 /** @type {import('./protocol.js').EpisodeParams} */

@@ -138,3 +138,90 @@ export function frameIsConsistent(frame) {
     && frame.bodies.length === BODY_FLOATS * n
     && (frame.attention.length === 0 || frame.attention.length === ATTENTION_FLOATS * n);
 }
+
+/*
+ * Evolution in the page: the page (evolve.js) drives a GA coordinator worker
+ * (coordinator.js), which owns the wasm `Evolution` and a pool of evaluation workers
+ * (evaluator.js), each owning its own wasm module.
+ *
+ * Page -> coordinator
+ *   {type: 'start', settings, workers}  begin a run of {@link EvolveSettings} with `workers`
+ *                                       evaluation workers; bad settings answer 'error'
+ *   {type: 'pause'} / {type: 'resume'}  stop / go on handing out jobs (jobs under way finish)
+ *   {type: 'stop'}                      end the run now; the unfinished generation is dropped
+ *
+ * Coordinator -> page
+ *   {type: 'started', planned, workers}  the run began; planned = evaluations it will take
+ *   {type: 'generation', record, evaluations, planned, evalsPerSecond, improved, runFile}
+ *                                        a generation was told: record is the run file's
+ *                                        generation record (null for non-finite values),
+ *                                        improved = its best beat every earlier generation's,
+ *                                        runFile = the run so far (JSON text, format 'vsr-run')
+ *   {type: 'state', paused}              pause state changed
+ *   {type: 'done', stopped, runFile}     the run ended (budget spent, or stopped); runFile is
+ *                                        null when not even generation 0 was told
+ *   {type: 'error', message}             bad settings or a failed evaluation; the run ended
+ *
+ * Coordinator -> evaluator
+ *   {type: 'job', slot, job, genome}     evaluate {@link EvolveJob} `job` with `genome`
+ *                                        (Float32Array, transferred); slot = its job index
+ * Evaluator -> coordinator
+ *   {type: 'ready'}                      the wasm module is instantiated
+ *   {type: 'result', slot, fitness}      fitness in m/s, NaN for an exploded episode
+ *   {type: 'error', message}             the job was malformed, or wasm failed to load
+ */
+
+/** Message types sent by the page to the GA coordinator. */
+export const ToCoordinator = Object.freeze({
+  START: 'start',
+  PAUSE: 'pause',
+  RESUME: 'resume',
+  STOP: 'stop',
+});
+
+/** Message types sent by the GA coordinator to the page. */
+export const FromCoordinator = Object.freeze({
+  STARTED: 'started',
+  GENERATION: 'generation',
+  STATE: 'state',
+  DONE: 'done',
+  ERROR: 'error',
+});
+
+/** Message types between the coordinator and its evaluation workers. */
+export const EvaluatorMessage = Object.freeze({
+  JOB: 'job',
+  READY: 'ready',
+  RESULT: 'result',
+  ERROR: 'error',
+});
+
+/**
+ * @typedef {object} EvolveSettings  a run's configuration, the run file's `config` layout
+ * @property {string} shape       rows or preset
+ * @property {string} controller  'attention' | 'mlp' | 'mlp-comm'
+ * @property {number} seed        run seed, integer 0 .. 2^53 - 1
+ * @property {number} seconds     simulated seconds per evaluation
+ * @property {string} terrain     training terrain family (`hilly-1-10`) or name (`flat`)
+ * @property {{population: number, budget_evals: number}} ga  other GA settings: the paper's
+ */
+
+/**
+ * @typedef {object} EvolveJob  one evaluation, as `Evolution.ask()` describes it
+ * @property {number} generation
+ * @property {number} index       position in the generation (fitness goes back there)
+ * @property {string} shape       rows
+ * @property {string} controller
+ * @property {string} terrain     full terrain name (`hilly-1-10-4821`)
+ * @property {string} noiseSeed   sensor-noise seed, a decimal string (64 bits)
+ * @property {number} seconds
+ */
+
+/** The page's quick settings: a run that shows progress within a minute or two. */
+export const QUICK_EVOLVE = Object.freeze({ population: 20, seconds: 10, budget: 2000 });
+/** The paper's settings (SPEC 9): 100 per generation, 30-s episodes, 30000 evaluations. */
+export const PAPER_EVOLVE = Object.freeze({ population: 100, seconds: 30, budget: 30000 });
+/** Controllers the page evolves. */
+export const EVOLVE_CONTROLLERS = Object.freeze(['attention', 'mlp', 'mlp-comm']);
+/** Largest number of evaluation workers the page starts. */
+export const MAX_EVALUATORS = 8;

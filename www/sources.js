@@ -1,7 +1,8 @@
 // @ts-check
 /**
  * The controller source picker: "Phase gait", a pretrained run file listed in
- * pretrained/manifest.json (fetched over http), or a run file loaded from disk. It only
+ * pretrained/manifest.json (fetched over http), a run file loaded from disk, or the best
+ * individual evolved in the page (evolve.js). It only
  * reads files into {@link RunFileSource}s; the worker validates them, so a malformed file
  * is reported by the worker and the robot that runs keeps running.
  */
@@ -30,8 +31,12 @@ export class SourcePicker {
     this.onError = onError;
     /** The key of the source that drives the robot now (shown when a pick fails). */
     this.shown = GAIT_KEY;
-    /** @type {RunFileSource | null} the file from disk that has an option (it loaded once) */
-    this.disk = null;
+    /**
+     * Sources with an option that cannot be fetched again: the file from disk (one at a
+     * time) and the page's evolved best, by key.
+     * @type {Map<string, RunFileSource>}
+     */
+    this.held = new Map();
     select.append(new Option('Phase gait', GAIT_KEY));
     select.addEventListener('change', () => { this.pickSelected(); });
     fileInput.addEventListener('change', () => { this.pickFile(); });
@@ -61,11 +66,15 @@ export class SourcePicker {
    */
   show(source) {
     const key = source?.key ?? GAIT_KEY;
-    if (source && ![...this.select.options].some((o) => o.value === key)) {
-      for (const o of [...this.select.options]) if (o.value.startsWith(DISK_PREFIX)) o.remove();
+    const existing = [...this.select.options].find((o) => o.value === key);
+    if (source && existing) existing.text = source.label; // e.g. a newer evolved best
+    if (source && !existing) {
+      for (const o of [...this.select.options]) {
+        if (key.startsWith(DISK_PREFIX) && o.value.startsWith(DISK_PREFIX)) { o.remove(); this.held.delete(o.value); }
+      }
       this.select.append(new Option(source.label, key));
     }
-    if (key.startsWith(DISK_PREFIX)) this.disk = source;
+    if (source && !key.startsWith(PRETRAINED_DIR)) this.held.set(key, source);
     this.select.value = key;
     this.shown = key;
   }
@@ -73,7 +82,8 @@ export class SourcePicker {
   async pickSelected() {
     const key = this.select.value;
     if (key === GAIT_KEY) { this.onPick(null); return; }
-    if (key.startsWith(DISK_PREFIX)) { if (this.disk) this.onPick(this.disk); return; }
+    const held = this.held.get(key);
+    if (held) { this.onPick(held); return; }
     const label = this.select.selectedOptions[0]?.text ?? key;
     try {
       const text = await fetchOk(key).then((r) => r.text());

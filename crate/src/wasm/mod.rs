@@ -2,8 +2,9 @@
 //!
 //! Thin handles over core types, one file per wrapped type, mirroring the core's tree:
 //! [`Episode`] wraps `experiment::Episode` (built from a phase gait in `episode.rs`, from
-//! a run file in `controlled.rs`). Bulk per-frame data leaves linear memory
-//! as flat `Float32Array`s whose layouts are documented on the getters that fill them
+//! a run file in `controlled.rs`); [`Evolution`] wraps `experiment::Evolution` for the page's
+//! GA coordinator and [`evaluate_job`] is one evaluation of its workers (`evolution.rs`).
+//! Bulk per-frame data leaves linear memory as flat `Float32Array`s whose layouts are documented on the getters that fill them
 //! and, for the page, once in `www/protocol.js`. Core errors become JS `Error`s (never
 //! traps) so a worker can report bad input and keep its previous state.
 #![deny(clippy::unwrap_used)]
@@ -11,9 +12,11 @@
 mod bench;
 mod controlled;
 mod episode;
+mod evolution;
 
 pub use bench::bench_episode;
 pub use episode::Episode;
+pub use evolution::{evaluate_job, Evolution};
 
 use wasm_bindgen::prelude::wasm_bindgen;
 

@@ -1,0 +1,45 @@
+// @ts-check
+/**
+ * An evaluation worker (a module worker started by coordinator.js). It owns its own wasm
+ * module and evaluates one job at a time: the job's genome drives its shape on its terrain
+ * for its seconds, with its own sensor-noise seed, and the fitness goes back with the job's
+ * slot. Jobs carry everything they need, so which worker runs which job never changes a
+ * result. Messages: protocol.js (EvaluatorMessage).
+ */
+import init, { evaluateJob, start as installPanicHook } from './pkg/vsr.js';
+import { EvaluatorMessage } from './protocol.js';
+
+const ready = init().then(() => installPanicHook());
+
+/** @param {MessageEvent<{type: string, slot: number, job: import('./protocol.js').EvolveJob, genome: Float32Array}>} event */
+self.onmessage = async (event) => {
+  try {
+    await ready;
+  } catch (error) {
+    reportError(`could not load the simulator (wasm): ${messageOf(error)}`);
+    return;
+  }
+  const { type, slot, job, genome } = event.data;
+  if (type !== EvaluatorMessage.JOB) {
+    reportError(`unknown message type ${JSON.stringify(type)}`);
+    return;
+  }
+  try {
+    const fitness = evaluateJob(genome, job.shape, job.controller, job.terrain, job.noiseSeed, job.seconds);
+    self.postMessage({ type: EvaluatorMessage.RESULT, slot, fitness });
+  } catch (error) {
+    reportError(`evaluation ${job.index} of generation ${job.generation} failed: ${messageOf(error)}`);
+  }
+};
+
+/** @param {string} message */
+function reportError(message) {
+  self.postMessage({ type: EvaluatorMessage.ERROR, message });
+}
+
+/** @param {unknown} error */
+function messageOf(error) {
+  return error instanceof Error ? error.message : String(error);
+}
+
+ready.then(() => self.postMessage({ type: EvaluatorMessage.READY }), () => {});
