@@ -53,8 +53,8 @@ export class EvolvePanel {
     /** The latest run file (JSON text) and the settings of its run, kept after the run ends. */
     this.runFile = /** @type {string | null} */ (null);
     this.runSettings = /** @type {import('./protocol.js').EvolveSettings | null} */ (null);
-    /** A better individual not yet shown (follow mode), and when the view last switched. */
-    this.pendingBest = /** @type {string | null} */ (null);
+    /** Whether a better individual is not yet shown (follow mode), and when the view last switched. */
+    this.pendingBest = false;
     this.lastSwitch = -Infinity;
     this.followTimer = 0;
     this.planned = 0;
@@ -141,6 +141,8 @@ export class EvolvePanel {
         break;
       case FromCoordinator.DONE:
         if (msg.runFile) this.runFile = msg.runFile;
+        window.clearTimeout(this.followTimer);
+        this.followTimer = 0;
         this.end('', msg.stopped ? 'stopped' : 'finished');
         if (this.follow.checked && msg.runFile) this.watchBest();
         break;
@@ -159,13 +161,13 @@ export class EvolvePanel {
     show(this.out.median, record.median ?? NaN, `${fixed(record.median)} m/s`);
     show(this.out.rate, msg.evalsPerSecond, `${fixed(msg.evalsPerSecond, 1)} evaluations/s`);
     this.chart.add(record.best, record.median);
-    if (msg.improved) this.offerBest(msg.runFile);
+    if (msg.improved) this.offerBest();
     this.update();
   }
 
-  /** A generation improved the best: switch the view to it (follow mode), at most every few s. @param {string} runFile */
-  offerBest(runFile) {
-    this.pendingBest = runFile;
+  /** A generation improved the best: switch the view to it (follow mode), at most every few s. */
+  offerBest() {
+    this.pendingBest = true;
     if (!this.follow.checked || this.followTimer) return;
     const wait = this.lastSwitch + FOLLOW_INTERVAL_MS - performance.now();
     if (wait <= 0) { this.watchBest(); return; }
@@ -175,12 +177,12 @@ export class EvolvePanel {
     }, wait);
   }
 
-  /** Drives the robot with the current best (the latest run file). */
+  /** Drives the robot with the current best (the latest run file's). */
   watchBest() {
-    const text = this.pendingBest ?? this.runFile;
+    const text = this.runFile;
     if (!text) return;
     const best = JSON.parse(text).best;
-    this.pendingBest = null;
+    this.pendingBest = false;
     this.lastSwitch = performance.now();
     this.hooks.watch(text, `evolved best (${best.controller}, ${fixed(best.fitness)} m/s)`);
   }
