@@ -23,6 +23,13 @@ pub fn fitness_key(f: f64) -> f64 {
     }
 }
 
+/// A uniform index in `0..len`, drawn over `u32` so that 64-bit hosts and wasm32 (where
+/// `usize` is 32 bits and rand samples it differently) draw the same index.
+fn index(rng: &mut impl Rng, len: usize) -> usize {
+    let len = u32::try_from(len).unwrap_or(u32::MAX);
+    rng.gen_range(0..len) as usize
+}
+
 /// Tournament selection: draws `size` indices uniformly WITH replacement (at least one) and
 /// returns the one with the highest fitness; ties between distinct individuals are broken
 /// uniformly at random. NaN counts as -inf. `None` only for an empty population.
@@ -33,7 +40,7 @@ pub fn tournament(fitness: &[f64], size: usize, rng: &mut impl Rng) -> Option<us
     let mut best = f64::NEG_INFINITY;
     let mut winners: Vec<usize> = Vec::with_capacity(size.max(1));
     for _ in 0..size.max(1) {
-        let c = rng.gen_range(0..fitness.len());
+        let c = index(rng, fitness.len());
         let f = fitness_key(fitness[c]);
         if f > best || winners.is_empty() {
             best = f;
@@ -44,7 +51,7 @@ pub fn tournament(fitness: &[f64], size: usize, rng: &mut impl Rng) -> Option<us
         }
     }
     let pick = if winners.len() > 1 {
-        rng.gen_range(0..winners.len())
+        index(rng, winners.len())
     } else {
         0
     };
