@@ -6,11 +6,9 @@ use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
-use vsr::controllers::ControllerKind;
 use vsr::experiment::{
     Evolution, EvolutionConfig, GenerationRecord, Job, RunFile, Timing, TrainingTerrain,
 };
-use vsr::simulation::Shape;
 use vsr::{Error, Result};
 
 /// Options shared by `vsr evolve` and `vsr finetune`.
@@ -43,21 +41,15 @@ pub struct RunOptions {
 /// Arguments of `vsr evolve`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Shape: a preset (biped-4x3, comb-7x2, biped-6x4, comb-14x2, worm-WxH, box-WxH) or rows
-    /// top first, e.g. 1111-1111-1001.
-    #[arg(long)]
-    shape: String,
-    /// Controller: attention, mlp, mlp-comm or slow-attention.
-    #[arg(long)]
-    controller: String,
+    #[command(flatten)]
+    robot: crate::params::RobotArgs,
     #[command(flatten)]
     options: RunOptions,
 }
 
 /// Runs the command.
 pub fn run(args: Args) -> Result<()> {
-    let shape = Shape::parse(&args.shape)?;
-    let kind: ControllerKind = args.controller.parse()?;
+    let (shape, kind) = args.robot.parse()?;
     let o = &args.options;
     let config = EvolutionConfig::paper(shape, kind, o.evals, o.seed);
     execute(config, &args.options)

@@ -1,11 +1,12 @@
 //! `vsr params --shape S --controller C`: prints a controller's parameter count for a shape.
+//! Also owns the `--shape` / `--controller` pair that `vsr evolve` shares.
 
 use vsr::controllers::ControllerKind;
 use vsr::simulation::Shape;
 
-/// Arguments of `vsr params`.
+/// A robot to control: its shape and its controller kind.
 #[derive(clap::Args, Debug)]
-pub struct Args {
+pub struct RobotArgs {
     /// Shape: a preset (biped-4x3, comb-7x2, biped-6x4, comb-14x2, worm-WxH, box-WxH) or rows
     /// top first, e.g. 1111-1111-1001.
     #[arg(long)]
@@ -15,10 +16,23 @@ pub struct Args {
     controller: String,
 }
 
+impl RobotArgs {
+    /// The parsed shape and controller kind, or the error that says which is wrong.
+    pub fn parse(&self) -> vsr::Result<(Shape, ControllerKind)> {
+        Ok((Shape::parse(&self.shape)?, self.controller.parse()?))
+    }
+}
+
+/// Arguments of `vsr params`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    robot: RobotArgs,
+}
+
 /// Runs the command.
 pub fn run(args: Args) -> vsr::Result<()> {
-    let shape = Shape::parse(&args.shape)?;
-    let kind: ControllerKind = args.controller.parse()?;
+    let (shape, kind) = args.robot.parse()?;
     println!("{}", kind.param_count(shape.voxel_count()));
     Ok(())
 }
