@@ -146,7 +146,8 @@ impl Controller for Attention {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rand::{Rng, SeedableRng};
+    use crate::controllers::test_util::random_vec;
+    use rand::SeedableRng;
     use rand_chacha::ChaCha8Rng;
 
     #[test]
@@ -159,10 +160,6 @@ mod tests {
         c.control(&[0.3, 0.4, 0.5, 1.0, 0.1, 0.2, 0.3, 0.0], &mut out);
         assert!(c.attention().unwrap().iter().all(|&a| a == 0.0));
         assert_eq!(out, [tanhf(0.5), tanhf(0.5)]);
-    }
-
-    fn random_vec(rng: &mut ChaCha8Rng, len: usize, scale: f32) -> Vec<f32> {
-        (0..len).map(|_| rng.gen_range(-scale..scale)).collect()
     }
 
     #[test]

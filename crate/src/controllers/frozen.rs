@@ -100,12 +100,9 @@ impl Controller for FrozenAttention {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rand::{Rng, SeedableRng};
+    use crate::controllers::test_util::random_vec;
+    use rand::SeedableRng;
     use rand_chacha::ChaCha8Rng;
-
-    fn random_vec(rng: &mut ChaCha8Rng, len: usize, scale: f32) -> Vec<f32> {
-        (0..len).map(|_| rng.gen_range(-scale..scale)).collect()
-    }
 
     #[test]
     fn frozen_attention_keeps_a_while_sensors_still_drive_the_output() {

@@ -123,3 +123,15 @@ mod tests {
         assert!(io_fits(3, &[0.0; 12], &mut out));
     }
 }
+
+/// Helpers shared by the controllers' unit tests.
+#[cfg(test)]
+pub(crate) mod test_util {
+    use rand::Rng;
+    use rand_chacha::ChaCha8Rng;
+
+    /// `len` values drawn uniformly from (-scale, scale).
+    pub fn random_vec(rng: &mut ChaCha8Rng, len: usize, scale: f32) -> Vec<f32> {
+        (0..len).map(|_| rng.gen_range(-scale..scale)).collect()
+    }
+}

@@ -112,8 +112,9 @@ impl Controller for SlowAttention {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::controllers::test_util::random_vec;
     use crate::controllers::Attention;
-    use rand::{Rng, SeedableRng};
+    use rand::SeedableRng;
     use rand_chacha::ChaCha8Rng;
 
     #[test]
@@ -126,10 +127,6 @@ mod tests {
         c.set_params(&p).unwrap();
         assert_eq!(c.alpha(), 0.3);
         assert_eq!(c.eta(), 1.0);
-    }
-
-    fn random_vec(rng: &mut ChaCha8Rng, len: usize, scale: f32) -> Vec<f32> {
-        (0..len).map(|_| rng.gen_range(-scale..scale)).collect()
     }
 
     #[test]
