@@ -191,7 +191,11 @@ fn every_load_error_says_what_is_wrong() {
         assert!(err.contains(expected), "expected '{expected}' in: {err}");
     }
     let err = RunFile::from_json("{\"format\": ").unwrap_err().to_string();
-    assert!(err.contains("not valid JSON"), "{err}");
+    assert!(err.contains("cut off"), "{err}");
+    let err = RunFile::from_json("{\"format\" 1}")
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("not valid JSON (near line 1"), "{err}");
     // A genome of another controller: 73 attention genes labelled mlp (41 expected).
     let err = load_error(|v| {
         v["best"]["controller"] = json!("mlp");

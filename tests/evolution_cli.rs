@@ -153,7 +153,7 @@ fn bad_run_files_exit_with_code_2() {
     let g = scratch("good.json");
     tiny_run("mlp", 2, &g);
     let wrong_size = format!("evaluate --genome {g} --terrain flat --shape comb-7x2");
-    fails_with(&wrong_size, "has 45 parameters");
+    fails_with(&wrong_size, "robot has 45");
     let bad_terrain = format!("evaluate --genome {g} --terrain mountains");
     fails_with(&bad_terrain, "invalid terrain");
     fails_with(&format!("ablate --genome {g}"), "is a mlp controller");

@@ -14,6 +14,9 @@ const MIN_CELL_PX = 6;
 const ROW_LABEL_PX = 38;
 const COL_LABEL_PX = 34;
 const GAP_PX = 14;
+/** Gap between bare maps, and the smallest cell that still gets labels (CSS px). */
+const COMPACT_GAP_PX = 5;
+const LABELLED_CELL_PX = 12;
 const FONT = '11px system-ui, sans-serif';
 const NEGATIVE = [49, 99, 190];
 const POSITIVE = [200, 45, 40];
@@ -80,10 +83,13 @@ export class AttentionPanel {
     const { canvas, ctx } = this;
     const dpr = window.devicePixelRatio || 1;
     const room = this.section.clientWidth || 600;
-    const fit = Math.floor((room / this.columns - ROW_LABEL_PX - GAP_PX) / SIDE);
+    // Labels on every map while they fit; otherwise bare maps (the legend names the order).
+    const labelled = Math.floor((room / this.columns - ROW_LABEL_PX - GAP_PX) / SIDE) >= LABELLED_CELL_PX;
+    const [rowLabel, colLabel, gap] = labelled ? [ROW_LABEL_PX, COL_LABEL_PX, GAP_PX] : [0, 0, COMPACT_GAP_PX];
+    const fit = Math.floor((room / this.columns - rowLabel - gap) / SIDE);
     const cell = Math.max(MIN_CELL_PX, Math.min(MAX_CELL_PX, fit));
-    const pitchX = ROW_LABEL_PX + SIDE * cell + GAP_PX;
-    const pitchY = COL_LABEL_PX + SIDE * cell + GAP_PX;
+    const pitchX = rowLabel + SIDE * cell + gap;
+    const pitchY = colLabel + SIDE * cell + gap;
     const width = this.columns * pitchX;
     const height = this.rows * pitchY;
     if (canvas.width !== Math.round(width * dpr) || canvas.height !== Math.round(height * dpr)) {
@@ -96,9 +102,9 @@ export class AttentionPanel {
     ctx.clearRect(0, 0, width, height);
     ctx.font = FONT;
     for (let v = 0; v < this.cells.length / 2; v++) {
-      const x = this.cells[2 * v] * pitchX + ROW_LABEL_PX;
-      const y = (this.rows - 1 - this.cells[2 * v + 1]) * pitchY + COL_LABEL_PX;
-      this.drawMap(this.attention.subarray(v * ATTENTION_FLOATS, (v + 1) * ATTENTION_FLOATS), x, y, cell);
+      const x = this.cells[2 * v] * pitchX + rowLabel;
+      const y = (this.rows - 1 - this.cells[2 * v + 1]) * pitchY + colLabel;
+      this.drawMap(this.attention.subarray(v * ATTENTION_FLOATS, (v + 1) * ATTENTION_FLOATS), x, y, cell, labelled);
     }
   }
 
@@ -106,8 +112,9 @@ export class AttentionPanel {
    * One voxel's matrix with its top-left corner at (x, y), row labels on the left and
    * column labels (vertical) above.
    * @param {Float32Array} a 16 values, row-major @param {number} x @param {number} y @param {number} cell
+   * @param {boolean} labelled
    */
-  drawMap(a, x, y, cell) {
+  drawMap(a, x, y, cell, labelled) {
     const { ctx } = this;
     for (let r = 0; r < SIDE; r++) {
       for (let c = 0; c < SIDE; c++) {
@@ -118,6 +125,7 @@ export class AttentionPanel {
     ctx.strokeStyle = 'rgba(30, 40, 50, 0.6)';
     ctx.lineWidth = 1;
     ctx.strokeRect(x + 0.5, y + 0.5, SIDE * cell - 1, SIDE * cell - 1);
+    if (!labelled) return;
     ctx.fillStyle = 'rgba(30, 50, 70, 0.85)';
     ctx.textBaseline = 'middle';
     ctx.textAlign = 'right';

@@ -1,16 +1,21 @@
 // @ts-check
 /**
  * The GA coordinator (a module worker; the page starts one per run). It owns the wasm
- * `Evolution` (ask/tell) and a pool of evaluation workers (evaluator.js). Each generation it
- * asks for the jobs, hands them out one at a time to whichever worker is idle, stores each
- * fitness at its job's index, and tells the GA once all are back: the result is the same
- * for any number of workers. Pausing stops handing out jobs; stopping drops the unfinished
+ * `Evolution` (ask/tell: from scratch as `vsr evolve`, or fine-tuning as `vsr finetune`) and
+ * a pool of evaluation workers (evaluator.js). Each generation it asks for the jobs, hands
+ * them out one at a time to whichever worker is idle, stores each fitness at its job's
+ * index, and tells the GA once all are back: the result is the same for any number of
+ * workers, and when a worker dies, a new one re-runs its job with the same result. Pausing
+ * stops handing out jobs; a step runs one generation; stopping drops the unfinished
  * generation. Messages: protocol.js (ToCoordinator, FromCoordinator, EvaluatorMessage).
  */
 import init, { Evolution, start as installPanicHook } from './pkg/vsr.js';
+import { loadWasm, messageOf, spawn } from './kit.js';
 import { EvaluatorMessage, FromCoordinator, MAX_EVALUATORS, ToCoordinator } from './protocol.js';
 
-const ready = init().then(() => installPanicHook());
+const ready = loadWasm(init, installPanicHook);
+/** Replacements of dead evaluation workers before the run gives up. */
+const MAX_REPLACEMENTS = 8;
 
 /** @type {Evolution | null} */
 let evolution = null;
@@ -18,6 +23,11 @@ let evolution = null;
 let pool = [];
 /** @type {Worker[]} workers without a job */
 let idle = [];
+/** The job slot each busy worker holds. @type {Map<Worker, number>} */
+const busy = new Map();
+/** Job slots handed back by dead workers, to hand out again first. @type {number[]} */
+let orphans = [];
+let replacements = 0;
 /**
  * The generation under evaluation.
  * @type {{jobs: import('./protocol.js').EvolveJob[], genomes: Float32Array,
@@ -25,6 +35,8 @@ let idle = [];
  */
 let batch = null;
 let paused = false;
+/** Pause again after the generation under way (a step). */
+let stepping = false;
 /** Wall time of the run so far, pauses excluded: ms accumulated, and when the clock last ran. */
 let clock = { ms: 0, since: 0 };
 let bestSoFar = -Infinity;
@@ -34,15 +46,18 @@ self.onmessage = async (event) => {
   try {
     await ready;
   } catch (error) {
-    fail(`could not load the simulator (wasm): ${messageOf(error)}`);
+    fail(messageOf(error));
     return;
   }
   const msg = event.data;
   switch (msg.type) {
-    case ToCoordinator.START: start(msg.settings, msg.workers); break;
+    case ToCoordinator.START: start(msg.settings, msg.workers, msg.source ?? null); break;
     case ToCoordinator.PAUSE: setPaused(true); break;
     case ToCoordinator.RESUME: setPaused(false); break;
+    case ToCoordinator.STEP: step(); break;
     case ToCoordinator.STOP: finish(true); break;
+    case ToCoordinator.RUN_FILE: self.postMessage({ type: FromCoordinator.RUN_FILE, runFile: currentRunFile() }); break;
+    case ToCoordinator.CRASH_WORKER: pool[Number(msg.index) || 0]?.postMessage({ type: EvaluatorMessage.CRASH }); break;
     default: fail(`unknown message type ${JSON.stringify(msg.type)}`);
   }
 };
@@ -51,11 +66,12 @@ self.onmessage = async (event) => {
  * Starts the run; bad settings answer 'error' before any worker starts.
  * @param {import('./protocol.js').EvolveSettings} settings
  * @param {number} workers
+ * @param {string | null} source the run file to fine-tune from, or null
  */
-function start(settings, workers) {
+function start(settings, workers, source) {
   if (evolution) { fail('this coordinator already runs an evolution'); return; }
   try {
-    evolution = new Evolution(JSON.stringify(settings));
+    evolution = source === null ? new Evolution(settings) : Evolution.finetune(source, settings);
   } catch (error) {
     fail(messageOf(error));
     return;
@@ -70,10 +86,32 @@ function start(settings, workers) {
 
 /** @returns {Worker} an evaluation worker wired to this coordinator */
 function startEvaluator() {
-  const w = new Worker(new URL('./evaluator.js', import.meta.url), { type: 'module' });
-  w.onmessage = (event) => onEvaluatorMessage(w, event.data);
-  w.onerror = (event) => fail(`an evaluation worker failed: ${event.message || 'see the console'}`);
+  const w = spawn('evaluator.js', (msg) => onEvaluatorMessage(w, msg), (text) => replace(w, text));
   return w;
+}
+
+/**
+ * A worker died: a new one takes its place and its job goes out again.
+ * @param {Worker} dead @param {string} why
+ */
+function replace(dead, why) {
+  const index = pool.indexOf(dead);
+  if (!evolution || index < 0) return;
+  dead.terminate();
+  if (++replacements > MAX_REPLACEMENTS) {
+    fail(`evaluation workers keep failing (${why}); the run ended`);
+    return;
+  }
+  const slot = busy.get(dead);
+  busy.delete(dead);
+  idle = idle.filter((w) => w !== dead);
+  if (slot !== undefined) orphans.push(slot);
+  const fresh = startEvaluator();
+  pool[index] = fresh;
+  idle.push(fresh);
+  self.postMessage({ type: FromCoordinator.RECOVERED,
+    message: `evaluation worker ${index + 1} stopped (${why}); a new one re-runs its job` });
+  dispatch();
 }
 
 /** @param {Worker} w @param {{type: string, slot?: number, fitness?: number, message?: string}} msg */
@@ -89,49 +127,72 @@ function onEvaluatorMessage(w, msg) {
 /** Asks for the next generation and hands out its jobs, or ends the run. */
 function nextGeneration() {
   if (!evolution) return;
-  const jobs = JSON.parse(evolution.ask());
+  const jobs = evolution.ask();
   if (jobs.length === 0) { finish(false); return; }
   const genomes = evolution.genomes();
   batch = { jobs, genomes, fitness: new Float64Array(jobs.length).fill(NaN), next: 0, left: jobs.length };
+  orphans = [];
   dispatch();
 }
 
-/** Gives idle workers the next jobs while not paused. */
+/** Gives idle workers the next jobs (orphaned ones first) while not paused. */
 function dispatch() {
   if (!evolution || !batch) return;
   const len = evolution.genomeLength;
-  while (!paused && batch.next < batch.jobs.length && idle.length > 0) {
+  while (!paused && idle.length > 0 && (orphans.length > 0 || batch.next < batch.jobs.length)) {
     const w = /** @type {Worker} */ (idle.pop());
-    const slot = batch.next++;
+    const slot = orphans.length > 0 ? /** @type {number} */ (orphans.shift()) : batch.next++;
     const genome = batch.genomes.slice(slot * len, (slot + 1) * len);
+    busy.set(w, slot);
     w.postMessage({ type: EvaluatorMessage.JOB, slot, job: batch.jobs[slot], genome }, [genome.buffer]);
   }
 }
 
 /** @param {Worker} w @param {number} slot @param {number} fitness */
 function onResult(w, slot, fitness) {
-  if (!batch) return;
+  if (!batch || busy.get(w) !== slot) return;
+  busy.delete(w);
   idle.push(w);
   batch.fitness[slot] = fitness;
   batch.left -= 1;
   if (batch.left === 0) tellGeneration(); else dispatch();
 }
 
-/** Tells the GA the finished generation, reports it, and goes on. */
+/** Tells the GA the finished generation, reports it, and goes on (or pauses after a step). */
 function tellGeneration() {
   if (!evolution || !batch) return;
   const seconds = wallSeconds();
-  const record = JSON.parse(evolution.tell(batch.fitness, seconds));
+  const record = evolution.tell(batch.fitness, seconds);
+  const generation = batch;
   batch = null;
-  const improved = record.best !== null && record.best > bestSoFar;
-  if (improved) bestSoFar = record.best;
+  let best = null;
+  if (record.best !== null && record.best !== undefined && record.best > bestSoFar) {
+    bestSoFar = record.best;
+    const i = bestIndex(generation.fitness);
+    const len = evolution.genomeLength;
+    best = { fitness: record.best, genome: generation.genomes.slice(i * len, (i + 1) * len) };
+  }
   const evaluations = evolution.evaluations;
   self.postMessage({
     type: FromCoordinator.GENERATION, record, evaluations, planned: evolution.plannedEvaluations,
-    evalsPerSecond: seconds > 0 ? evaluations / seconds : NaN, improved,
-    runFile: evolution.runFile(pool.length, seconds),
+    evalsPerSecond: seconds > 0 ? evaluations / seconds : NaN, best,
   });
+  if (stepping) { stepping = false; setPaused(true); }
   nextGeneration();
+}
+
+/** Index of the largest finite fitness. @param {Float64Array} fitness */
+function bestIndex(fitness) {
+  let best = 0;
+  fitness.forEach((f, i) => { if (Number.isFinite(f) && !(fitness[best] >= f)) best = i; });
+  return best;
+}
+
+/** While paused: run one generation, then pause again. */
+function step() {
+  if (!evolution || !paused) return;
+  stepping = true;
+  setPaused(false);
 }
 
 /** @param {boolean} pause */
@@ -140,7 +201,7 @@ function setPaused(pause) {
   const now = performance.now();
   if (pause) clock.ms += now - clock.since; else clock.since = now;
   paused = pause;
-  self.postMessage({ type: FromCoordinator.STATE, paused });
+  self.postMessage({ type: FromCoordinator.STATE, paused, stepping });
   dispatch();
 }
 
@@ -149,18 +210,23 @@ function wallSeconds() {
   return (clock.ms + (paused ? 0 : performance.now() - clock.since)) / 1000;
 }
 
+/** @returns {string | null} the run so far as a run file, or null before generation 0 */
+function currentRunFile() {
+  return evolution && evolution.evaluations > 0 ? evolution.runFile(pool.length, wallSeconds()) : null;
+}
+
 /**
  * Ends the run: stops the workers and reports the run file of the generations told.
  * @param {boolean} stopped true when stopped before the budget was spent
  */
 function finish(stopped) {
   if (!evolution) return;
-  const workers = pool.length;
+  const runFile = currentRunFile();
   for (const w of pool) w.terminate();
   pool = [];
   idle = [];
+  busy.clear();
   batch = null;
-  const runFile = evolution.evaluations > 0 ? evolution.runFile(workers, wallSeconds()) : null;
   evolution.free();
   evolution = null;
   self.postMessage({ type: FromCoordinator.DONE, stopped, runFile });
@@ -170,9 +236,4 @@ function finish(stopped) {
 function fail(message) {
   self.postMessage({ type: FromCoordinator.ERROR, message });
   finish(true);
-}
-
-/** @param {unknown} error */
-function messageOf(error) {
-  return error instanceof Error ? error.message : String(error);
 }

@@ -7,25 +7,30 @@
  * result. Messages: protocol.js (EvaluatorMessage).
  */
 import init, { evaluateJob, start as installPanicHook } from './pkg/vsr.js';
+import { loadWasm, messageOf } from './kit.js';
 import { EvaluatorMessage } from './protocol.js';
 
-const ready = init().then(() => installPanicHook());
+const ready = loadWasm(init, installPanicHook);
 
 /** @param {MessageEvent<{type: string, slot: number, job: import('./protocol.js').EvolveJob, genome: Float32Array}>} event */
 self.onmessage = async (event) => {
   try {
     await ready;
   } catch (error) {
-    reportError(`could not load the simulator (wasm): ${messageOf(error)}`);
+    reportError(messageOf(error));
     return;
   }
   const { type, slot, job, genome } = event.data;
+  if (type === EvaluatorMessage.CRASH) {
+    setTimeout(() => { throw new Error('evaluation worker crashed on request'); });
+    return;
+  }
   if (type !== EvaluatorMessage.JOB) {
     reportError(`unknown message type ${JSON.stringify(type)}`);
     return;
   }
   try {
-    const fitness = evaluateJob(genome, job.shape, job.controller, job.terrain, job.noiseSeed, job.seconds);
+    const fitness = evaluateJob(job, genome);
     self.postMessage({ type: EvaluatorMessage.RESULT, slot, fitness });
   } catch (error) {
     reportError(`evaluation ${job.index} of generation ${job.generation} failed: ${messageOf(error)}`);
@@ -35,11 +40,6 @@ self.onmessage = async (event) => {
 /** @param {string} message */
 function reportError(message) {
   self.postMessage({ type: EvaluatorMessage.ERROR, message });
-}
-
-/** @param {unknown} error */
-function messageOf(error) {
-  return error instanceof Error ? error.message : String(error);
 }
 
 ready.then(() => self.postMessage({ type: EvaluatorMessage.READY }), () => {});

@@ -1,175 +1,380 @@
 // @ts-check
 /**
- * Page wiring: the controls, the controller source, the Evolve panel (evolve.js, whose
- * best individual drives the robot like any run file), the simulation worker and the
- * animation loop. The worker owns the simulation; this thread only sends commands and
- * draws the latest frame it received (see protocol.js for the messages).
+ * Page wiring. The drawing is the one source of truth for the body: the editor draws it,
+ * the viewer walks it, and runs evolve it. The brain (a controller family and its genome
+ * for the drawn body) drives it: none (the phase gait), a transplanted module, an evolved
+ * best, or the genome of a shared link. When the body changes, the brain's genome follows
+ * it by grid position (the core's remap). The state is kept across reloads and can be
+ * shared as a link.
  */
-import { AttentionPanel } from './attention.js';
-import { EvolvePanel } from './evolve.js';
-import { DEFAULT_PARAMS, FromWorker, SHAPE_PRESETS, ToWorker, frameIsConsistent } from './protocol.js';
-import { Readout } from './readout.js';
-import { Renderer } from './renderer.js';
-import { SourcePicker } from './sources.js';
+import { checkShape, ready, remapGenome, runGenome, transplant, describeRun } from './core.js';
+import { Drawing } from './drawing.js';
+import { Editor } from './editor.js';
+import { messageOf } from './kit.js';
+import { ModuleList } from './modules.js';
+import { RunPanel } from './run-panel.js';
+import { decodeState, encodeState } from './share.js';
+import { keep, loadKept } from './storage.js';
+import { Viewer } from './viewer.js';
 
-/** Workers restarted after a crash before the page gives up. */
-const MAX_RESTARTS = 3;
+/** Least wall time between two switches of the viewer to a newer best (ms). */
+const FOLLOW_INTERVAL_MS = 3000;
+/** Wait after the last change before keeping the state (ms). */
+const KEEP_DELAY_MS = 300;
 
-const form = /** @type {HTMLFormElement} */ (byId('controls'));
-const inputs = {
-  shape: /** @type {HTMLInputElement} */ (byId('shape')),
-  terrain: /** @type {HTMLInputElement} */ (byId('terrain')),
-  frequency: /** @type {HTMLInputElement} */ (byId('frequency')),
-  phase: /** @type {HTMLInputElement} */ (byId('phase')),
-};
-const speedSelect = /** @type {HTMLSelectElement} */ (byId('speed'));
-const buttons = { start: byId('start'), pause: byId('pause'), reset: byId('reset') };
-const message = byId('message');
-const status = byId('status');
-const renderer = new Renderer(/** @type {HTMLCanvasElement} */ (byId('scene')));
-const readout = new Readout(document);
-const attention = new AttentionPanel(byId('attention-panel'), /** @type {HTMLCanvasElement} */ (byId('attention')));
-const picker = new SourcePicker(/** @type {HTMLSelectElement} */ (byId('source')),
-  /** @type {HTMLInputElement} */ (byId('run-file')), pickSource, showMessage);
-/** Picker key of the evolved best (one option, relabelled at each switch). */
-const EVOLVED_KEY = 'evolved';
-new EvolvePanel(document, {
-  shape: () => inputs.shape.value.trim(),
-  watch: (text, label) => pickSource({ key: EVOLVED_KEY, label, text }),
+/**
+ * @typedef {object} Brain  what drives the drawn body
+ * @property {string} controller
+ * @property {Float32Array} genome   for the body `rows`
+ * @property {string} rows           the body the genome fits
+ * @property {{left: number, bottom: number}} origin  where that body sat on the grid
+ * @property {string} label          where it came from, in words
+ * @property {string | null} module  the pretrained file it came from, if any
+ * @property {string | null} source  the run file whose attention block it carries (fine-tuning), if any
+ */
+
+const defaults = await ready.catch((error) => {
+  document.getElementById('message')?.replaceChildren(`The simulator could not load: ${messageOf(error)}`);
+  document.getElementById('message')?.removeAttribute('hidden');
+  throw error;
+});
+const el = (/** @type {string} */ id) => /** @type {any} */ (document.getElementById(id));
+const message = el('message');
+const drawing = new Drawing(defaults.grid.width, defaults.grid.height);
+const rowsInput = /** @type {HTMLInputElement} */ (el('rows'));
+const controllerSelect = /** @type {HTMLSelectElement} */ (el('controller'));
+const presetSelect = /** @type {HTMLSelectElement} */ (el('preset'));
+/** @type {Brain | null} */
+let brain = null;
+/** The last check of the drawing. @type {import('./core.js').ShapeCheck} */
+let check = checkShape('');
+let edits = 0;
+let running = false;
+let keepTimer = 0;
+let follow = { last: -Infinity, timer: 0, pending: /** @type {(() => void) | null} */ (null) };
+
+const editor = new Editor(el('editor'), drawing, { onPaint: () => updateCheck(), onStroke: () => bodyChanged() });
+const viewer = new Viewer(document, {
+  message: showMessage,
+  loaded: () => {},
+  clicked: (pick) => editWalking(pick),
+});
+const modules = new ModuleList(document, { loadOnto: loadModule, openOwn: openModule, message: showMessage });
+const runs = new RunPanel(document, defaults, {
+  body: () => ({ rows: drawing.rows(), ok: check.ok }),
+  controller: () => controllerSelect.value,
+  source: () => (brain && brain.controller === 'attention' ? brain.source : null),
+  best: onBest,
+  running: (on) => { running = on; editor.setLocked(on); updateButtons(); },
   message: showMessage,
 });
 
-/** Parameters of the episode the worker runs now (the last one that loaded). */
-/** @type {import('./protocol.js').EpisodeParams} */
-let current = { ...DEFAULT_PARAMS };
-let running = true;
-let restarts = 0;
-let worker = startWorker();
-
-/** @returns {Worker} a new simulation worker, told to load `current` */
-function startWorker() {
-  const w = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
-  w.onmessage = (event) => onWorkerMessage(event.data);
-  w.onerror = (event) => showMessage(`the simulation worker failed: ${event.message || 'see the console'}`);
-  w.postMessage({ type: ToWorker.SPEED, speed: Number(speedSelect.value) });
-  w.postMessage({ type: ToWorker.LOAD, params: current });
-  if (running) w.postMessage({ type: ToWorker.START });
-  return w;
-}
-
-/** @param {any} msg a message from the worker */
-function onWorkerMessage(msg) {
-  switch (msg.type) {
-    case FromWorker.READY: setStatus('ready'); break;
-    case FromWorker.LOADED:
-      current = msg.params;
-      renderer.setTerrain(msg.terrainXs, msg.terrainYs);
-      attention.setLayout(msg.cells);
-      readout.reset();
-      showSource();
-      setStatus(`${msg.voxels} voxels, ${msg.controller}`);
-      break;
-    case FromWorker.FRAME:
-      if (frameIsConsistent(msg)) { renderer.setFrame(msg); readout.update(msg); attention.setFrame(msg); }
-      break;
-    case FromWorker.STATE: running = msg.running; updateButtons(); break;
-    case FromWorker.ERROR: onWorkerError(msg.message, msg.fatal); break;
-    default: console.warn('unknown message from the worker', msg);
-  }
-}
-
-/** @param {string} text @param {boolean} fatal */
-function onWorkerError(text, fatal) {
-  showMessage(text);
-  picker.show(current.runFile); // a refused source must not look chosen
-  if (!fatal) return;
-  worker.terminate();
-  if (restarts++ < MAX_RESTARTS) worker = startWorker();
-}
-
-/** @returns {import('./protocol.js').EpisodeParams} the parameters typed in the form */
-function formParams() {
-  return {
-    shape: inputs.shape.value.trim(),
-    terrain: inputs.terrain.value.trim(),
-    frequency: inputs.frequency.valueAsNumber,
-    phase: inputs.phase.valueAsNumber,
-    runFile: current.runFile,
-  };
-}
-
-/** Asks the worker for the episode in the form; it answers 'loaded' or 'error'. */
-function applyForm() {
-  showMessage('');
-  worker.postMessage({ type: ToWorker.LOAD, params: formParams() });
-}
-
-/**
- * Drives the robot with a new source: a run file on its own shape, or the phase gait
- * on the shape in the form.
- * @param {import('./protocol.js').RunFileSource | null} runFile
- */
-function pickSource(runFile) {
-  showMessage('');
-  const params = { ...formParams(), runFile, shape: runFile ? '' : inputs.shape.value.trim() };
-  worker.postMessage({ type: ToWorker.LOAD, params });
-}
-
-/** Shows the source of the running episode: the picker, its shape, and the gait fields' use. */
-function showSource() {
-  picker.show(current.runFile);
-  inputs.shape.value = current.shape;
-  for (const input of [inputs.frequency, inputs.phase]) input.disabled = current.runFile !== null;
-}
-
-/** @param {string} text an error for the person, or '' to clear it */
+/** @param {string} text an error or a note for the person, or '' to clear it */
 function showMessage(text) {
   message.textContent = text;
   message.hidden = text === '';
+  message.dataset.kind = 'error';
 }
 
-/** @param {string} text */
-function setStatus(text) {
-  status.textContent = text;
+/** Validation of the drawing, shown in the message area too. @param {string} text */
+function showValidation(text) {
+  if (text) { showMessage(text); message.dataset.kind = 'validation'; return; }
+  if (message.dataset.kind === 'validation') showMessage('');
+}
+
+/** Re-checks the drawing: words, pieces, parameter count, buttons. */
+function updateCheck() {
+  const rows = drawing.rows();
+  check = checkShape(rows);
+  editor.setPieces(check.ok ? null : check.pieces);
+  rowsInput.value = rows;
+  const status = el('shape-status');
+  if (check.ok) {
+    status.textContent = `${check.voxels} voxels · ${rows}`;
+    showValidation('');
+  } else {
+    const pieces = check.pieces.length > 1 ? ` (each piece has its own colour)` : '';
+    status.textContent = `not a robot yet: ${check.message}${pieces}`;
+    showValidation(`Your drawing is not a robot yet: ${check.message}${pieces}. Evolve and Fine-tune are off until it is.`);
+  }
+  status.dataset.ok = String(check.ok);
+  updateParams();
+  updateButtons();
+}
+
+function updateParams() {
+  const kind = controllerSelect.value;
+  const genes = check.params.find(([k]) => k === kind)?.[1] ?? 0;
+  const detail = kind === 'attention' && check.voxels > 0 ? ` (${defaults.attentionGenes} attention + ${genes - defaults.attentionGenes} downstream)` : '';
+  el('param-count').textContent = check.voxels > 0 ? `${genes} parameters${detail}` : '';
+  el('param-count').dataset.value = String(genes);
 }
 
 function updateButtons() {
-  buttons.start.toggleAttribute('disabled', running);
-  buttons.pause.toggleAttribute('disabled', !running);
-  document.body.dataset.running = String(running);
+  el('undo').disabled = running || !drawing.canUndo;
+  el('redo').disabled = running || !drawing.canRedo;
+  el('clear').disabled = running;
+  presetSelect.disabled = running;
+  rowsInput.disabled = running;
+  el('module-load').disabled = running || !check.ok;
+  el('module-open').disabled = running;
+  runs.update();
 }
 
-/** @param {string} id */
-function byId(id) {
-  const el = document.getElementById(id);
-  if (!el) throw new Error(`the page has no #${id}`);
-  return el;
+/** The drawing's place on the grid (its bottom-left cell). */
+function origin() {
+  const box = drawing.box();
+  return box ? { left: box.left, bottom: box.bottom } : { left: 0, bottom: 0 };
 }
 
-function fillPresets() {
-  const list = byId('shape-presets');
-  for (const preset of SHAPE_PRESETS) list.append(new Option(preset));
-  inputs.shape.value = DEFAULT_PARAMS.shape;
-  inputs.terrain.value = DEFAULT_PARAMS.terrain;
-  inputs.frequency.value = String(DEFAULT_PARAMS.frequency);
-  inputs.phase.value = String(DEFAULT_PARAMS.phase);
+/** The drawing changed (a stroke, undo, a preset, typed rows, an edit of the walking robot). */
+function bodyChanged() {
+  updateCheck();
+  if (!check.ok) { scheduleKeep(); return; }
+  const rows = drawing.rows();
+  if (brain && brain.rows !== rows) {
+    const here = origin();
+    try {
+      const genome = remapGenome(brain.controller, brain.genome, brain.rows, rows,
+        here.left - brain.origin.left, here.bottom - brain.origin.bottom, seed(), ++edits);
+      brain = { ...brain, genome, rows, origin: here, label: brain.label.replace(/ · edited.*$/, '') + ' · edited' };
+    } catch (error) {
+      showMessage(`the controller could not follow the edit: ${messageOf(error)}`);
+      brain = null;
+    }
+  } else if (brain) {
+    brain = { ...brain, origin: origin() };
+  }
+  showBrain();
+  scheduleKeep();
 }
 
-fillPresets();
-updateButtons();
-// Enter in a field commits it, which fires 'change'; submitting must not load twice.
-form.addEventListener('submit', (event) => event.preventDefault());
-for (const input of Object.values(inputs)) input.addEventListener('change', applyForm);
-inputs.shape.addEventListener('input', () => {
-  if (SHAPE_PRESETS.includes(inputs.shape.value)) applyForm();
-});
-speedSelect.addEventListener('change', () => worker.postMessage({ type: ToWorker.SPEED, speed: Number(speedSelect.value) }));
-buttons.start.addEventListener('click', () => worker.postMessage({ type: ToWorker.START }));
-buttons.pause.addEventListener('click', () => worker.postMessage({ type: ToWorker.PAUSE }));
-buttons.reset.addEventListener('click', () => { showMessage(''); worker.postMessage({ type: ToWorker.RESET }); });
-requestAnimationFrame(function loop(now) {
-  renderer.draw(now);
-  attention.draw();
-  requestAnimationFrame(loop);
-});
-picker.listPretrained();
+/** Sends the drawing and its brain to the viewer and says what drives it. */
+function showBrain() {
+  viewer.show(drawing.rows(), brain ? { controller: brain.controller, genome: brain.genome } : null);
+  el('driver').textContent = brain
+    ? `Driven by: ${brain.label} (${brain.controller}, ${brain.genome.length} genes).`
+    : 'Driven by: the phase gait (no controller yet: evolve one, or load a module).';
+  updateButtons();
+}
+
+/** @returns {number} the run seed in the form (0 when not a number) */
+function seed() {
+  const s = Number(runs.inputs.seed.value);
+  return Number.isSafeInteger(s) && s >= 0 ? s : 0;
+}
+
+/** A click on the walking robot: remove that voxel, or add one next to it. @param {{voxel: number, dx: number, dy: number}} pick */
+function editWalking(pick) {
+  if (running) { showMessage('stop the run to edit the robot'); return; }
+  const box = drawing.box();
+  if (!box || !check.ok) return;
+  const cells = [];
+  for (let y = box.bottom; y <= box.top; y++) for (let x = box.left; x <= box.right; x++) if (drawing.has(x, y)) cells.push([x, y]);
+  const cell = cells[pick.voxel];
+  if (!cell) return;
+  const [x, y] = [cell[0] + pick.dx, cell[1] + pick.dy];
+  const adding = pick.dx !== 0 || pick.dy !== 0;
+  if (!drawing.inside(x, y)) { showMessage('that cell is outside the drawing grid'); return; }
+  if (adding && drawing.has(x, y)) return;
+  drawing.beginStroke();
+  drawing.set(x, y, adding);
+  const after = checkShape(drawing.rows());
+  if (!after.ok) {
+    drawing.endStroke();
+    drawing.undo();
+    drawing.redoStack.pop();
+    showMessage(`removing that voxel would leave ${after.message.replace(/^the shape is/, 'the robot')}; not done`);
+    return;
+  }
+  drawing.endStroke();
+  editor.draw();
+  bodyChanged();
+}
+
+/** Puts a module on the drawn robot (SPEC 10's transplant for attention). @param {import('./modules.js').Module} module */
+function loadModule(module) {
+  if (!check.ok) { showMessage('draw a valid robot first'); return; }
+  try {
+    const rows = drawing.rows();
+    const info = describeRun(module.text);
+    const genome = transplant(module.text, rows, seed());
+    const same = info.shape === rows;
+    brain = {
+      controller: info.controller, genome, rows, origin: origin(), module: module.key.startsWith('pretrained/') ? module.key : null,
+      source: info.controller === 'attention' ? module.text : null,
+      label: same ? `${module.label}, on its own body` : `the attention of ${module.label}, downstream re-drawn for this body (seed ${seed()})`,
+    };
+    showMessage('');
+    showBrain();
+    scheduleKeep();
+  } catch (error) {
+    showMessage(messageOf(error));
+  }
+}
+
+/** Replaces the drawing by the module's own body and genome. @param {import('./modules.js').Module} module */
+function openModule(module) {
+  try {
+    const info = describeRun(module.text);
+    const genome = runGenome(module.text);
+    const problem = drawing.setRows(info.shape);
+    if (problem) { showMessage(`this module's body does not fit the grid: ${problem}`); return; }
+    brain = {
+      controller: info.controller, genome, rows: drawing.rows(), origin: origin(), label: `${module.label}, on its own body`,
+      module: module.key.startsWith('pretrained/') ? module.key : null, source: info.controller === 'attention' ? module.text : null,
+    };
+    showMessage('');
+    editor.draw();
+    bodyChanged();
+  } catch (error) {
+    showMessage(messageOf(error));
+  }
+}
+
+/**
+ * A new best from the run panel: it drives the robot (at most every few seconds while a run
+ * goes on; at once when the run ended, which also lists its run file as a module).
+ * @param {Float32Array} genome @param {number} fitness
+ * @param {import('./protocol.js').EvolveSettings} settings @param {string} kind @param {string | null} runFile
+ */
+function onBest(genome, fitness, settings, kind, runFile) {
+  const apply = () => {
+    follow.last = performance.now();
+    follow.pending = null;
+    if (settings.shape !== drawing.rows()) return;
+    const finetuned = runFile ? JSON.parse(runFile).config.source !== null : brain?.source !== null && kind === 'attention' && runs.mode === 'finetune';
+    const label = `${finetuned ? 'fine-tuned' : 'evolved'} best (${fitness.toFixed(2)} m/s, seed ${settings.seed})`;
+    const source = runFile && kind === 'attention' ? runFile : brain?.source ?? null;
+    brain = { controller: kind, genome, rows: settings.shape, origin: origin(), label, module: null, source };
+    if (runFile) {
+      try {
+        modules.add({ key: `run:${settings.seed}:${kind}:${finetuned}`, label: `${label} (this page)`, text: runFile });
+      } catch (error) {
+        showMessage(`the finished run could not be listed: ${messageOf(error)}`);
+      }
+    }
+    showBrain();
+    scheduleKeep();
+  };
+  window.clearTimeout(follow.timer);
+  const wait = follow.last + FOLLOW_INTERVAL_MS - performance.now();
+  if (runFile || wait <= 0) { apply(); return; }
+  follow.pending = apply;
+  follow.timer = window.setTimeout(() => follow.pending?.(), wait);
+}
+
+/** @returns {import('./share.js').PageState} */
+function pageState() {
+  return {
+    rows: drawing.rows(), controller: controllerSelect.value, terrain: viewer.terrain.value, run: runs.values(),
+    brain: brain ? { controller: brain.controller, genome: brain.genome, label: brain.label, module: brain.module } : null,
+  };
+}
+
+function scheduleKeep() {
+  window.clearTimeout(keepTimer);
+  keepTimer = window.setTimeout(() => {
+    if (!check.ok && drawing.cells.size > 0) return; // keep the last valid robot, not a half-drawn one
+    const problem = keep(encodeState(pageState()));
+    if (problem) showMessage(problem);
+  }, KEEP_DELAY_MS);
+}
+
+/** Restores a state from a link or storage. @param {import('./share.js').PageState} state */
+async function restore(state) {
+  drawing.setRows(state.rows);
+  drawing.undoStack = [];
+  if (defaults.controllers.includes(state.controller)) controllerSelect.value = state.controller;
+  if (state.terrain) viewer.terrain.value = state.terrain;
+  runs.setValues(state.run);
+  brain = null;
+  if (state.brain) {
+    brain = { ...state.brain, rows: state.rows, origin: origin(), source: null };
+    if (state.brain.module) {
+      try {
+        const text = await fetch(state.brain.module).then((r) => (r.ok ? r.text() : Promise.reject(new Error(`HTTP ${r.status}`))));
+        brain.source = text;
+      } catch (error) {
+        showMessage(`the module ${state.brain.module} could not be fetched, so this robot cannot be fine-tuned: ${messageOf(error)}`);
+      }
+    }
+  }
+}
+
+/** The Share button: the state in the address bar and on the clipboard. */
+async function share() {
+  const url = `${location.origin}${location.pathname}#${encodeState(pageState())}`;
+  history.replaceState(null, '', url);
+  const out = el('share-link');
+  out.textContent = url;
+  out.dataset.value = url;
+  try {
+    await navigator.clipboard.writeText(url);
+    out.title = 'copied to the clipboard';
+  } catch {
+    out.title = 'select and copy this link';
+  }
+}
+
+function wire() {
+  for (const p of defaults.presets) presetSelect.append(new Option(p.name, p.rows));
+  for (const c of defaults.controllers) controllerSelect.append(new Option(c));
+  presetSelect.addEventListener('change', () => {
+    if (!presetSelect.value) return;
+    drawing.setRows(presetSelect.value);
+    presetSelect.value = '';
+    editor.draw();
+    bodyChanged();
+  });
+  const undo = () => { if (!running && drawing.undo()) { editor.draw(); bodyChanged(); } };
+  const redo = () => { if (!running && drawing.redo()) { editor.draw(); bodyChanged(); } };
+  el('undo').addEventListener('click', undo);
+  el('redo').addEventListener('click', redo);
+  el('clear').addEventListener('click', () => { drawing.clear(); editor.draw(); bodyChanged(); });
+  el('erase').addEventListener('click', () => {
+    editor.erase = !editor.erase;
+    el('erase').setAttribute('aria-pressed', String(editor.erase));
+  });
+  document.addEventListener('keydown', (e) => {
+    const typing = e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement;
+    if (typing || !(e.ctrlKey || e.metaKey)) return;
+    const key = e.key.toLowerCase();
+    if (key === 'z' && !e.shiftKey) { e.preventDefault(); undo(); }
+    if ((key === 'z' && e.shiftKey) || key === 'y') { e.preventDefault(); redo(); }
+  });
+  rowsInput.addEventListener('change', () => {
+    const problem = drawing.setRows(rowsInput.value);
+    if (problem) { showMessage(problem); rowsInput.value = drawing.rows(); return; }
+    editor.draw();
+    bodyChanged();
+  });
+  controllerSelect.addEventListener('change', () => { updateParams(); scheduleKeep(); });
+  el('share').addEventListener('click', share);
+  for (const input of Object.values(runs.inputs)) input.addEventListener('change', scheduleKeep);
+  viewer.terrain.addEventListener('change', scheduleKeep);
+}
+
+async function start() {
+  wire();
+  viewer.terrain.value = defaults.viewTerrain;
+  viewer.gait.frequency.value = String(defaults.gait.frequency);
+  viewer.gait.phase.value = String(defaults.gait.phase);
+  const fromLink = location.hash.length > 1 ? decodeState(location.hash, defaults.controllers) : null;
+  const kept = loadKept();
+  const fromStorage = kept ? decodeState(kept, defaults.controllers) : null;
+  if (fromLink && 'state' in fromLink) {
+    await restore(fromLink.state);
+  } else if (fromStorage && 'state' in fromStorage) {
+    await restore(fromStorage.state);
+  } else {
+    drawing.setRows(defaults.presets[0].rows);
+    drawing.undoStack = [];
+  }
+  editor.draw();
+  bodyChanged();
+  if (fromLink && 'error' in fromLink) showMessage(`This link could not be opened (${fromLink.error}); your own robot is shown instead.`);
+  modules.listPretrained();
+}
+
+start();

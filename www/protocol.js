@@ -5,11 +5,11 @@
  * import these names instead of spelling strings.
  *
  * Page -> worker
- *   {type: 'load', params}   build a new episode from {@link EpisodeParams}: the phase gait,
- *                            or the run file `params.runFile` (its best individual on its
- *                            own shape, sensor noise seed 0); on failure (bad input, a
- *                            malformed file, another shape) the worker answers 'error' and
- *                            keeps its previous episode
+ *   {type: 'load', params}   build a new episode from {@link EpisodeParams}: the body
+ *                            `params.shape` driven by the phase gait, or by `params.brain`
+ *                            (a controller family and its genome; sensor noise seed 0); on
+ *                            failure (bad input, a genome that does not fit) the worker
+ *                            answers 'error' and keeps its previous episode
  *   {type: 'start'}          run (paced by `speed`)
  *   {type: 'pause'}          stop stepping; the last frame stays on screen
  *   {type: 'reset'}          rebuild the current episode from its parameters (t = 0)
@@ -18,8 +18,7 @@
  * Worker -> page
  *   {type: 'ready'}                      the wasm module is instantiated
  *   {type: 'loaded', params, voxels, controller, cells, terrainXs, terrainYs}
- *                                        a new episode replaced the previous one; params.shape
- *                                        is the run file's rows when a run file drives it;
+ *                                        a new episode replaced the previous one;
  *                                        controller: 'phase gait', 'attention', 'mlp', ...;
  *                                        cells (Uint32Array, 2n): voxel i's grid column at 2i
  *                                        (from the left) and row at 2i + 1 (from the bottom)
@@ -80,20 +79,17 @@ export const DT = 1 / 60;
 
 /**
  * @typedef {object} EpisodeParams
- * @property {string} shape      preset (`biped-4x3`) or rows top first (`1111-1111-1001`)
+ * @property {string} shape      the body as rows, top first (`1111-1111-1001`)
  * @property {string} terrain    terrain name (`hilly-1-10-0`)
- * @property {number} frequency  gait frequency f (Hz)
- * @property {number} phase      gait phase phi (rad per column)
- * @property {RunFileSource | null} runFile  the run file whose controller drives the robot
- *                               (then shape '' means the file's own shape, and f, phi are
- *                               unused), or null for the phase gait
+ * @property {number} frequency  gait frequency f (Hz), used without a brain
+ * @property {number} phase      gait phase phi (rad per column), used without a brain
+ * @property {Brain | null} brain  the controller that drives the body, or null for the gait
  */
 
 /**
- * @typedef {object} RunFileSource
- * @property {string} key    identifies the source in the page's picker
- * @property {string} label  what the picker shows
- * @property {string} text   the run file's JSON (validated by the worker)
+ * @typedef {object} Brain
+ * @property {string} controller  'attention' | 'mlp' | 'mlp-comm'
+ * @property {Float32Array} genome its parameters, for this body
  */
 
 /**
@@ -111,22 +107,6 @@ export const DT = 1 / 60;
  */
 
 /**
- * The episode the page starts with. f = 0.5 Hz, phi = 1.5 is the gait under which the
- * reference simulator's biped walks forward fastest and most reliably on flat ground
- * (mean 1.03 m/s, every run forward: shared/reference/gaits-biped-flat.json).
- */
-export const DEFAULT_PARAMS = Object.freeze({
-  shape: 'biped-4x3',
-  terrain: 'hilly-1-10-0',
-  frequency: 0.5,
-  phase: 1.5,
-  runFile: null,
-});
-
-/** Shape presets offered in the shape field. */
-export const SHAPE_PRESETS = Object.freeze(['biped-4x3', 'comb-7x2', 'biped-6x4', 'comb-14x2']);
-
-/**
  * Checks that a frame's buffers have the documented lengths.
  * @param {Frame} frame
  * @returns {boolean}
@@ -140,24 +120,34 @@ export function frameIsConsistent(frame) {
 }
 
 /*
- * Evolution in the page: the page (evolve.js) drives a GA coordinator worker
+ * Evolution in the page: the page (run-panel.js) drives a GA coordinator worker
  * (coordinator.js), which owns the wasm `Evolution` and a pool of evaluation workers
  * (evaluator.js), each owning its own wasm module.
  *
  * Page -> coordinator
- *   {type: 'start', settings, workers}  begin a run of {@link EvolveSettings} with `workers`
- *                                       evaluation workers; bad settings answer 'error'
+ *   {type: 'start', settings, workers, source}
+ *                                       begin a run of {@link EvolveSettings} with `workers`
+ *                                       evaluation workers: from scratch (source null, as
+ *                                       `vsr evolve`), or fine-tuning the best of the run file
+ *                                       `source` (JSON text, as `vsr finetune --from`); bad
+ *                                       settings answer 'error'
  *   {type: 'pause'} / {type: 'resume'}  stop / go on handing out jobs (jobs under way finish)
+ *   {type: 'step'}                      while paused: run one more generation, then pause
  *   {type: 'stop'}                      end the run now; the unfinished generation is dropped
+ *   {type: 'run-file'}                  send the run so far ('run-file' answer)
+ *   {type: 'crash-worker', index}       make evaluation worker `index` fail as if it crashed
+ *                                       (for tests and demonstrations of the recovery)
  *
  * Coordinator -> page
  *   {type: 'started', planned, workers}  the run began; planned = evaluations it will take
- *   {type: 'generation', record, evaluations, planned, evalsPerSecond, improved, runFile}
+ *   {type: 'generation', record, evaluations, planned, evalsPerSecond, best}
  *                                        a generation was told: record is the run file's
- *                                        generation record (null for non-finite values),
- *                                        improved = its best beat every earlier generation's,
- *                                        runFile = the run so far (JSON text, format 'vsr-run')
+ *                                        generation record (null for non-finite values);
+ *                                        best = {fitness, genome (Float32Array)} when its best
+ *                                        beat every earlier generation's, else null
  *   {type: 'state', paused}              pause state changed
+ *   {type: 'run-file', runFile}          the run so far (JSON text, format 'vsr-run'), or null
+ *   {type: 'recovered', message}         an evaluation worker died; a new one re-runs its job
  *   {type: 'done', stopped, runFile}     the run ended (budget spent, or stopped); runFile is
  *                                        null when not even generation 0 was told
  *   {type: 'error', message}             bad settings or a failed evaluation; the run ended
@@ -165,6 +155,7 @@ export function frameIsConsistent(frame) {
  * Coordinator -> evaluator
  *   {type: 'job', slot, job, genome}     evaluate {@link EvolveJob} `job` with `genome`
  *                                        (Float32Array, transferred); slot = its job index
+ *   {type: 'crash'}                      fail as a crash would (see 'crash-worker')
  * Evaluator -> coordinator
  *   {type: 'ready'}                      the wasm module is instantiated
  *   {type: 'result', slot, fitness}      fitness in m/s, NaN for an exploded episode
@@ -176,7 +167,10 @@ export const ToCoordinator = Object.freeze({
   START: 'start',
   PAUSE: 'pause',
   RESUME: 'resume',
+  STEP: 'step',
   STOP: 'stop',
+  RUN_FILE: 'run-file',
+  CRASH_WORKER: 'crash-worker',
 });
 
 /** Message types sent by the GA coordinator to the page. */
@@ -184,6 +178,8 @@ export const FromCoordinator = Object.freeze({
   STARTED: 'started',
   GENERATION: 'generation',
   STATE: 'state',
+  RUN_FILE: 'run-file',
+  RECOVERED: 'recovered',
   DONE: 'done',
   ERROR: 'error',
 });
@@ -191,19 +187,21 @@ export const FromCoordinator = Object.freeze({
 /** Message types between the coordinator and its evaluation workers. */
 export const EvaluatorMessage = Object.freeze({
   JOB: 'job',
+  CRASH: 'crash',
   READY: 'ready',
   RESULT: 'result',
   ERROR: 'error',
 });
 
 /**
- * @typedef {object} EvolveSettings  a run's configuration, the run file's `config` layout
- * @property {string} shape       rows or preset
- * @property {string} controller  'attention' | 'mlp' | 'mlp-comm'
+ * @typedef {object} EvolveSettings  a run's settings, the options of `vsr evolve` / `vsr finetune`
+ * @property {string} shape       rows
+ * @property {string} controller  'attention' | 'mlp' | 'mlp-comm' (a fine-tuning run uses its source's)
  * @property {number} seed        run seed, integer 0 .. 2^53 - 1
  * @property {number} seconds     simulated seconds per evaluation
  * @property {string} terrain     training terrain family (`hilly-1-10`) or name (`flat`)
- * @property {{population: number, budget_evals: number}} ga  other GA settings: the paper's
+ * @property {number} population  mu = lambda
+ * @property {number} budget      evaluations
  */
 
 /**
@@ -217,11 +215,5 @@ export const EvaluatorMessage = Object.freeze({
  * @property {number} seconds
  */
 
-/** The page's quick settings: a run that shows progress within a minute or two. */
-export const QUICK_EVOLVE = Object.freeze({ population: 20, seconds: 10, budget: 2000 });
-/** The paper's settings (SPEC 9): 100 per generation, 30-s episodes, 30000 evaluations. */
-export const PAPER_EVOLVE = Object.freeze({ population: 100, seconds: 30, budget: 30000 });
-/** Controllers the page evolves. */
-export const EVOLVE_CONTROLLERS = Object.freeze(['attention', 'mlp', 'mlp-comm']);
 /** Largest number of evaluation workers the page starts. */
-export const MAX_EVALUATORS = 8;
+export const MAX_EVALUATORS = 16;

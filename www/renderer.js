@@ -14,6 +14,8 @@ const VIEW_HEIGHT_M = 22;
 /** Camera smoothing time constants (s), larger is lazier: vertical is lazier so hops don't shake the view. */
 const CAMERA_LAG_X_S = 0.3;
 const CAMERA_LAG_Y_S = 1.0;
+/** The view spans at least this many times the robot's size. */
+const ROBOT_VIEW_FACTOR = 2.5;
 const RED = [214, 48, 49];
 const YELLOW = [246, 200, 30];
 const GREEN = [39, 160, 80];
@@ -40,6 +42,8 @@ export class Renderer {
     /** @type {import('./protocol.js').Frame | null} */
     this.frame = null;
     this.camera = { x: 17, y: 6 };
+    /** The last drawn view, for {@link Renderer.pick}. @type {(View & {w: number, h: number, dpr: number}) | null} */
+    this.view = null;
     this.snapCamera = true;
     this.lastDraw = 0;
   }
@@ -61,12 +65,17 @@ export class Renderer {
     const dpr = window.devicePixelRatio || 1;
     const w = Math.round(canvas.clientWidth * dpr);
     const h = Math.round(canvas.clientHeight * dpr);
+    if (w === 0 || h === 0) return;
     if (canvas.width !== w || canvas.height !== h) { canvas.width = w; canvas.height = h; }
     this.followRobot((nowMs - this.lastDraw) / 1000);
     this.lastDraw = nowMs;
-    const s = Math.min(w / VIEW_WIDTH_M, h / VIEW_HEIGHT_M);
+    const box = this.frame ? robotBox(this.frame) : null;
+    const s = Math.min(w / Math.max(VIEW_WIDTH_M, ROBOT_VIEW_FACTOR * (box ? box.right - box.left : 0)),
+      h / Math.max(VIEW_HEIGHT_M, ROBOT_VIEW_FACTOR * (box ? box.top - box.bottom : 0)));
+    if (box && Number.isFinite(box.left) && s > 0) this.keepInView(box, w / s, h / s);
     const view = { s, left: this.camera.x - w / 2 / s, right: this.camera.x + w / 2 / s,
       bottom: this.camera.y - h / 2 / s, top: this.camera.y + h / 2 / s };
+    this.view = { ...view, w, h, dpr };
     ctx.setTransform(1, 0, 0, 1, 0, 0);
     ctx.fillStyle = '#e8f1f8';
     ctx.fillRect(0, 0, w, h);
@@ -82,10 +91,60 @@ export class Renderer {
   followRobot(dt) {
     if (!this.frame) return;
     const target = { x: this.frame.centreX, y: this.frame.centreY };
+    if (!Number.isFinite(this.camera.x) || !Number.isFinite(this.camera.y)) this.snapCamera = true;
     const smooth = (/** @type {number} */ lag) => (this.snapCamera ? 1 : 1 - Math.exp(-Math.max(0, dt) / lag));
     this.camera.x += (target.x - this.camera.x) * smooth(CAMERA_LAG_X_S);
     this.camera.y += (target.y - this.camera.y) * smooth(CAMERA_LAG_Y_S);
     this.snapCamera = false;
+  }
+
+  /**
+   * Moves the camera just enough that the whole robot is on screen with a margin, however
+   * fast it goes (the smoothing alone would let a fast robot slide off the edge).
+   * @param {{left: number, right: number, bottom: number, top: number}} box
+   * @param {number} viewW @param {number} viewH metres visible
+   */
+  keepInView(box, viewW, viewH) {
+    const mx = Math.min(viewW * 0.15, Math.max(0, (viewW - (box.right - box.left)) / 2));
+    const my = Math.min(viewH * 0.15, Math.max(0, (viewH - (box.top - box.bottom)) / 2));
+    this.camera.x = clamp(this.camera.x, box.right + mx - viewW / 2, box.left - mx + viewW / 2);
+    this.camera.y = clamp(this.camera.y, box.top + my - viewH / 2, box.bottom - my + viewH / 2);
+  }
+
+  /**
+   * What a click at (clientX, clientY) points at: a voxel of the robot (`voxel`), or the
+   * empty cell next to voxel `voxel` in grid direction (dx, dy); null when nowhere near.
+   * @param {number} clientX @param {number} clientY
+   * @returns {{voxel: number, dx: number, dy: number} | null}
+   */
+  pick(clientX, clientY) {
+    const { frame, view } = this;
+    if (!frame || !view) return null;
+    const rect = this.canvas.getBoundingClientRect();
+    const px = (clientX - rect.left) * view.dpr;
+    const py = (clientY - rect.top) * view.dpr;
+    const wx = view.left + px / view.s;
+    const wy = view.top - py / view.s;
+    let best = null;
+    for (let i = 0; i < frame.voxels; i++) {
+      const c = frame.corners.subarray(i * CORNER_FLOATS, (i + 1) * CORNER_FLOATS);
+      const cx = (c[0] + c[2] + c[4] + c[6]) / 4;
+      const cy = (c[1] + c[3] + c[5] + c[7]) / 4;
+      // The voxel's own axes: east = SE - SW, north = NW - SW, each about one cell long.
+      const ex = (c[2] - c[0] + c[4] - c[6]) / 2;
+      const ey = (c[3] - c[1] + c[5] - c[7]) / 2;
+      const nx = (c[6] - c[0] + c[4] - c[2]) / 2;
+      const ny = (c[7] - c[1] + c[5] - c[3]) / 2;
+      const u = ((wx - cx) * ex + (wy - cy) * ey) / (ex * ex + ey * ey);
+      const v = ((wx - cx) * nx + (wy - cy) * ny) / (nx * nx + ny * ny);
+      const d = Math.max(Math.abs(u), Math.abs(v));
+      if (d < 1.5 && (!best || d < best.d)) best = { voxel: i, u, v, d };
+    }
+    if (!best) return null;
+    if (best.d <= 0.5) return { voxel: best.voxel, dx: 0, dy: 0 };
+    return Math.abs(best.u) > Math.abs(best.v)
+      ? { voxel: best.voxel, dx: Math.sign(best.u), dy: 0 }
+      : { voxel: best.voxel, dx: 0, dy: Math.sign(best.v) };
   }
 
   /** Faint vertical lines every 5 m so that motion shows even on flat ground. */
@@ -179,6 +238,24 @@ function squarePath(ctx, x, y, angle) {
   ctx.lineTo(x + cos - sin, y + sin + cos);
   ctx.lineTo(x - cos - sin, y - sin + cos);
   ctx.closePath();
+}
+
+/** @param {number} v @param {number} lo @param {number} hi */
+function clamp(v, lo, hi) {
+  return lo > hi ? (lo + hi) / 2 : Math.min(hi, Math.max(lo, v));
+}
+
+/** The axis-aligned box around a frame's voxels (m). @param {import('./protocol.js').Frame} frame */
+function robotBox(frame) {
+  const box = { left: Infinity, right: -Infinity, bottom: Infinity, top: -Infinity };
+  const { corners } = frame;
+  for (let k = 0; k < corners.length; k += 2) {
+    box.left = Math.min(box.left, corners[k]);
+    box.right = Math.max(box.right, corners[k]);
+    box.bottom = Math.min(box.bottom, corners[k + 1]);
+    box.top = Math.max(box.top, corners[k + 1]);
+  }
+  return box;
 }
 
 /** Index of the first element of sorted `xs` that is >= `x`. @param {Float64Array} xs @param {number} x */

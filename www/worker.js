@@ -1,11 +1,12 @@
 // @ts-check
 /**
  * The simulation worker (a module worker). It owns the wasm `Episode` (driven by the
- * phase gait or by a run file's controller: the same handle either way), steps it in
+ * phase gait or by a controller's genome: the same handle either way), steps it in
  * short slices so that control messages are handled promptly, and posts frames whose
  * buffers are transferred, not copied. Message types and buffer layouts: protocol.js.
  */
 import init, { Episode, start as installPanicHook } from './pkg/vsr.js';
+import { loadWasm, messageOf } from './kit.js';
 import { DT, FromWorker, ToWorker } from './protocol.js';
 
 /** Longest run of stepping before yielding to the message queue (ms). */
@@ -19,7 +20,7 @@ const MAX_LAG_S = 0.25;
 /** Window over which the speed figures are measured (wall ms). */
 const RATE_WINDOW_MS = 500;
 
-const ready = init().then(() => installPanicHook());
+const ready = loadWasm(init, installPanicHook);
 
 /** @type {Episode | null} */
 let episode = null;
@@ -42,7 +43,7 @@ self.onmessage = async (event) => {
   try {
     await ready;
   } catch (error) {
-    reportError(`could not load the simulator (wasm): ${messageOf(error)}`, true);
+    reportError(messageOf(error), true);
     return;
   }
   try {
@@ -65,18 +66,17 @@ function handle(msg) {
 }
 
 /**
- * Replaces the episode. Bad parameters or a bad run file throw before anything is
- * replaced, so the previous robot keeps running and the error goes back to the page.
+ * Replaces the episode. Bad parameters or a genome that does not fit throw before anything
+ * is replaced, so the previous robot keeps running and the error goes back to the page.
  * @param {import('./protocol.js').EpisodeParams} next
  */
 function load(next) {
-  const fresh = next.runFile
-    ? Episode.fromRunFile(next.runFile.text, next.terrain, next.shape)
+  const fresh = next.brain
+    ? Episode.fromGenome(next.shape, next.terrain, next.brain.controller, next.brain.genome)
     : new Episode(next.shape, next.terrain, next.frequency, next.phase);
   episode?.free();
   episode = fresh;
-  // A run file's episode keeps its rows, so that a reset or another terrain reuses them.
-  params = { ...next, shape: next.runFile ? fresh.shape : next.shape };
+  params = next;
   const terrainXs = fresh.terrainXs();
   const terrainYs = fresh.terrainYs();
   const cells = fresh.voxelCells();
@@ -160,16 +160,11 @@ function postFrame() {
   const now = performance.now();
   lastFramePosted = now;
   updateRates(episode, now);
-  const corners = episode.corners();
-  const areas = episode.areaRatios();
-  const bodies = episode.cornerBodies();
-  const attention = episode.attention();
+  const frame = episode.frame();
   self.postMessage({
-    type: FromWorker.FRAME, time: episode.time, voxels: episode.voxelCount,
-    centreX: episode.centreX, centreY: episode.centreY,
+    type: FromWorker.FRAME, ...frame,
     simPerWall: running ? rate.simPerWall : NaN, simPerCompute: rate.simPerCompute,
-    corners, areas, bodies, attention,
-  }, [corners.buffer, areas.buffer, bodies.buffer, attention.buffer]);
+  }, [frame.corners.buffer, frame.areas.buffer, frame.bodies.buffer, frame.attention.buffer]);
 }
 
 /** @param {Episode} ep @param {number} now */
@@ -189,12 +184,7 @@ function reportError(message, fatal) {
   self.postMessage({ type: FromWorker.ERROR, message, fatal });
 }
 
-/** @param {unknown} error */
-function messageOf(error) {
-  return error instanceof Error ? error.message : String(error);
-}
-
 ready.then(
   () => self.postMessage({ type: FromWorker.READY }),
-  (error) => reportError(`could not load the simulator (wasm): ${messageOf(error)}`, true),
+  (error) => reportError(messageOf(error), true),
 );

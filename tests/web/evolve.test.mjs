@@ -1,103 +1,81 @@
 // @ts-check
 /**
- * Browser test of evolving in the page (node --test): serves www/, opens it in headless
- * Debian Chromium through playwright-core and checks that
+ * Browser test of evolving in the page (node --test):
  *  - a tiny evolution gives the same run (every generation's statistics and the best genome)
- *    with 1 and with 2 evaluation workers, talking to coordinator.js through protocol.js,
- *    and the same run, bit for bit (every generation's statistics, the best genome and its
- *    fitness), as `vsr evolve` with those settings (needs target/release/vsr; VSR_BIN);
- *  - bad settings (zero budget, a disconnected shape, an empty shape) show a readable message
- *    and start nothing;
- *  - the Evolve button runs a tiny budget: the generation and evaluation figures change, the
- *    run finishes, the best individual drives the robot, and Export downloads a run file
- *    (format "vsr-run") that the page loads back from disk.
- * Saves tests/web/screenshots/evolve.png. Needs `make wasm` (www/pkg) first.
+ *    with 1 and with 2 evaluation workers, and the same run, bit for bit, as `vsr evolve`
+ *    with those settings (needs target/release/vsr; VSR_BIN);
+ *  - an evaluation worker that crashes mid-run is replaced, its job re-run, and the run's
+ *    result is unchanged;
+ *  - bad settings show a readable message and start nothing;
+ *  - Evolve runs a tiny budget live on the chosen number of workers (figures change, the chart
+ *    is against evaluations, the best walks), Export downloads its run file and Import lists
+ *    it back as a module that opens with its own body;
+ *  - Pause holds, Step runs exactly one generation, Stop ends and keeps the run file.
+ * Saves screenshots/evolve.png.
  */
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { mkdir, mkdtemp, readFile, rm } from 'node:fs/promises';
+import { mkdtemp, readFile, rm } from 'node:fs/promises';
 import os from 'node:os';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
-import { serve } from '../../scripts/serve.mjs';
+import { BIN, byTestId, figure, openPage, screenshot, start, waitForFigure, waitForText } from './harness.mjs';
 
-const HERE = path.dirname(fileURLToPath(import.meta.url));
-const SCREENSHOT = path.join(HERE, 'screenshots', 'evolve.png');
-const ROOT = path.resolve(HERE, '..', '..');
-const BIN = path.resolve(process.env.VSR_BIN
-  ?? path.join(process.env.CARGO_TARGET_DIR ?? path.join(ROOT, 'target'), 'release', 'vsr'));
-const CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic',
-  '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run'];
-
-/** @type {import('node:http').Server} */ let server;
-/** @type {import('playwright-core').Browser} */ let browser;
+/** @type {Awaited<ReturnType<typeof start>>} */ let env;
 /** @type {import('playwright-core').Page} */ let page;
-/** Temporary folders to remove at the end. @type {string[]} */
-const temporary = [];
-/** @returns {Promise<string>} a new temporary folder */
-async function tempDir() {
-  const dir = await mkdtemp(path.join(os.tmpdir(), 'vsr-evolve-'));
-  temporary.push(dir);
-  return dir;
-}
-/** Console errors and page errors seen so far. @type {string[]} */
-const problems = [];
+/** @type {string[]} */ let problems;
+/** @type {string} */ let tmp;
 
 before(async () => {
-  const served = await serve({ port: 0 });
-  server = served.server;
-  browser = await chromium.launch({ executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium', args: CHROMIUM_ARGS });
-  page = await browser.newPage({ viewport: { width: 1200, height: 1100 }, acceptDownloads: true });
-  page.on('console', (msg) => { if (msg.type() === 'error') problems.push(`console: ${msg.text()}`); });
-  page.on('pageerror', (error) => problems.push(`page error: ${error.message}`));
-  await page.goto(served.url);
-  await page.waitForFunction(() => /voxels/.test(document.getElementById('status')?.textContent ?? ''),
-    undefined, { timeout: 20_000 });
+  env = await start();
+  ({ page, problems } = await openPage(env.browser, env.url));
+  tmp = await mkdtemp(path.join(os.tmpdir(), 'vsr-evolve-'));
 });
 
 after(async () => {
-  await browser?.close();
-  server?.close();
-  await Promise.all(temporary.map((dir) => rm(dir, { recursive: true, force: true })));
+  await env?.close();
+  await rm(tmp, { recursive: true, force: true });
 });
 
+const TINY = { shape: '1111-1111-1001', controller: 'attention', seed: 3, seconds: 2, terrain: 'flat', population: 6, budget: 18 };
+
 /**
- * Runs a whole evolution in a coordinator worker with `workers` evaluation workers.
- * @param {number} workers
- * @returns {Promise<any>} the final run file, parsed
+ * Runs a whole evolution in a coordinator worker, as the page does.
+ * @param {number} workers @param {boolean} crash make worker 1 crash during generation 1
+ * @returns {Promise<{run: any, recovered: string[]}>}
  */
-function evolveInWorkers(workers) {
-  return page.evaluate(async (workers) => {
+function evolveInWorkers(workers, crash = false) {
+  return page.evaluate(async ([settings, workers, crash]) => {
     const { FromCoordinator, ToCoordinator } = await import('./protocol.js');
     const coordinator = new Worker('./coordinator.js', { type: 'module' });
-    const settings = { shape: 'biped-4x3', controller: 'attention', seed: 3, seconds: 2,
-      terrain: 'flat', ga: { population: 6, budget_evals: 18 } };
+    /** @type {string[]} */
+    const recovered = [];
     const text = await new Promise((resolve, reject) => {
       coordinator.onmessage = ({ data }) => {
+        if (data.type === FromCoordinator.STARTED && crash) coordinator.postMessage({ type: ToCoordinator.CRASH_WORKER, index: 1 });
+        if (data.type === FromCoordinator.RECOVERED) recovered.push(data.message);
         if (data.type === FromCoordinator.DONE) resolve(data.runFile);
         if (data.type === FromCoordinator.ERROR) reject(new Error(data.message));
       };
-      coordinator.postMessage({ type: ToCoordinator.START, settings, workers });
+      coordinator.postMessage({ type: ToCoordinator.START, settings, workers, source: null });
     });
     coordinator.terminate();
-    return JSON.parse(text);
-  }, workers);
+    return { run: JSON.parse(text), recovered };
+  }, /** @type {const} */ ([TINY, workers, crash]));
 }
 
-test('a tiny evolution gives the same run with 1 and with 2 evaluation workers', async () => {
-  const one = await evolveInWorkers(1);
-  const two = await evolveInWorkers(2);
+/** @param {any} run the statistics of every generation, wall time aside */
+const statistics = (run) => run.generations.map((/** @type {any} */ g) => ({ ...g, wall_seconds: 0 }));
+
+test('a tiny evolution is the same with 1 and 2 workers and as vsr evolve, bit for bit', async () => {
+  const one = (await evolveInWorkers(1)).run;
+  const two = (await evolveInWorkers(2)).run;
   assert.equal(one.format, 'vsr-run');
   assert.equal(one.generations.length, 2, 'population 6, 18 evaluations: generations 0 and 1');
   assert.deepEqual([one.timing.threads, two.timing.threads], [1, 2]);
-  const statistics = (/** @type {any} */ run) => run.generations.map((/** @type {any} */ g) => ({ ...g, wall_seconds: 0 }));
   assert.deepEqual(statistics(two), statistics(one));
-  assert.equal(two.best.fitness, one.best.fitness);
-  assert.ok(Number.isFinite(one.best.fitness), `best fitness ${one.best.fitness}`);
   assert.deepEqual(two.best.genome, one.best.genome);
-  const out = path.join(await tempDir(), 'native.json');
+  const out = path.join(tmp, 'native.json');
   execFileSync(BIN, ['evolve', '--shape', 'biped-4x3', '--controller', 'attention', '--evals', '18',
     '--seed', '3', '--seconds', '2', '--terrain', 'flat', '--population', '6', '--threads', '1', '--out', out]);
   const native = JSON.parse(await readFile(out, 'utf8'));
@@ -107,97 +85,105 @@ test('a tiny evolution gives the same run with 1 and with 2 evaluation workers',
   assert.deepEqual(problems, []);
 });
 
-/** Fills the Evolve form. @param {Record<string, string>} values by id suffix */
-async function fillEvolve(values) {
-  for (const [key, value] of Object.entries(values)) await page.locator(`#evolve-${key}`).fill(value);
+test('an evaluation worker that crashes is replaced and the run ends with the same result', async () => {
+  const clean = (await evolveInWorkers(2)).run;
+  const crashed = await evolveInWorkers(2, true);
+  assert.equal(crashed.recovered.length, 1, `one recovery: ${crashed.recovered.join('; ')}`);
+  assert.match(crashed.recovered[0], /worker 2 stopped.*re-runs its job/);
+  assert.deepEqual(statistics(crashed.run), statistics(clean));
+  assert.deepEqual(crashed.run.best.genome, clean.best.genome);
+  assert.deepEqual(problems.filter((p) => !/crashed on request/.test(p)), []);
+  problems.length = 0;
+});
+
+/** Fills the run form. @param {Record<string, string>} values by id suffix */
+async function fillRun(values) {
+  for (const [key, value] of Object.entries(values)) await page.locator(`#run-${key}`).fill(value);
 }
 
 /** Clicks Evolve and expects `pattern` in the message, with no run started. @param {RegExp} pattern */
 async function expectRefused(pattern) {
-  await page.locator('#evolve-start').click();
-  await page.waitForFunction((source) => new RegExp(source, 'i').test(document.getElementById('message')?.textContent ?? ''),
-    pattern.source, { timeout: 10_000 });
-  await page.waitForFunction(() => !(/** @type {HTMLButtonElement} */ (document.getElementById('evolve-start'))).disabled,
-    undefined, { timeout: 10_000 });
-  assert.equal(await page.locator('#evolve-generation').textContent(), '–', 'no generation was run');
+  await byTestId(page, 'evolve').click();
+  await waitForText(page, 'message', pattern);
+  assert.equal(await byTestId(page, 'evolve').isEnabled(), true);
+  assert.equal(await byTestId(page, 'generation').textContent(), '–', 'no generation was run');
 }
 
 test('bad settings show a readable message and start nothing', async () => {
-  await fillEvolve({ population: '6', seconds: '2', budget: '0', terrain: 'flat' });
+  await fillRun({ population: '6', seconds: '2', budget: '0', terrain: 'flat' });
   await expectRefused(/budget must be a whole number/);
-  await fillEvolve({ budget: '24', seconds: '' }); // a number field holds '' for NaN
+  await fillRun({ budget: '24', seconds: '' });
   await expectRefused(/episode seconds must be a positive number/);
-  await fillEvolve({ seconds: '2' });
-  await page.locator('#shape').fill('101');
-  await expectRefused(/shape/);
-  await page.locator('#shape').fill('');
-  await expectRefused(/shape/); // the panel's 'type a shape', or the simulation's 'no voxels'
-  await page.locator('#shape').fill('biped-4x3');
-  await page.locator('#shape').press('Enter');
-  await page.waitForFunction(() => /^10 voxels/.test(document.getElementById('status')?.textContent ?? ''),
-    undefined, { timeout: 10_000 });
-  assert.ok(problems.every((p) => !/page error/.test(p)), problems.join('\n'));
-});
-
-test('Evolve runs a tiny budget live, the best walks, Export downloads its run file', async () => {
-  await fillEvolve({ population: '6', seconds: '2', budget: '60', seed: '5', terrain: 'hilly-1-10' });
-  await page.locator('#evolve-start').click();
-  await page.waitForFunction(() => Number(document.getElementById('evolve-generation')?.dataset.value) >= 1,
-    undefined, { timeout: 60_000, polling: 50 });
-  const midway = Number(await page.locator('#evolve-evaluations').getAttribute('data-value'));
-  await page.waitForFunction(() => document.body.dataset.evolve === 'finished', undefined, { timeout: 120_000 });
-  const evaluations = Number(await page.locator('#evolve-evaluations').getAttribute('data-value'));
-  assert.ok(midway >= 18 && midway <= evaluations, `evaluations went from ${midway} to ${evaluations}`);
-  assert.equal(evaluations, 66, 'population 6 + 5 generations of 12 for a budget of 60');
-  assert.equal(await page.locator('#evolve-generation').getAttribute('data-value'), '5');
-  assert.match(String(await page.locator('#evolve-evaluations').textContent()), /^66 \/ 66$/);
-  assert.match(String(await page.locator('#evolve-rate').textContent()), /evaluations\/s/);
-  assert.ok(Number.isFinite(Number(await page.locator('#evolve-best').getAttribute('data-value'))));
-  await page.waitForFunction(() => /^10 voxels, attention$/.test(document.getElementById('status')?.textContent ?? ''),
-    undefined, { timeout: 10_000 });
-  assert.match(await page.locator('#source option:checked').innerText(), /evolved best/);
-  await page.locator('#attention-panel').waitFor({ state: 'visible', timeout: 10_000 });
-
-  const [download] = await Promise.all([page.waitForEvent('download'), page.locator('#evolve-export').click()]);
-  assert.equal(download.suggestedFilename(), 'evolved-attention-seed5.json');
-  const file = path.join(await tempDir(), download.suggestedFilename());
-  await download.saveAs(file);
-  const run = JSON.parse(await readFile(file, 'utf8'));
-  assert.equal(run.format, 'vsr-run');
-  assert.equal(run.version, 1);
-  assert.equal(run.generations.length, 6);
-  assert.equal(run.config.seed, 5);
-  assert.equal(run.best.genome.length, 73);
-
-  await page.locator('#source').selectOption('gait');
-  await page.waitForFunction(() => /phase gait$/.test(document.getElementById('status')?.textContent ?? ''));
-  await page.locator('#run-file').setInputFiles(file);
-  await page.waitForFunction(() => /^10 voxels, attention$/.test(document.getElementById('status')?.textContent ?? ''),
-    undefined, { timeout: 10_000 });
-  await page.waitForTimeout(1500);
-  await mkdir(path.dirname(SCREENSHOT), { recursive: true });
-  await page.screenshot({ path: SCREENSHOT, fullPage: true });
+  await fillRun({ seconds: '2', workers: '0' });
+  await expectRefused(/workers must be a whole number from 1/);
+  await fillRun({ workers: '1', terrain: 'hills' });
+  await expectRefused(/neither a terrain family/);
+  assert.doesNotMatch(String(await byTestId(page, 'message').textContent()), /line \d+ column/, 'no parser internals');
+  await fillRun({ terrain: 'flat' });
   assert.deepEqual(problems, []);
 });
 
-test('Pause holds the evaluations, Resume goes on, Stop ends the run and keeps its run file', async () => {
-  await fillEvolve({ population: '20', seconds: '10', budget: '30000', seed: '2' });
-  await page.locator('#evolve-start').click();
-  await page.waitForFunction(() => Number(document.getElementById('evolve-generation')?.dataset.value) >= 0,
-    undefined, { timeout: 60_000, polling: 50 });
-  await page.locator('#evolve-pause').click();
-  await page.waitForFunction(() => document.body.dataset.evolve === 'paused', undefined, { timeout: 10_000 });
-  await page.waitForTimeout(3000); // jobs under way finish; no new ones start
-  const held = await page.locator('#evolve-evaluations').getAttribute('data-value');
-  await page.waitForTimeout(1500);
-  assert.equal(await page.locator('#evolve-evaluations').getAttribute('data-value'), held, 'no generation while paused');
-  assert.equal(await page.locator('#evolve-pause').textContent(), 'Resume');
-  await page.locator('#evolve-pause').click();
-  await page.waitForFunction((held) => document.getElementById('evolve-evaluations')?.dataset.value !== held,
-    held, { timeout: 60_000 });
-  await page.locator('#evolve-stop').click();
-  await page.waitForFunction(() => document.body.dataset.evolve === 'stopped', undefined, { timeout: 10_000 });
-  assert.equal(await page.locator('#evolve-export').isEnabled(), true, 'the stopped run can be exported');
-  assert.equal(await page.locator('#evolve-start').isEnabled(), true);
+test('Evolve runs live on the chosen workers, the best walks, Export and Import round-trip', async () => {
+  await fillRun({ population: '6', seconds: '2', budget: '60', seed: '5', terrain: 'hilly-1-10', workers: '1' });
+  await byTestId(page, 'evolve').click();
+  await waitForText(page, 'run-status', /on 1 worker$/);
+  await waitForFigure(page, 'run-generation', 'v >= 1');
+  const midway = await figure(page, 'run-evaluations');
+  await page.waitForFunction(() => document.body.dataset.run === 'finished', undefined, { timeout: 120_000 });
+  assert.ok(midway >= 18 && midway <= 66, `evaluations went from ${midway}`);
+  assert.equal(await figure(page, 'run-evaluations'), 66, 'population 6 + 5 generations of 12 for a budget of 60');
+  assert.match(String(await byTestId(page, 'evaluations').textContent()), /^66 \/ 66$/);
+  const best = await figure(page, 'run-best');
+  assert.ok(best >= await figure(page, 'run-gen-best'), 'best so far is at least the last generation\'s best');
+  await waitForText(page, 'status', /^10 voxels, attention$/);
+  await waitForText(page, 'driver', /evolved best/);
+  await page.locator('#attention-panel').waitFor({ state: 'visible', timeout: 10_000 });
+
+  const [download] = await Promise.all([page.waitForEvent('download'), byTestId(page, 'export').click()]);
+  assert.equal(download.suggestedFilename(), 'evolved-attention-seed5.json');
+  const file = path.join(tmp, download.suggestedFilename());
+  await download.saveAs(file);
+  const run = JSON.parse(await readFile(file, 'utf8'));
+  assert.equal(run.format, 'vsr-run');
+  assert.equal(run.generations.length, 6);
+  assert.equal(run.best.genome.length, 73);
+  execFileSync(BIN, ['validate', '--genome', file], { stdio: 'ignore' }); // the CLI reads what the page wrote
+
+  await byTestId(page, 'preset').selectOption({ label: 'comb-7x2' });
+  await waitForText(page, 'status', /^11 voxels/);
+  await byTestId(page, 'import').setInputFiles(file);
+  await waitForText(page, 'module-details', /attention, 73 genes, evolved on 1111-1111-1001/);
+  await page.locator('#module-open').click();
+  await waitForText(page, 'status', /^10 voxels, attention$/);
+  assert.equal(await page.locator('#rows').inputValue(), '1111-1111-1001');
+  await byTestId(page, 'import').setInputFiles({ name: 'broken.json', mimeType: 'application/json', buffer: Buffer.from('{"format": "vsr-run", "version": 1, "config": {') });
+  await waitForText(page, 'message', /broken.json is not a run file/);
+  assert.match(String(await page.locator('#status').textContent()), /^10 voxels, attention$/, 'the robot keeps walking');
+  await screenshot(page, 'evolve.png');
+  assert.deepEqual(problems, []);
+});
+
+test('Pause holds, Step runs one generation, Stop ends the run and keeps its run file', async () => {
+  await fillRun({ population: '4', seconds: '1', budget: '30000', seed: '2', workers: '2' });
+  await byTestId(page, 'evolve').click();
+  await waitForFigure(page, 'run-generation', 'v >= 0');
+  await byTestId(page, 'pause').click();
+  await page.waitForFunction(() => document.body.dataset.run === 'paused', undefined, { timeout: 10_000 });
+  await page.waitForTimeout(1500); // the generation under way finishes; no new one starts
+  const held = await figure(page, 'run-generation');
+  await page.waitForTimeout(1000);
+  assert.equal(await figure(page, 'run-generation'), held, 'no generation while paused');
+  assert.equal(await byTestId(page, 'pause').textContent(), 'Resume');
+  await byTestId(page, 'step').click();
+  await waitForFigure(page, 'run-generation', `v === ${held + 1}`, 30_000);
+  await page.waitForFunction(() => document.body.dataset.run === 'paused', undefined, { timeout: 10_000 });
+  await page.waitForTimeout(1000);
+  assert.equal(await figure(page, 'run-generation'), held + 1, 'one step, one generation');
+  await byTestId(page, 'pause').click();
+  await waitForFigure(page, 'run-generation', `v > ${held + 1}`, 30_000);
+  await byTestId(page, 'stop').click();
+  await page.waitForFunction(() => document.body.dataset.run === 'stopped', undefined, { timeout: 10_000 });
+  assert.equal(await byTestId(page, 'export').isEnabled(), true, 'the stopped run can be exported');
+  assert.equal(await byTestId(page, 'evolve').isEnabled(), true);
   assert.deepEqual(problems, []);
 });

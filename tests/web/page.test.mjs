@@ -1,195 +1,161 @@
 // @ts-check
 /**
- * Browser test of the page (node --test): serves www/ on a free port, opens it in
- * headless Debian Chromium through playwright-core, and checks that the real wasm
- * simulation runs in the worker and is drawn: the robot's x changes, the speed figure
- * appears, bad input shows a readable message while the previous robot keeps going,
- * and nothing is logged as an error; a pretrained attention controller walks and its
- * attention matrices are drawn, and a malformed run file from disk is refused while it
- * keeps walking. Saves tests/web/screenshots/page.png and attention.png.
- * Needs `make wasm` (www/pkg) first; CHROMIUM overrides /usr/bin/chromium.
+ * Browser test of drawing and watching (node --test), as a person uses the page: draw a
+ * robot cell by cell and see the parameter count change and the robot in the viewer become
+ * the drawing; draw a disconnected shape and read the message with Evolve and Fine-tune
+ * off; undo and redo by button and keyboard; drag to draw and right-drag to erase; type
+ * rows; a bad terrain keeps the robot walking; Hold / Play / Restart; click a voxel of the
+ * walking robot to remove it. Saves screenshots/draw.png and screenshots/page.png.
  */
 import assert from 'node:assert/strict';
-import { mkdir } from 'node:fs/promises';
-import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
-import { serve } from '../../scripts/serve.mjs';
+import { byTestId, clickCells, dragCells, figure, openPage, screenshot, start, waitForFigure, waitForText } from './harness.mjs';
 
-const HERE = path.dirname(fileURLToPath(import.meta.url));
-const SCREENSHOT = path.join(HERE, 'screenshots', 'page.png');
-const ATTENTION_SCREENSHOT = path.join(HERE, 'screenshots', 'attention.png');
-const ATTENTION_RUN = 'pretrained/biped-4x3-attention-seed1.json';
-const CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic',
-  '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run'];
-
-/** @type {import('node:http').Server} */ let server;
-/** @type {import('playwright-core').Browser} */ let browser;
+/** @type {Awaited<ReturnType<typeof start>>} */ let env;
 /** @type {import('playwright-core').Page} */ let page;
-/** Console errors, page errors and failed requests seen so far. @type {string[]} */
-const problems = [];
+/** @type {string[]} */ let problems;
 
 before(async () => {
-  const served = await serve({ port: 0 });
-  server = served.server;
-  browser = await chromium.launch({ executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium', args: CHROMIUM_ARGS });
-  page = await browser.newPage({ viewport: { width: 1200, height: 900 } });
-  page.on('console', (msg) => { if (msg.type() === 'error') problems.push(`console: ${msg.text()}`); });
-  page.on('pageerror', (error) => problems.push(`page error: ${error.message}`));
-  page.on('requestfailed', (req) => problems.push(`request failed: ${req.url()}`));
-  page.on('worker', (worker) => worker.on('console', (msg) => {
-    if (msg.type() === 'error') problems.push(`worker console: ${msg.text()}`);
-  }));
-  await page.goto(served.url);
+  env = await start();
+  ({ page, problems } = await openPage(env.browser, env.url));
 });
 
-after(async () => {
-  await browser?.close();
-  server?.close();
-});
+after(async () => { await env?.close(); });
 
-/** @param {string} id @returns {Promise<number>} the raw number behind a live figure */
-async function figure(id) {
-  return Number(await page.locator(`#${id}`).getAttribute('data-value'));
-}
+/** The parameter count shown for the chosen controller. */
+async function params() { return figure(page, 'param-count'); }
 
-/** Waits until simulated time reaches `t` seconds. @param {number} t */
-async function waitForSimTime(t) {
-  await page.waitForFunction((t) => Number(document.getElementById('sim-time')?.dataset.value) >= t,
-    t, { timeout: 30_000, polling: 100 });
-}
-
-test('the biped walks: its x changes and the speed figure appears', async () => {
-  await waitForSimTime(2);
-  const x0 = await figure('robot-x');
-  await waitForSimTime(6);
-  const x1 = await figure('robot-x');
-  assert.ok(Number.isFinite(x0) && Number.isFinite(x1), `x is a number (${x0}, ${x1})`);
-  assert.ok(Math.abs(x1 - x0) > 0.2, `x moved by more than 0.2 m in 4 simulated s (from ${x0} to ${x1})`);
-  const rate = await figure('sim-rate');
-  assert.ok(rate > 0.2, `sim s / wall s is shown and positive (${rate})`);
-  assert.match(await page.locator('#sim-rate').innerText(), /sim s \/ wall s/);
-  await mkdir(path.dirname(SCREENSHOT), { recursive: true });
-  await page.screenshot({ path: SCREENSHOT });
+test('the default biped walks: its x changes and the speed figure appears', async () => {
+  await waitForFigure(page, 'sim-time', 'v >= 2', 30_000);
+  const x0 = await figure(page, 'robot-x');
+  await waitForFigure(page, 'sim-time', 'v >= 5', 30_000);
+  const x1 = await figure(page, 'robot-x');
+  assert.ok(Math.abs(x1 - x0) > 0.2, `x moved by more than 0.2 m in 3 simulated s (from ${x0} to ${x1})`);
+  assert.ok(await figure(page, 'sim-rate') > 0.2);
+  assert.equal(await params(), 73, 'attention on the biped: 73 parameters');
   assert.deepEqual(problems, []);
 });
 
-test('an invalid shape shows a readable message and the previous robot keeps going', async () => {
-  await page.locator('#shape').fill('11x1-1001');
-  await page.locator('#shape').press('Enter');
-  const message = page.locator('#message');
-  await message.waitFor({ state: 'visible', timeout: 10_000 });
-  assert.match(await message.innerText(), /invalid shape/i);
-  const t0 = await figure('sim-time');
-  await waitForSimTime(t0 + 1);
-  const voxels = await page.evaluate(() => document.getElementById('status')?.textContent);
-  assert.match(String(voxels), /^10 voxels/, 'still the 10-voxel biped');
-  assert.ok(await canvasHasRobotColours(), 'the canvas still shows the robot');
+test('draw a robot cell by cell: the parameter count follows and the viewer walks the drawing', async () => {
+  await page.locator('#clear').click();
+  await waitForText(page, 'message', /draw at least one voxel/);
+  assert.equal(await byTestId(page, 'evolve').isDisabled(), true, 'nothing to evolve');
+  await clickCells(page, [[0, 0]]);
+  assert.equal(await params(), 32 + 4 + 1);
+  await clickCells(page, [[1, 0], [2, 0]]);
+  assert.equal(await params(), 32 + 4 * 3 + 1);
+  await byTestId(page, 'controller').selectOption('mlp');
+  assert.equal(await params(), 4 * 3 + 1, 'MLP: 4n + 1');
+  await byTestId(page, 'controller').selectOption('mlp-comm');
+  assert.equal(await params(), (8 * 3 + 1) * 5, 'MLP-Comm: (8n + 1) x 5');
+  await byTestId(page, 'controller').selectOption('attention');
+  await clickCells(page, [[0, 1]]);
+  assert.equal(await params(), 32 + 4 * 4 + 1);
+  await waitForText(page, 'status', /^4 voxels, phase gait$/);
+  assert.equal(await page.locator('#rows').inputValue(), '100-111');
+  assert.equal(await byTestId(page, 'message').isHidden(), true, 'a valid drawing clears the message');
+  assert.equal(await byTestId(page, 'evolve').isEnabled(), true);
   assert.deepEqual(problems, []);
 });
 
-test('a preset loads, then an invalid terrain shows a readable message and keeps it', async () => {
-  await page.locator('#shape').fill('comb-7x2');
-  await page.locator('#shape').press('Enter');
-  await page.waitForFunction(() => /^11 voxels/.test(document.getElementById('status')?.textContent ?? ''),
-    undefined, { timeout: 10_000 });
-  assert.equal(await page.locator('#message').isHidden(), true, 'a valid shape clears the message');
+test('a disconnected drawing names its pieces and turns Evolve off; undo and redo', async () => {
+  await clickCells(page, [[5, 0], [7, 3]]);
+  await waitForText(page, 'message', /3 separate pieces/);
+  assert.match(String(await page.locator('#shape-status').textContent()), /each piece has its own colour/);
+  assert.equal(await byTestId(page, 'evolve').isDisabled(), true);
+  assert.equal(await byTestId(page, 'finetune').isDisabled(), true);
+  assert.equal(await byTestId(page, 'load-pretrained').isDisabled(), true);
+  assert.match(String(await page.locator('#status').textContent()), /^4 voxels/, 'the last valid robot keeps walking');
+  await page.locator('#undo').click();
+  await waitForText(page, 'message', /2 separate pieces/);
+  await page.keyboard.press('Control+z');
+  await page.waitForFunction(() => document.querySelector('[data-testid="message"]')?.hasAttribute('hidden'));
+  assert.equal(await byTestId(page, 'evolve').isEnabled(), true);
+  await page.keyboard.press('Control+Shift+z');
+  await waitForText(page, 'message', /2 separate pieces/);
+  await page.locator('#redo').click();
+  await waitForText(page, 'message', /3 separate pieces/);
+  await page.locator('#undo').click();
+  await page.locator('#undo').click();
+  await page.waitForFunction(() => document.querySelector('[data-testid="message"]')?.hasAttribute('hidden'));
+  assert.equal(await page.locator('#rows').inputValue(), '100-111');
+  await screenshot(page, 'draw.png');
+  assert.deepEqual(problems, []);
+});
+
+test('drag draws a row, right-drag erases it, typed rows and presets replace the drawing', async () => {
+  await dragCells(page, [0, 2], [3, 2]);
+  assert.equal(await page.locator('#rows').inputValue(), '1111-1000-1110');
+  await dragCells(page, [0, 2], [3, 2], 'right');
+  assert.equal(await page.locator('#rows').inputValue(), '100-111', 'erased again; the drawing is cropped to its cells');
+  await page.locator('#erase').click();
+  await clickCells(page, [[2, 0]]);
+  assert.equal(await page.locator('#rows').inputValue(), '10-11', 'erase mode removes with the left button too');
+  await page.locator('#erase').click();
+  await page.locator('#rows').fill('111-101');
+  await page.locator('#rows').press('Enter');
+  await waitForText(page, 'status', /^5 voxels/);
+  await page.locator('#rows').fill('1x1');
+  await page.locator('#rows').press('Enter');
+  await waitForText(page, 'message', /rows hold only 1/);
+  assert.equal(await page.locator('#rows').inputValue(), '111-101', 'a refused entry shows the drawing again');
+  await byTestId(page, 'preset').selectOption({ label: 'comb-7x2' });
+  await waitForText(page, 'status', /^11 voxels/);
+  assert.equal(await params(), 32 + 4 * 11 + 1);
+  assert.deepEqual(problems, []);
+});
+
+test('a bad terrain shows a readable message and the robot keeps walking', async () => {
   await page.locator('#terrain').fill('hilly-one');
   await page.locator('#terrain').press('Enter');
-  await page.waitForFunction(() => /invalid terrain/i.test(document.getElementById('message')?.textContent ?? ''),
-    undefined, { timeout: 10_000 });
-  const t0 = await figure('sim-time');
-  await waitForSimTime(t0 + 0.5);
+  await waitForText(page, 'message', /terrain/i);
+  const t0 = await figure(page, 'sim-time');
+  await waitForFigure(page, 'sim-time', `v >= ${t0 + 0.5}`, 20_000);
   assert.match(String(await page.locator('#status').textContent()), /^11 voxels/, 'still the comb');
-  assert.deepEqual(problems, []);
-});
-
-test('Pause stops the clock, Reset starts the episode again, Start resumes', async () => {
-  await page.locator('#pause').click();
-  await page.waitForFunction(() => document.body.dataset.running === 'false', undefined, { timeout: 5_000 });
-  const paused = await figure('sim-time');
-  await page.waitForTimeout(500);
-  assert.equal(await figure('sim-time'), paused, 'time stands still while paused');
-  await page.locator('#reset').click();
-  await page.waitForFunction(() => Number(document.getElementById('sim-time')?.dataset.value) < 0.1,
-    undefined, { timeout: 5_000 });
-  await page.locator('#start').click();
-  await waitForSimTime(1);
-  assert.deepEqual(problems, []);
-});
-
-test('the pretrained attention biped walks and its attention matrices are drawn', async () => {
-  await page.locator('#terrain').fill('hilly-1-10-0'); // the previous test left a bad terrain typed
+  await page.locator('#terrain').fill('hilly-1-10-0');
   await page.locator('#terrain').press('Enter');
-  await page.locator('#source').selectOption(ATTENTION_RUN, { timeout: 10_000 });
-  await page.waitForFunction(() => /^10 voxels, attention$/.test(document.getElementById('status')?.textContent ?? ''),
-    undefined, { timeout: 10_000 });
-  assert.equal(await page.locator('#shape').inputValue(), '1111-1111-1001', 'the run file\'s shape is shown');
-  assert.equal(await page.locator('#frequency').isDisabled(), true, 'the gait fields are unused');
-  await page.locator('#attention-panel').waitFor({ state: 'visible', timeout: 10_000 });
-  const t0 = await figure('sim-time');
-  const x0 = await figure('robot-x');
-  await waitForSimTime(t0 + 3);
-  const x1 = await figure('robot-x');
-  assert.ok(x1 - x0 > 1, `the evolved biped walks forward more than 1 m in 3 s (from ${x0} to ${x1})`);
-  const colours = await attentionColours();
-  assert.ok(colours.red > 50 && colours.blue > 50, `the heat maps show both signs (${JSON.stringify(colours)})`);
-  await page.screenshot({ path: ATTENTION_SCREENSHOT, fullPage: true });
   assert.deepEqual(problems, []);
 });
 
-test('a malformed run file or another shape shows a message and the attention biped keeps going; a valid file loads', async () => {
-  await page.locator('#run-file').setInputFiles({ name: 'broken.json', mimeType: 'application/json',
-    buffer: Buffer.from('{"format": "vsr-run", "version": 1, "config": {') });
-  await page.waitForFunction(() => /not valid JSON/.test(document.getElementById('message')?.textContent ?? ''),
-    undefined, { timeout: 10_000 });
-  assert.equal(await page.locator('#source').inputValue(), ATTENTION_RUN, 'the running source stays chosen');
-  await page.locator('#shape').fill('comb-7x2');
-  await page.locator('#shape').press('Enter');
-  await page.waitForFunction(() => /needs shape 1111-1111-1001/.test(document.getElementById('message')?.textContent ?? ''),
-    undefined, { timeout: 10_000 });
-  const t0 = await figure('sim-time');
-  const x0 = await figure('robot-x');
-  await waitForSimTime(t0 + 2);
-  assert.ok(await figure('robot-x') - x0 > 0.5, 'the attention biped still walks');
-  assert.match(String(await page.locator('#status').textContent()), /^10 voxels, attention$/);
-  assert.equal(await page.locator('#attention-panel').isVisible(), true);
-  await page.locator('#run-file').setInputFiles(path.join(HERE, '..', '..', 'pretrained', 'comb-7x2-attention-finetuned-seed1.json'));
-  await page.waitForFunction(() => /^11 voxels, attention$/.test(document.getElementById('status')?.textContent ?? ''),
-    undefined, { timeout: 10_000 });
-  assert.match(await page.locator('#source option:checked').innerText(), /from disk/, 'a valid file from disk drives the robot');
-  await page.locator('#source').selectOption('gait');
-  await page.locator('#attention-panel').waitFor({ state: 'hidden', timeout: 10_000 });
+test('Hold stops the clock, Restart walk begins again, Play resumes', async () => {
+  await page.locator('#sim-hold').click();
+  await page.waitForFunction(() => document.body.dataset.running === 'false', undefined, { timeout: 5_000 });
+  const held = await figure(page, 'sim-time');
+  await page.waitForTimeout(500);
+  assert.equal(await figure(page, 'sim-time'), held, 'time stands still while held');
+  await page.locator('#sim-restart').click();
+  await waitForFigure(page, 'sim-time', 'v < 0.1', 5_000);
+  await page.locator('#sim-play').click();
+  await waitForFigure(page, 'sim-time', 'v >= 1', 20_000);
   assert.deepEqual(problems, []);
 });
 
-/** Counts strongly red and strongly blue pixels of the attention canvas. */
-async function attentionColours() {
+test('clicking a voxel of the walking robot removes it; the same controller keeps driving it', async () => {
+  await byTestId(page, 'preset').selectOption({ label: 'biped-4x3' });
+  await waitForText(page, 'status', /^10 voxels/);
+  await page.locator('#sim-hold').click();
+  await page.waitForFunction(() => document.body.dataset.running === 'false');
+  await page.waitForTimeout(300);
+  const centre = await robotCentre();
+  await byTestId(page, 'viewer').click({ position: centre });
+  await waitForText(page, 'status', /^9 voxels/);
+  assert.notEqual(await page.locator('#rows').inputValue(), '1111-1111-1001');
+  await page.locator('#sim-play').click();
+  await screenshot(page, 'page.png');
+  assert.deepEqual(problems, []);
+});
+
+/** Where the robot is on the viewer: the centre of its coloured pixels (CSS px). */
+async function robotCentre() {
   return page.evaluate(() => {
-    const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById('attention'));
+    const canvas = /** @type {HTMLCanvasElement} */ (document.querySelector('[data-testid="viewer"]'));
     const data = canvas.getContext('2d')?.getImageData(0, 0, canvas.width, canvas.height).data ?? [];
-    const counts = { red: 0, blue: 0 };
-    for (let i = 0; i < data.length; i += 4) {
-      const [r, g, b, a] = [data[i], data[i + 1], data[i + 2], data[i + 3]];
-      if (a > 200 && r > 150 && g < 120 && b < 120) counts.red++;
-      if (a > 200 && b > 150 && r < 120 && g < 160) counts.blue++;
-    }
-    return counts;
-  });
-}
-
-/** True when some canvas pixels have a voxel colour (strongly red, yellow or green). */
-async function canvasHasRobotColours() {
-  return page.evaluate(() => {
-    const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById('scene'));
-    const data = canvas.getContext('2d')?.getImageData(0, 0, canvas.width, canvas.height).data;
-    if (!data) return false;
-    let coloured = 0;
+    let [sx, sy, n] = [0, 0, 0];
     for (let i = 0; i < data.length; i += 4) {
       const [r, g, b] = [data[i], data[i + 1], data[i + 2]];
-      if (Math.max(r, g) > 140 && b < 100) coloured++;
+      if (Math.max(r, g) > 140 && b < 100 && Math.abs(r - g) > 20) { const p = i / 4; sx += p % canvas.width; sy += Math.floor(p / canvas.width); n++; }
     }
-    return coloured > 200;
+    const scale = canvas.width / canvas.clientWidth;
+    return { x: sx / n / scale, y: sy / n / scale };
   });
 }

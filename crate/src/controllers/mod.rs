@@ -14,6 +14,7 @@
 mod attention;
 mod frozen;
 mod kind;
+mod layout;
 mod mlp;
 mod mlp_comm;
 mod slow;
@@ -22,6 +23,7 @@ mod topology;
 pub use attention::{Attention, ATTENTION_DIM, ATTENTION_PARAMS};
 pub use frozen::FrozenAttention;
 pub use kind::{build, ControllerKind};
+pub use layout::{remap_genome, GenomeLayout};
 pub use mlp::Mlp;
 pub use mlp_comm::{MlpComm, MLP_COMM_OUTPUTS};
 pub use slow::SlowAttention;

@@ -201,15 +201,11 @@ impl EvolutionConfig {
                 self.ga.frozen_prefix
             )));
         }
-        let expected = source.controller.param_count(source.shape.voxel_count());
-        if source.genome.len() != expected {
-            return Err(Error::Input(format!(
-                "the source genome has {} genes, a {} controller for {} needs {expected}",
-                source.genome.len(),
-                source.controller,
-                source.shape.to_rows()
-            )));
-        }
+        source.controller.check_genome(
+            "the source genome",
+            source.shape.voxel_count(),
+            &source.genome,
+        )?;
         Ok(())
     }
 }

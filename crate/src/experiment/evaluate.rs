@@ -14,15 +14,7 @@ pub fn controller_for(
     shape: &Shape,
     genome: &[f32],
 ) -> Result<Box<dyn Controller>> {
-    let expected = kind.param_count(shape.voxel_count());
-    if genome.len() != expected {
-        return Err(Error::Input(format!(
-            "a {kind} controller for shape {} ({} voxels) has {expected} parameters, the genome has {}",
-            shape.to_rows(),
-            shape.voxel_count(),
-            genome.len()
-        )));
-    }
+    kind.check_genome("the genome", shape.voxel_count(), genome)?;
     let mut controller = build(kind, &topology(shape));
     controller.set_params(genome)?;
     Ok(controller)

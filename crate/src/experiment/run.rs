@@ -172,8 +172,18 @@ impl RunFile {
 
     /// Parses and validates a run file (see the module doc for what is checked).
     pub fn from_json(text: &str) -> Result<RunFile> {
-        let value: serde_json::Value = serde_json::from_str(text)
-            .map_err(|e| Error::Input(format!("the run file is not valid JSON: {e}")))?;
+        let value: serde_json::Value = serde_json::from_str(text).map_err(|e| {
+            Error::Input(match e.classify() {
+                serde_json::error::Category::Eof => {
+                    "the run file is cut off: it ends before its JSON is complete".to_string()
+                }
+                _ => format!(
+                    "the run file is not valid JSON (near line {}, character {})",
+                    e.line(),
+                    e.column()
+                ),
+            })
+        })?;
         check_header(&value)?;
         for path in [
             "/config/controller",
@@ -184,8 +194,12 @@ impl RunFile {
                 name.parse::<ControllerKind>()?;
             }
         }
-        let mut run: RunFile = serde_json::from_value(value)
-            .map_err(|e| Error::Input(format!("the run file is malformed: {e}")))?;
+        let mut run: RunFile = serde_json::from_value(value).map_err(|e| {
+            Error::Input(format!(
+                "the run file is malformed: {}",
+                without_position(&e)
+            ))
+        })?;
         run.validate()?;
         run.best.derive_slow_weights();
         Ok(run)
@@ -196,8 +210,8 @@ impl RunFile {
         self.best.validate("the best genome")?;
         if self.best.controller != self.config.controller || self.best.shape != self.config.shape {
             return Err(Error::Input(format!(
-                "the best genome is a {} controller for {}, but the run evolved a {} controller \
-                 for {}",
+                "the best genome is the {} controller of {}, but the run evolved the {} \
+                 controller of {}",
                 self.best.controller,
                 self.best.shape.to_rows(),
                 self.config.controller,
@@ -241,21 +255,16 @@ fn check_header(value: &serde_json::Value) -> Result<()> {
 
 /// A genome must have the controller's length for the shape, and only finite genes.
 fn check_genome(what: &str, kind: ControllerKind, shape: &Shape, genome: &[f32]) -> Result<()> {
-    let expected = kind.param_count(shape.voxel_count());
-    if genome.len() != expected {
-        return Err(Error::Input(format!(
-            "{what} has {} genes, but a {kind} controller for {} ({} voxels) has {expected}",
-            genome.len(),
-            shape.to_rows(),
-            shape.voxel_count()
-        )));
-    }
-    match genome.iter().position(|g| !g.is_finite()) {
-        Some(i) => Err(Error::Input(format!(
-            "gene {i} of {what} is {}, genes must be finite numbers",
-            genome[i]
-        ))),
-        None => Ok(()),
+    kind.check_genome(what, shape.voxel_count(), genome)
+}
+
+/// A serde_json message without its " at line L column C" tail, which means nothing to a
+/// person who did not write the file by hand.
+fn without_position(e: &serde_json::Error) -> String {
+    let text = e.to_string();
+    match text.rfind(" at line ") {
+        Some(i) => text[..i].to_string(),
+        None => text,
     }
 }
 

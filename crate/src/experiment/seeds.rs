@@ -13,6 +13,9 @@ pub enum Purpose {
     Genetics,
     /// Validation terrains (index = which of the unseen terrains).
     Validation,
+    /// Genes of voxels added to a body that already has a controller (generation = the
+    /// edit's number, index 0).
+    Remap,
 }
 
 impl Purpose {
@@ -23,6 +26,7 @@ impl Purpose {
             Purpose::SensorNoise => 2,
             Purpose::Genetics => 3,
             Purpose::Validation => 4,
+            Purpose::Remap => 5,
         }
     }
 }

@@ -124,37 +124,20 @@ impl Shape {
 
     /// Parses the row notation, reporting the first bad row.
     fn from_row_string(spec: &str) -> Result<Self> {
-        let rows: Vec<&str> = spec.split('-').map(str::trim).collect();
-        let width = rows[0].chars().count();
-        for (r, row) in rows.iter().enumerate() {
-            if let Some((c, ch)) = row.chars().enumerate().find(|(_, ch)| !"01".contains(*ch)) {
-                return Err(Error::Shape(format!(
-                    "row {} has '{ch}' at column {}; use 1 for a voxel and 0 for an empty cell",
-                    r + 1,
-                    c + 1
-                )));
-            }
-            let len = row.chars().count();
-            if len != width {
-                return Err(Error::Shape(format!(
-                    "row {} has {len} cells, row 1 has {width}",
-                    r + 1
-                )));
-            }
-        }
-        let (width, height) = (width, rows.len());
-        check_side("wide", width)?;
-        check_side("tall", height)?;
-        let mut cells = vec![false; width * height];
-        for (r, row) in rows.iter().enumerate() {
-            let y = height - 1 - r;
-            for (x, ch) in row.chars().enumerate() {
-                cells[y * width + x] = ch == '1';
-            }
-        }
+        let (width, height, cells) = grid_from_rows(spec)?;
         Self::from_grid(width, height, cells)
     }
 
+    /// The pieces of a drawing given as rows (top first): each piece lists its cells (x from
+    /// the left, y from the bottom), pieces in the order of their lowest, leftmost cell.
+    /// Unlike [`Shape::parse`] a drawing in several pieces is fine here; bad rows are not.
+    pub fn pieces(rows: &str) -> Result<Vec<Vec<(usize, usize)>>> {
+        let (width, height, cells) = grid_from_rows(rows.trim())?;
+        Ok(label_pieces(width, height, &cells))
+    }
+}
+
+impl Shape {
     /// Validates a bottom-up grid and numbers its voxels.
     fn from_grid(width: usize, height: usize, cells: Vec<bool>) -> Result<Self> {
         let voxels: Vec<(usize, usize)> = (0..height)
@@ -181,7 +164,7 @@ impl Shape {
             voxels,
             index,
         };
-        let pieces = shape.piece_count();
+        let pieces = label_pieces(width, height, &shape.cells).len();
         if pieces > 1 {
             return Err(Error::Shape(format!(
                 "the shape is in {pieces} separate pieces; every voxel must touch another \
@@ -190,32 +173,74 @@ impl Shape {
         }
         Ok(shape)
     }
+}
 
-    /// Number of 4-connected components, by flood fill over voxel indices.
-    fn piece_count(&self) -> usize {
-        let mut seen = vec![false; self.voxels.len()];
-        let mut pieces = 0;
-        for start in 0..self.voxels.len() {
-            if seen[start] {
-                continue;
-            }
-            pieces += 1;
-            seen[start] = true;
-            let mut stack = vec![start];
-            while let Some(i) = stack.pop() {
-                for n in self.neighbours(i).into_iter().flatten() {
-                    if !seen[n] {
-                        seen[n] = true;
-                        stack.push(n);
-                    }
+/// The 4-connected pieces of a grid (bottom row first), each as its cells in flood order,
+/// pieces in the order of their first cell in voxel order.
+fn label_pieces(width: usize, height: usize, cells: &[bool]) -> Vec<Vec<(usize, usize)>> {
+    let mut seen = vec![false; cells.len()];
+    let mut pieces = Vec::new();
+    for start in 0..cells.len() {
+        if !cells[start] || seen[start] {
+            continue;
+        }
+        seen[start] = true;
+        let mut piece = Vec::new();
+        let mut stack = vec![start];
+        while let Some(c) = stack.pop() {
+            let (x, y) = (c % width, c / width);
+            piece.push((x, y));
+            let near = [
+                (x + 1 < width).then(|| c + 1),
+                (x > 0).then(|| c - 1),
+                (y + 1 < height).then(|| c + width),
+                (y > 0).then(|| c - width),
+            ];
+            for n in near.into_iter().flatten() {
+                if cells[n] && !seen[n] {
+                    seen[n] = true;
+                    stack.push(n);
                 }
             }
         }
-        pieces
+        pieces.push(piece);
     }
+    pieces
 }
 
-/// Parses the `WxH` of `worm-WxH` / `box-WxH`.
+/// Width, height and cells (bottom row first) of rows written top first.
+fn grid_from_rows(spec: &str) -> Result<(usize, usize, Vec<bool>)> {
+    let rows: Vec<&str> = spec.split('-').map(str::trim).collect();
+    let width = rows[0].chars().count();
+    for (r, row) in rows.iter().enumerate() {
+        if let Some((c, ch)) = row.chars().enumerate().find(|(_, ch)| !"01".contains(*ch)) {
+            return Err(Error::Shape(format!(
+                "row {} has '{ch}' at column {}; use 1 for a voxel and 0 for an empty cell",
+                r + 1,
+                c + 1
+            )));
+        }
+        let len = row.chars().count();
+        if len != width {
+            return Err(Error::Shape(format!(
+                "row {} has {len} cells, row 1 has {width}",
+                r + 1
+            )));
+        }
+    }
+    let (width, height) = (width, rows.len());
+    check_side("wide", width)?;
+    check_side("tall", height)?;
+    let mut cells = vec![false; width * height];
+    for (r, row) in rows.iter().enumerate() {
+        let y = height - 1 - r;
+        for (x, ch) in row.chars().enumerate() {
+            cells[y * width + x] = ch == '1';
+        }
+    }
+    Ok((width, height, cells))
+}
+
 fn parse_size(spec: &str, size: &str) -> Result<(usize, usize)> {
     let parsed = size
         .split_once('x')

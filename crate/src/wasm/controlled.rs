@@ -2,11 +2,13 @@
 //! of a run file (`experiment::evaluate::replay`), and each voxel's attention matrix.
 //! The step and frame getters are the phase-gait episode's (`episode.rs`), unchanged.
 
-use wasm_bindgen::prelude::{wasm_bindgen, JsError};
+use js_sys::{Float32Array, Object, Reflect};
+use wasm_bindgen::prelude::{wasm_bindgen, JsError, JsValue};
 
 use super::Episode;
-use crate::experiment::evaluate::replay;
-use crate::experiment::RunFile;
+use crate::controllers::ControllerKind;
+use crate::experiment::evaluate::{controller_for, replay};
+use crate::experiment::{Episode as CoreEpisode, Policy, RunFile};
 use crate::simulation::{Shape, Terrain};
 
 /// Seed of the sensor noise in episodes built from run files (as `vsr evaluate` defaults).
@@ -34,6 +36,29 @@ impl Episode {
         })
     }
 
+    /// Builds the episode of a genome on a drawn body: a `controller` (`attention`, `mlp`,
+    /// `mlp-comm`) with parameters `genome` drives the body `rows` on `terrain`, with sensor
+    /// noise seed 0. A genome that does not fit the body throws an `Error` saying so.
+    #[wasm_bindgen(js_name = fromGenome)]
+    pub fn from_genome(
+        rows: &str,
+        terrain: &str,
+        controller: &str,
+        genome: &[f32],
+    ) -> Result<Episode, JsError> {
+        let kind: ControllerKind = controller.parse()?;
+        let shape = Shape::parse(rows)?;
+        let brain = controller_for(kind, &shape, genome)?;
+        let terrain = Terrain::parse(terrain)?;
+        let inner =
+            CoreEpisode::with_policy(&shape, terrain, Policy::Brain(brain), Some(NOISE_SEED));
+        Ok(Episode {
+            inner,
+            shape,
+            controller: kind.to_string(),
+        })
+    }
+
     /// Each voxel's current attention matrix, length 16n: for voxel i at `16i`, 4 rows of
     /// 4 (row-major), rows and columns in sensor order area, vx, vy, touch, values in
     /// -1 .. 1. Empty when the controller has no attention (phase gait, MLP, MLP-Comm).
@@ -41,5 +66,36 @@ impl Episode {
         self.inner
             .attention()
             .map_or_else(Vec::new, <[f32]>::to_vec)
+    }
+}
+
+#[wasm_bindgen]
+impl Episode {
+    /// The whole current frame as one object, so the worker crosses the boundary once per
+    /// frame: `{time, voxels, centreX, centreY, corners, areas, bodies, attention}`, the
+    /// buffers as `Float32Array`s with the layouts of the getters above (attention empty
+    /// when the controller has none).
+    pub fn frame(&self) -> Result<Object, JsError> {
+        let frame = Object::new();
+        let set = |key: &str, value: JsValue| {
+            Reflect::set(&frame, &JsValue::from_str(key), &value)
+                .map(|_| ())
+                .map_err(|_| JsError::new("could not build a frame object"))
+        };
+        set("time", self.time().into())?;
+        set("voxels", (self.voxel_count() as f64).into())?;
+        set("centreX", self.centre_x().into())?;
+        set("centreY", self.centre_y().into())?;
+        set("corners", Float32Array::from(&self.corners()[..]).into())?;
+        set("areas", Float32Array::from(&self.area_ratios()[..]).into())?;
+        set(
+            "bodies",
+            Float32Array::from(&self.corner_bodies()[..]).into(),
+        )?;
+        set(
+            "attention",
+            Float32Array::from(&self.attention()[..]).into(),
+        )?;
+        Ok(frame)
     }
 }

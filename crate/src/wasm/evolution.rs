@@ -1,31 +1,65 @@
 //! [`Evolution`]: a JS handle on one `experiment::Evolution` (ask/tell), owned by the page's
 //! GA coordinator worker, and [`evaluate_job`], the one evaluation an evaluation worker runs.
 //!
-//! `ask()` returns the pending generation's jobs as JSON (everything but the genomes: the
+//! `ask()` returns the pending generation's jobs as plain objects (everything but the genomes: the
 //! noise seed as a decimal string, since a JS number cannot hold every 64-bit seed) and
 //! `genomes()` their genomes as one flat `Float32Array` (job i at `i * genomeLength`), so
 //! genes cross the boundary as f32 bits, never through decimal text. The coordinator hands
 //! each job to any worker and calls `tell` with the fitness values in job order: the result
 //! never depends on which worker evaluated what.
 
-use serde::Serialize;
-use wasm_bindgen::prelude::{wasm_bindgen, JsError};
+use serde::{Deserialize, Serialize};
+use wasm_bindgen::prelude::{wasm_bindgen, JsError, JsValue};
 
+use super::page::{seed_from, to_js};
 use crate::controllers::ControllerKind;
-use crate::experiment::{Evolution as CoreEvolution, EvolutionConfig, Job, Timing};
+use crate::experiment::{
+    source_of, Evolution as CoreEvolution, EvolutionConfig, Job, RunFile, Timing, TrainingTerrain,
+};
 use crate::simulation::{Shape, Terrain};
 
-/// What `ask()` reports per job (the genome travels separately, see the module doc).
-#[derive(Serialize)]
+/// One evaluation as `ask()` describes it and `evaluateJob` takes it (the genome travels
+/// separately, see the module doc).
+#[derive(Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
-struct JobInfo<'a> {
+struct JobInfo {
     generation: u32,
     index: u32,
     shape: String,
     controller: String,
-    terrain: &'a str,
+    terrain: String,
     noise_seed: String,
     seconds: f64,
+}
+
+/// A run's settings as the page sends them: what `vsr evolve` / `vsr finetune` take as
+/// options (`--shape --controller --seed --seconds --terrain --population --evals`).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Settings {
+    shape: String,
+    #[serde(default)]
+    controller: Option<String>,
+    seed: f64,
+    seconds: f64,
+    terrain: String,
+    population: usize,
+    budget: u64,
+}
+
+impl Settings {
+    fn read(value: JsValue) -> Result<Settings, JsError> {
+        serde_wasm_bindgen::from_value(value)
+            .map_err(|e| JsError::new(&format!("bad run settings: {e}")))
+    }
+
+    /// The options every run applies on top of its paper configuration, as the CLI does.
+    fn apply(&self, mut config: EvolutionConfig) -> Result<EvolutionConfig, JsError> {
+        config.seconds = self.seconds;
+        config.terrain = TrainingTerrain::parse(&self.terrain)?;
+        config.ga.population = self.population;
+        Ok(config)
+    }
 }
 
 /// An evolutionary run in progress, driven by the page's coordinator.
@@ -37,29 +71,43 @@ pub struct Evolution {
 
 #[wasm_bindgen]
 impl Evolution {
-    /// Starts a run from its configuration, as JSON in the run file's `config` layout
-    /// (`shape`, `controller`, `seed`, `seconds`, `terrain`, `ga`: missing GA fields take
-    /// the paper's values). A malformed or invalid configuration throws an `Error`.
+    /// Starts a run from scratch, as `vsr evolve` does, from `{shape, controller, seed,
+    /// seconds, terrain, population, budget}`. Invalid settings throw an `Error`.
     #[wasm_bindgen(constructor)]
-    pub fn new(config: &str) -> Result<Evolution, JsError> {
-        let config: EvolutionConfig = serde_json::from_str(config)
-            .map_err(|e| JsError::new(&format!("bad evolution settings: {e}")))?;
-        let inner = CoreEvolution::new(config)?;
+    pub fn new(settings: JsValue) -> Result<Evolution, JsError> {
+        let s = Settings::read(settings)?;
+        let controller: ControllerKind = s.controller.as_deref().unwrap_or("").parse()?;
+        let shape = Shape::parse(&s.shape)?;
+        let config = EvolutionConfig::paper(shape, controller, s.budget, seed_from(s.seed)?);
+        Evolution::start(s.apply(config)?)
+    }
+
+    /// Starts a fine-tuning run, as `vsr finetune --from RUN` does: the best individual of
+    /// the run file `run_file` lends its 32 attention genes, frozen, to the body
+    /// `settings.shape` (the controller is the source's).
+    pub fn finetune(run_file: &str, settings: JsValue) -> Result<Evolution, JsError> {
+        let s = Settings::read(settings)?;
+        let source = source_of(&RunFile::from_json(run_file)?);
+        let shape = Shape::parse(&s.shape)?;
+        let config = EvolutionConfig::finetune(source, shape, s.budget, seed_from(s.seed)?);
+        Evolution::start(s.apply(config)?)
+    }
+
+    fn start(config: EvolutionConfig) -> Result<Evolution, JsError> {
         Ok(Evolution {
-            inner,
+            inner: CoreEvolution::new(config)?,
             pending: Vec::new(),
         })
     }
 
-    /// The pending generation's jobs as a JSON array of `{generation, index, shape,
-    /// controller, terrain, noiseSeed (decimal string), seconds}`; `[]` once the budget is
-    /// spent. Asking again before `tell` returns the same jobs.
-    pub fn ask(&mut self) -> Result<String, JsError> {
+    /// The pending generation's jobs, an array of `{generation, index, shape, controller,
+    /// terrain, noiseSeed (decimal string), seconds}`; empty once the budget is spent.
+    /// Asking again before `tell` returns the same jobs.
+    pub fn ask(&mut self) -> Result<JsValue, JsError> {
         self.pending = self.inner.next_batch();
         let infos: Vec<JobInfo> = self.pending.iter().map(job_info).collect();
-        serde_json::to_string(&infos).map_err(|e| JsError::new(&e.to_string()))
+        to_js(&infos)
     }
-
     /// The pending jobs' genomes, flat: job i at `i * genomeLength`.
     pub fn genomes(&self) -> Vec<f32> {
         self.pending
@@ -75,10 +123,10 @@ impl Evolution {
     }
 
     /// Reports the pending jobs' fitness values in job order (NaN for an exploded episode)
-    /// with the wall seconds since the start, and returns the generation's record as JSON
+    /// with the wall seconds since the start, and returns the generation's record
     /// (`generation`, `evaluations`, `best`, `q3`, `median`, `q1`, `worst`, `wall_seconds`;
     /// non-finite values as null). A wrong count, or no pending batch, throws and changes nothing.
-    pub fn tell(&mut self, fitness: &[f64], wall_seconds: f64) -> Result<String, JsError> {
+    pub fn tell(&mut self, fitness: &[f64], wall_seconds: f64) -> Result<JsValue, JsError> {
         if self.pending.is_empty() {
             return Err(JsError::new(
                 "tell called with no jobs pending: call ask first",
@@ -86,7 +134,7 @@ impl Evolution {
         }
         let record = self.inner.tell(fitness, wall_seconds)?;
         self.pending.clear();
-        serde_json::to_string(&record).map_err(|e| JsError::new(&e.to_string()))
+        to_js(&record)
     }
 
     /// Evaluations told so far.
@@ -127,61 +175,51 @@ impl Evolution {
     }
 }
 
-fn job_info(job: &Job) -> JobInfo<'_> {
+fn job_info(job: &Job) -> JobInfo {
     JobInfo {
         generation: job.generation,
         index: job.index,
         shape: job.shape.to_rows(),
         controller: job.controller.to_string(),
-        terrain: &job.terrain,
+        terrain: job.terrain.clone(),
         noise_seed: job.noise_seed.to_string(),
         seconds: job.seconds,
     }
 }
 
-/// Evaluates one job: `genome` drives `shape` (rows or preset) with a `controller`
-/// (`attention`, `mlp`, ...) on `terrain` (a full name such as `hilly-1-10-4821`) for
-/// `seconds`, with sensor noise seeded by `noise_seed` (a decimal string). Returns the
-/// fitness (velocity, m/s), NaN when the episode exploded; bad input throws an `Error`.
+/// Evaluates one job, as `ask()` described it, with its `genome`: the genome drives the
+/// job's shape with its controller on its terrain for its seconds, with sensor noise seeded
+/// by its `noiseSeed`. Returns the fitness (velocity, m/s), NaN when the episode exploded;
+/// bad input throws an `Error`.
 #[wasm_bindgen(js_name = evaluateJob)]
-pub fn evaluate_job(
-    genome: &[f32],
-    shape: &str,
-    controller: &str,
-    terrain: &str,
-    noise_seed: &str,
-    seconds: f64,
-) -> Result<f64, JsError> {
-    let shape = Shape::parse(shape)?;
-    let controller: ControllerKind = controller.parse()?;
-    let noise_seed: u64 = noise_seed.trim().parse().map_err(|_| {
+pub fn evaluate_job(job: JsValue, genome: &[f32]) -> Result<f64, JsError> {
+    let job: JobInfo =
+        serde_wasm_bindgen::from_value(job).map_err(|e| JsError::new(&format!("bad job: {e}")))?;
+    let shape = Shape::parse(&job.shape)?;
+    let controller: ControllerKind = job.controller.parse()?;
+    let noise_seed: u64 = job.noise_seed.trim().parse().map_err(|_| {
         JsError::new(&format!(
-            "noise seed {noise_seed:?} is not an unsigned 64-bit integer"
+            "noise seed {:?} is not an unsigned 64-bit integer",
+            job.noise_seed
         ))
     })?;
-    Terrain::parse(terrain)?;
-    let expected = controller.param_count(shape.voxel_count());
-    if genome.len() != expected {
+    Terrain::parse(&job.terrain)?;
+    controller.check_genome("the job's genome", shape.voxel_count(), genome)?;
+    if !(job.seconds > 0.0 && job.seconds.is_finite()) {
         return Err(JsError::new(&format!(
-            "a {controller} controller for {} has {expected} genes, the job has {}",
-            shape.to_rows(),
-            genome.len()
-        )));
-    }
-    if !(seconds > 0.0 && seconds.is_finite()) {
-        return Err(JsError::new(&format!(
-            "episode seconds must be positive, got {seconds}"
+            "episode seconds must be positive, got {}",
+            job.seconds
         )));
     }
     let job = Job {
-        generation: 0,
-        index: 0,
+        generation: job.generation,
+        index: job.index,
         genome: genome.to_vec(),
         shape,
         controller,
-        terrain: terrain.to_string(),
+        terrain: job.terrain,
         noise_seed,
-        seconds,
+        seconds: job.seconds,
     };
     Ok(job.fitness())
 }

@@ -13,10 +13,14 @@ mod bench;
 mod controlled;
 mod episode;
 mod evolution;
+mod page;
 
 pub use bench::bench_episode;
 pub use episode::Episode;
 pub use evolution::{evaluate_job, Evolution};
+pub use page::{
+    check_genome, check_shape, defaults, describe_run, fresh_seed, remap, run_genome, transplant,
+};
 
 use wasm_bindgen::prelude::wasm_bindgen;
 

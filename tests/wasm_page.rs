@@ -1,0 +1,141 @@
+//! The page's main-thread calls, under Node (`wasm-pack test --node`): the defaults come from
+//! the core, a drawing's check names its pieces and parameter counts, a pretrained attention
+//! module transplants onto another body keeping its 32 attention genes (as `vsr finetune`
+//! starts), an MLP module is refused on another body, an edit of a walking robot keeps the
+//! genes of surviving voxels, and a fine-tuning run never touches the attention block.
+#![cfg(target_arch = "wasm32")]
+
+use vsr::experiment::RunFile;
+use vsr::wasm::{check_shape, defaults, describe_run, remap, transplant, Episode, Evolution};
+use wasm_bindgen::JsValue;
+use wasm_bindgen_test::wasm_bindgen_test;
+
+const ATTENTION_RUN: &str = include_str!("../pretrained/biped-4x3-attention-seed1.json");
+const MLP_RUN: &str = include_str!("../pretrained/biped-4x3-mlp-seed1.json");
+
+fn json(value: JsValue) -> serde_json::Value {
+    serde_wasm_bindgen::from_value(value).expect("plain data")
+}
+
+fn to_js(value: serde_json::Value) -> JsValue {
+    let serializer = serde_wasm_bindgen::Serializer::json_compatible();
+    serde::Serialize::serialize(&value, &serializer).expect("a JS value")
+}
+
+#[wasm_bindgen_test]
+fn defaults_come_from_the_core() {
+    let d = json(defaults().expect("defaults"));
+    assert_eq!(d["grid"]["width"], 20);
+    assert_eq!(d["grid"]["height"], 10);
+    assert_eq!(d["paper"]["population"], 100);
+    assert_eq!(d["paper"]["budget"], 30000);
+    assert_eq!(d["presets"][0]["rows"], "1111-1111-1001");
+    assert_eq!(d["attentionGenes"], 32);
+}
+
+#[wasm_bindgen_test]
+fn a_check_names_the_pieces_and_counts_parameters() {
+    let ok = json(check_shape("1111-1111-1001").expect("checked"));
+    assert_eq!(ok["ok"], true);
+    assert_eq!(ok["voxels"], 10);
+    assert_eq!(ok["params"][0], serde_json::json!(["attention", 73]));
+    assert_eq!(ok["params"][2], serde_json::json!(["mlp-comm", 405]));
+    let split = json(check_shape("101-101").expect("checked"));
+    assert_eq!(split["ok"], false);
+    assert_eq!(split["pieces"].as_array().map(Vec::len), Some(2));
+    assert!(split["message"]
+        .as_str()
+        .unwrap()
+        .contains("2 separate pieces"));
+    let empty = json(check_shape("").expect("checked"));
+    assert_eq!(empty["ok"], false);
+    assert_eq!(empty["voxels"], 0);
+}
+
+#[wasm_bindgen_test]
+fn a_transplant_keeps_the_attention_block_and_redraws_the_rest() {
+    let run = RunFile::from_json(ATTENTION_RUN).expect("pretrained");
+    let comb = transplant(ATTENTION_RUN, "comb-7x2", 1.0).expect("transplanted");
+    assert_eq!(comb.len(), 77);
+    assert_eq!(comb[..32], run.best.genome[..32]);
+    assert!(comb[32..].iter().all(|g| (-1.0..=1.0).contains(g)));
+    assert_eq!(
+        comb,
+        transplant(ATTENTION_RUN, "1111111-1010101", 1.0).unwrap()
+    );
+    let own = transplant(ATTENTION_RUN, "biped-4x3", 1.0).expect("its own body");
+    assert_eq!(own, run.best.genome);
+    let episode = Episode::from_genome("comb-7x2", "flat", "attention", &comb);
+    assert_eq!(episode.expect("walks").voxel_count(), 11);
+    assert!(transplant(MLP_RUN, "comb-7x2", 1.0).is_err());
+    assert_eq!(
+        transplant(MLP_RUN, "biped-4x3", 1.0)
+            .expect("own body")
+            .len(),
+        41
+    );
+    let info = json(describe_run(ATTENTION_RUN).expect("described"));
+    assert_eq!(info["controller"], "attention");
+    assert_eq!(info["genes"], 73);
+}
+
+#[wasm_bindgen_test]
+fn an_edit_keeps_surviving_voxels_genes() {
+    let run = RunFile::from_json(ATTENTION_RUN).expect("pretrained");
+    let genome = &run.best.genome;
+    // Remove the biped's top-right voxel (index 9 of 10, the last cell of the top row).
+    let edited = remap(
+        "attention",
+        genome,
+        "1111-1111-1001",
+        "1110-1111-1001",
+        0,
+        0,
+        1.0,
+        1,
+    );
+    let edited = edited.expect("remapped");
+    assert_eq!(edited.len(), 32 + 4 * 9 + 1);
+    assert_eq!(edited[..32], genome[..32]);
+    for r in 0..4 {
+        assert_eq!(
+            edited[32 + 9 * r..32 + 9 * r + 9],
+            genome[32 + 10 * r..32 + 10 * r + 9]
+        );
+    }
+    assert!(remap(
+        "attention",
+        &genome[..70],
+        "biped-4x3",
+        "comb-7x2",
+        0,
+        0,
+        1.0,
+        1
+    )
+    .is_err());
+}
+
+#[wasm_bindgen_test]
+fn fine_tuning_never_changes_the_attention_block() {
+    let settings = to_js(
+        serde_json::json!({"shape": "comb-7x2", "seed": 2, "seconds": 1.0,
+        "terrain": "flat", "population": 4, "budget": 12}),
+    );
+    let mut evolution = Evolution::finetune(ATTENTION_RUN, settings).expect("valid");
+    let run = RunFile::from_json(ATTENTION_RUN).expect("pretrained");
+    assert_eq!(evolution.genome_length(), 77);
+    for _ in 0..2 {
+        let jobs = js_sys::Array::from(&evolution.ask().expect("ask")).length() as usize;
+        let genomes = evolution.genomes();
+        for j in 0..jobs {
+            assert_eq!(
+                genomes[j * 77..j * 77 + 32],
+                run.best.genome[..32],
+                "job {j}"
+            );
+        }
+        let fitness: Vec<f64> = (0..jobs).map(|j| j as f64).collect();
+        evolution.tell(&fitness, 0.0).expect("told");
+    }
+}

@@ -1,0 +1,129 @@
+// @ts-check
+/**
+ * What every browser test shares: serve www/ (and pretrained/) on a free port, open it in
+ * headless Debian Chromium through playwright-core, collect console errors, page errors
+ * and failed requests (from workers too), and act on the page as a person does: draw cells
+ * on the editor, read the live figures (their raw numbers in data-value), wait for text.
+ * Needs `make wasm` (www/pkg) first; CHROMIUM overrides /usr/bin/chromium.
+ */
+import { mkdir } from 'node:fs/promises';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+import { serve } from '../../scripts/serve.mjs';
+
+const HERE = path.dirname(fileURLToPath(import.meta.url));
+export const ROOT = path.resolve(HERE, '..', '..');
+export const SCREENSHOTS = path.join(HERE, 'screenshots');
+/** The native CLI, for comparisons (VSR_BIN overrides). */
+export const BIN = path.resolve(process.env.VSR_BIN
+  ?? path.join(process.env.CARGO_TARGET_DIR ?? path.join(ROOT, 'target'), 'release', 'vsr'));
+const CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic',
+  '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run'];
+
+/**
+ * Serves the page and opens a browser.
+ * @returns {Promise<{url: string, browser: import('playwright-core').Browser, close: () => Promise<void>}>}
+ */
+export async function start() {
+  const served = await serve({ port: 0 });
+  const browser = await chromium.launch({ executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium', args: CHROMIUM_ARGS });
+  return {
+    url: served.url,
+    browser,
+    close: async () => { await browser.close(); served.server.close(); },
+  };
+}
+
+/**
+ * A new page (its own storage) at `url`, with its problems collected, once the robot walks.
+ * @param {import('playwright-core').Browser} browser @param {string} url
+ * @param {{width?: number, height?: number}} [size]
+ */
+export async function openPage(browser, url, size = {}) {
+  const context = await browser.newContext({ viewport: { width: size.width ?? 1300, height: size.height ?? 1100 }, acceptDownloads: true });
+  const page = await context.newPage();
+  /** @type {string[]} */
+  const problems = [];
+  page.on('console', (msg) => { if (msg.type() === 'error') problems.push(`console: ${msg.text()}`); });
+  page.on('pageerror', (error) => problems.push(`page error: ${error.message}`));
+  page.on('requestfailed', (req) => problems.push(`request failed: ${req.url()}`));
+  page.on('worker', (worker) => worker.on('console', (msg) => {
+    if (msg.type() === 'error') problems.push(`worker console: ${msg.text()}`);
+  }));
+  await page.goto(url);
+  await waitForText(page, 'status', /voxels/);
+  return { page, problems, context };
+}
+
+/** @param {import('playwright-core').Page} page @param {string} testid */
+export function byTestId(page, testid) {
+  return page.locator(`[data-testid="${testid}"]`);
+}
+
+/** The raw number behind a figure. @param {import('playwright-core').Page} page @param {string} id an element id */
+export async function figure(page, id) {
+  return Number(await page.locator(`#${id}`).getAttribute('data-value'));
+}
+
+/**
+ * Waits until the text of #id matches `pattern`.
+ * @param {import('playwright-core').Page} page @param {string} id @param {RegExp} pattern @param {number} [timeout]
+ */
+export async function waitForText(page, id, pattern, timeout = 20_000) {
+  await page.waitForFunction(([id, source, flags]) => new RegExp(source, flags).test(document.getElementById(id)?.textContent ?? ''),
+    [id, pattern.source, pattern.flags], { timeout, polling: 50 });
+}
+
+/**
+ * Waits until the number behind #id satisfies `test` (evaluated in the page as `v => ...`).
+ * @param {import('playwright-core').Page} page @param {string} id @param {string} condition e.g. 'v >= 2'
+ * @param {number} [timeout]
+ */
+export async function waitForFigure(page, id, condition, timeout = 60_000) {
+  await page.waitForFunction(([id, condition]) => {
+    const v = Number(document.getElementById(id)?.dataset.value);
+    return Number.isFinite(v) && Function('v', `return ${condition}`)(v);
+  }, [id, condition], { timeout, polling: 50 });
+}
+
+/**
+ * Clicks grid cells of the editor, x from the left and y from the bottom; `button` 'right'
+ * erases.
+ * @param {import('playwright-core').Page} page @param {[number, number][]} cells
+ * @param {'left' | 'right'} [button]
+ */
+export async function clickCells(page, cells, button = 'left') {
+  const box = await byTestId(page, 'editor').boundingBox();
+  if (!box) throw new Error('the editor is not visible');
+  const side = box.width / 20;
+  for (const [x, y] of cells) {
+    await page.mouse.click(box.x + (x + 0.5) * side, box.y + box.height - (y + 0.5) * side, { button });
+  }
+}
+
+/**
+ * Drags across the editor from one cell to another in a straight line.
+ * @param {import('playwright-core').Page} page @param {[number, number]} from @param {[number, number]} to
+ * @param {'left' | 'right'} [button]
+ */
+export async function dragCells(page, from, to, button = 'left') {
+  const box = await byTestId(page, 'editor').boundingBox();
+  if (!box) throw new Error('the editor is not visible');
+  const side = box.width / 20;
+  const at = (/** @type {[number, number]} */ [x, y]) => [box.x + (x + 0.5) * side, box.y + box.height - (y + 0.5) * side];
+  const [x0, y0] = at(from);
+  const [x1, y1] = at(to);
+  await page.mouse.move(x0, y0);
+  await page.mouse.down({ button });
+  await page.mouse.move(x1, y1, { steps: 12 });
+  await page.mouse.up({ button });
+}
+
+/** Saves a full-page screenshot under tests/web/screenshots/. @param {import('playwright-core').Page} page @param {string} name */
+export async function screenshot(page, name) {
+  await mkdir(SCREENSHOTS, { recursive: true });
+  const file = path.join(SCREENSHOTS, name);
+  await page.screenshot({ path: file, fullPage: true });
+  return file;
+}

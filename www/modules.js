@@ -1,0 +1,125 @@
+// @ts-check
+/**
+ * The module list: the controllers in pretrained/ (from its manifest: source shape,
+ * controller, budget, validation median), run files imported from disk, and the runs
+ * finished in this page. A module can be put on the drawn robot ("Load onto my robot":
+ * SPEC 10's transplant for attention) or opened with its own body. Files are checked by
+ * the core when read; a bad file shows a message and changes nothing.
+ */
+import { describeRun } from './core.js';
+import { messageOf } from './kit.js';
+
+/** Where the served pretrained run files are (scripts/serve.mjs mounts pretrained/). */
+const PRETRAINED_DIR = 'pretrained/';
+
+/** @typedef {{key: string, label: string, text: string}} Module  a run file and its name */
+
+/**
+ * @typedef {object} ModuleHooks
+ * @property {(module: Module) => void} loadOnto  put the module on the drawn robot
+ * @property {(module: Module) => void} openOwn   replace the drawing by the module's body
+ * @property {(text: string) => void} message
+ */
+
+export class ModuleList {
+  /** @param {Document} doc @param {ModuleHooks} hooks */
+  constructor(doc, hooks) {
+    const el = (/** @type {string} */ id) => /** @type {any} */ (doc.getElementById(id));
+    this.select = /** @type {HTMLSelectElement} */ (el('module'));
+    this.fileInput = /** @type {HTMLInputElement} */ (el('run-import'));
+    this.details = /** @type {HTMLElement} */ (el('module-details'));
+    this.hooks = hooks;
+    /** Run files already read, by key. @type {Map<string, Module>} */
+    this.held = new Map();
+    el('module-load').addEventListener('click', () => this.withSelected(hooks.loadOnto));
+    el('module-open').addEventListener('click', () => this.withSelected(hooks.openOwn));
+    this.select.addEventListener('change', () => this.describe());
+    this.fileInput.addEventListener('change', () => this.importFile());
+  }
+
+  /** Lists the pretrained modules; a failure is reported, the list stays usable. */
+  async listPretrained() {
+    try {
+      const manifest = await fetchOk(`${PRETRAINED_DIR}manifest.json`).then((r) => r.json());
+      for (const m of manifest.modules ?? []) {
+        const median = Number(m.validation_median);
+        const speed = Number.isFinite(median) ? `, ${median.toFixed(2)} m/s on unseen terrain` : '';
+        const from = m.finetuned_from ? ` fine-tuned from ${m.finetuned_from}` : '';
+        const label = `${m.controller} on ${m.shape}${from} (${m.evaluations} evals${speed})`;
+        this.select.append(new Option(label, PRETRAINED_DIR + m.file));
+      }
+      this.describe();
+    } catch (error) {
+      this.hooks.message(`could not list the pretrained modules: ${messageOf(error)}`);
+    }
+  }
+
+  /**
+   * Adds (or replaces) a module held in the page and selects it.
+   * @param {Module} module
+   */
+  add(module) {
+    describeRun(module.text); // throws a readable Error when malformed
+    this.held.set(module.key, module);
+    const existing = [...this.select.options].find((o) => o.value === module.key);
+    if (existing) existing.text = module.label; else this.select.append(new Option(module.label, module.key));
+    this.select.value = module.key;
+    this.describe();
+  }
+
+  /** @returns {Promise<Module | null>} the selected module, read */
+  async selected() {
+    const key = this.select.value;
+    if (!key) return null;
+    const held = this.held.get(key);
+    if (held) return held;
+    const text = await fetchOk(key).then((r) => r.text());
+    const module = { key, label: this.select.selectedOptions[0]?.text ?? key, text };
+    this.held.set(key, module);
+    return module;
+  }
+
+  /** @param {(module: Module) => void} action */
+  async withSelected(action) {
+    try {
+      const module = await this.selected();
+      if (module) action(module); else this.hooks.message('choose a module first');
+    } catch (error) {
+      this.hooks.message(`could not read the module: ${messageOf(error)}`);
+    }
+  }
+
+  /** Shows what the selected module is. */
+  async describe() {
+    try {
+      const module = await this.selected();
+      if (!module) { this.details.textContent = ''; return; }
+      const info = describeRun(module.text);
+      this.details.textContent = `${info.controller}, ${info.genes} genes, evolved on ${info.shape}`
+        + `${info.finetunedFrom ? ` from ${info.finetunedFrom}` : ''} (seed ${info.seed}, budget ${info.budget}, `
+        + `training best ${Number.isFinite(info.fitness) ? info.fitness.toFixed(2) : '–'} m/s)`;
+    } catch (error) {
+      this.details.textContent = '';
+    }
+  }
+
+  async importFile() {
+    const file = this.fileInput.files?.[0];
+    if (!file) return;
+    this.fileInput.value = ''; // choosing the same file again fires 'change' again
+    try {
+      const text = await file.text();
+      this.add({ key: `disk:${file.name}`, label: `${file.name} (imported)`, text });
+      this.hooks.message('');
+    } catch (error) {
+      this.hooks.message(`${file.name} is not a run file this page can read: ${messageOf(error)}`);
+    }
+  }
+}
+
+/** @param {string} url @returns {Promise<Response>} the response, or throws on an HTTP error */
+async function fetchOk(url) {
+  const response = await fetch(url);
+  if (!response.ok) throw new Error(`HTTP ${response.status}`);
+  return response;
+}

@@ -1,0 +1,314 @@
+// @ts-check
+/**
+ * The run panel: evolves a controller for the drawn body (as `vsr evolve`) or fine-tunes a
+ * transplanted attention module on it (as `vsr finetune`), in a GA coordinator worker with
+ * a pool of evaluation workers (coordinator.js). It reads the settings (population, episode
+ * seconds, budget, seed, training terrain, workers), shows the run live (generation,
+ * evaluations, best so far, the generation's best and median, evaluations per second, the
+ * chart against evaluations), pauses, steps one generation, stops, exports the run file,
+ * and hands each new best to the page to watch. A fine-tuning run can be followed by a
+ * from-scratch run with the same budget, drawn as a second line.
+ */
+import { freshSeed } from './core.js';
+import { messageOf, spawn } from './kit.js';
+import { FitnessChart } from './fitness-chart.js';
+import { FromCoordinator, MAX_EVALUATORS, ToCoordinator } from './protocol.js';
+
+const STYLE = {
+  best: { label: 'best of generation', colour: 'rgb(200, 45, 40)' },
+  median: { label: 'median', colour: 'rgb(49, 99, 190)' },
+  finetune: { label: 'fine-tune (best)', colour: 'rgb(200, 45, 40)' },
+  scratch: { label: 'from scratch (best)', colour: 'rgb(90, 90, 90)', dashed: true },
+};
+
+/**
+ * @typedef {object} RunHooks
+ * @property {() => {rows: string, ok: boolean}} body   the drawing now
+ * @property {() => string} controller                   the family chosen for Evolve
+ * @property {() => string | null} source                the run file of the module on the robot, if any
+ * @property {(genome: Float32Array, fitness: number, settings: import('./protocol.js').EvolveSettings, kind: string, runFile: string | null) => void} best
+ *   a new best (runFile is set when the run has ended)
+ * @property {(running: boolean) => void} running        a run started or ended
+ * @property {(text: string) => void} message            shows an error or a note ('' clears it)
+ */
+
+export class RunPanel {
+  /** @param {Document} doc @param {import('./core.js').Defaults} defaults @param {RunHooks} hooks */
+  constructor(doc, defaults, hooks) {
+    this.defaults = defaults;
+    this.hooks = hooks;
+    const el = (/** @type {string} */ id) => {
+      const found = doc.getElementById(id);
+      if (!found) throw new Error(`the page has no #${id}`);
+      return /** @type {any} */ (found);
+    };
+    /** @type {Record<string, HTMLInputElement>} */
+    this.inputs = {
+      population: el('run-population'), seconds: el('run-seconds'), budget: el('run-budget'),
+      seed: el('run-seed'), terrain: el('run-terrain'), workers: el('run-workers'),
+    };
+    /** @type {Record<string, HTMLButtonElement>} */
+    this.buttons = {
+      quick: el('run-quick'), paper: el('run-paper'), dice: el('run-dice'), evolve: el('run-evolve'),
+      finetune: el('run-finetune'), pause: el('run-pause'), step: el('run-step'), stop: el('run-stop'),
+      export: el('run-export'),
+    };
+    this.compare = /** @type {HTMLInputElement} */ (el('run-compare'));
+    this.follow = /** @type {HTMLInputElement} */ (el('run-follow'));
+    /** @type {Record<string, HTMLElement>} */
+    this.out = {
+      generation: el('run-generation'), evaluations: el('run-evaluations'), best: el('run-best'),
+      genBest: el('run-gen-best'), median: el('run-median'), rate: el('run-rate'), status: el('run-status'),
+    };
+    this.chart = new FitnessChart(el('run-chart'));
+    /** @type {Worker | null} */
+    this.coordinator = null;
+    this.paused = false;
+    /** The latest finished run's file and settings. */
+    this.runFile = /** @type {string | null} */ (null);
+    this.runSettings = /** @type {import('./protocol.js').EvolveSettings | null} */ (null);
+    /** What runs now: 'evolve', 'finetune' or 'scratch' (the comparison), and its series key. */
+    this.mode = 'evolve';
+    this.bestSoFar = -Infinity;
+    /** Start a from-scratch run when this fine-tuning run finishes. */
+    this.compareNext = false;
+    /** A download asked for while running, waiting for the coordinator's run file. */
+    this.exportWanted = false;
+    this.preset(defaults.quick);
+    this.inputs.seed.value = '1';
+    this.inputs.terrain.value = defaults.trainingTerrain;
+    this.inputs.workers.value = String(Math.max(1, Math.min(MAX_EVALUATORS, navigator.hardwareConcurrency || 1)));
+    this.inputs.workers.max = String(MAX_EVALUATORS);
+    this.wire();
+    this.update();
+  }
+
+  wire() {
+    const b = this.buttons;
+    b.quick.addEventListener('click', () => this.preset(this.defaults.quick));
+    b.paper.addEventListener('click', () => this.preset(this.defaults.paper));
+    b.dice.addEventListener('click', () => { this.inputs.seed.value = String(freshSeed()); this.hooks.message(''); });
+    b.evolve.addEventListener('click', () => this.start('evolve'));
+    b.finetune.addEventListener('click', () => this.start('finetune'));
+    b.pause.addEventListener('click', () => this.send(this.paused ? ToCoordinator.RESUME : ToCoordinator.PAUSE));
+    b.step.addEventListener('click', () => this.send(ToCoordinator.STEP));
+    b.stop.addEventListener('click', () => { this.compareNext = false; this.send(ToCoordinator.STOP); });
+    b.export.addEventListener('click', () => this.exportRunFile());
+    for (const input of Object.values(this.inputs)) input.addEventListener('change', () => this.hooks.message(''));
+  }
+
+  /** @param {string} type */
+  send(type) { this.coordinator?.postMessage({ type }); }
+
+  /** @param {import('./core.js').RunPreset} p */
+  preset(p) {
+    this.inputs.population.value = String(p.population);
+    this.inputs.seconds.value = String(p.seconds);
+    this.inputs.budget.value = String(p.budget);
+  }
+
+  /** The settings in the form as the page stores and shares them. */
+  values() {
+    const v = (/** @type {string} */ k) => this.inputs[k].value;
+    return { population: v('population'), seconds: v('seconds'), budget: v('budget'), seed: v('seed'), terrain: v('terrain') };
+  }
+
+  /** @param {Partial<Record<string, string>>} values settings to put in the form */
+  setValues(values) {
+    for (const [k, value] of Object.entries(values)) if (this.inputs[k] && value !== undefined) this.inputs[k].value = String(value);
+  }
+
+  /**
+   * The settings in the form, or a message saying what is wrong with them.
+   * @param {string} controller
+   * @returns {{settings: import('./protocol.js').EvolveSettings, workers: number} | {error: string}}
+   */
+  readSettings(controller) {
+    const body = this.hooks.body();
+    if (!body.ok) return { error: 'draw a valid robot first (see the message under the grid)' };
+    const number = (/** @type {string} */ key) => Number(this.inputs[key].value.trim() || NaN);
+    const [population, seconds, budget, seed, workers] = ['population', 'seconds', 'budget', 'seed', 'workers'].map(number);
+    if (!Number.isInteger(population) || population < 1) return { error: `population must be a whole number of at least 1, not "${this.inputs.population.value}"` };
+    if (!(seconds > 0) || !Number.isFinite(seconds)) return { error: `episode seconds must be a positive number, not "${this.inputs.seconds.value}"` };
+    if (!Number.isInteger(budget) || budget < population) return { error: `the budget must be a whole number of evaluations, at least one population (${population}), not "${this.inputs.budget.value}"` };
+    if (!Number.isSafeInteger(seed) || seed < 0) return { error: `the seed must be a whole number from 0 to 2^53 - 1, not "${this.inputs.seed.value}"` };
+    if (!Number.isInteger(workers) || workers < 1 || workers > MAX_EVALUATORS) return { error: `workers must be a whole number from 1 to ${MAX_EVALUATORS}, not "${this.inputs.workers.value}"` };
+    const terrain = this.inputs.terrain.value.trim();
+    return { settings: { shape: body.rows, controller, seed, seconds, terrain, population, budget }, workers };
+  }
+
+  /**
+   * Starts a run: 'evolve' (the chosen family from scratch), 'finetune' (the module on the
+   * robot) or 'scratch' (attention from scratch, the comparison after a fine-tune).
+   * @param {'evolve' | 'finetune' | 'scratch'} mode
+   */
+  start(mode) {
+    if (this.coordinator) return;
+    const source = mode === 'finetune' ? this.hooks.source() : null;
+    if (mode === 'finetune' && !source) { this.hooks.message('load an attention module onto your robot first (Load onto my robot)'); return; }
+    const read = this.readSettings(mode === 'evolve' ? this.hooks.controller() : 'attention');
+    if ('error' in read) { this.hooks.message(read.error); return; }
+    this.hooks.message('');
+    this.mode = mode;
+    this.compareNext = mode === 'finetune' && this.compare.checked;
+    this.bestSoFar = -Infinity;
+    const settings = read.settings;
+    const coordinator = spawn('coordinator.js', (msg) => this.onMessage(msg, settings),
+      (text) => this.end(`the evolution stopped: ${text}`, 'failed'));
+    coordinator.postMessage({ type: ToCoordinator.START, settings, workers: read.workers, source });
+    this.coordinator = coordinator;
+    this.paused = false;
+    this.setStatus('starting…');
+    this.hooks.running(true);
+    this.update();
+  }
+
+  /** @param {any} msg a coordinator message @param {import('./protocol.js').EvolveSettings} settings */
+  onMessage(msg, settings) {
+    switch (msg.type) {
+      case FromCoordinator.STARTED:
+        if (this.mode !== 'scratch') this.chart.clear(msg.planned); else this.chart.extend(msg.planned);
+        this.runSettings = settings;
+        this.setStatus(`${this.verb()} on ${msg.workers} worker${msg.workers === 1 ? '' : 's'}`);
+        show(this.out.evaluations, 0, `0 / ${msg.planned}`);
+        for (const key of ['generation', 'best', 'genBest', 'median', 'rate']) show(this.out[key], NaN, '–');
+        break;
+      case FromCoordinator.GENERATION: this.onGeneration(msg, settings); break;
+      case FromCoordinator.STATE:
+        this.paused = msg.paused;
+        this.setStatus(msg.paused ? 'paused' : msg.stepping ? 'stepping' : this.verb());
+        this.update();
+        break;
+      case FromCoordinator.RUN_FILE:
+        if (this.exportWanted && msg.runFile) download(msg.runFile, this.fileName(settings));
+        this.exportWanted = false;
+        break;
+      case FromCoordinator.RECOVERED: this.hooks.message(msg.message); break;
+      case FromCoordinator.DONE: this.onDone(msg, settings); break;
+      case FromCoordinator.ERROR: this.end(msg.message, 'failed'); break;
+      default: console.warn('unknown message from the coordinator', msg);
+    }
+  }
+
+  verb() {
+    return { evolve: 'evolving', finetune: 'fine-tuning', scratch: 'from scratch' }[this.mode] ?? 'running';
+  }
+
+  /**
+   * @param {{record: any, evaluations: number, planned: number, evalsPerSecond: number,
+   *   best: {fitness: number, genome: Float32Array} | null}} msg
+   * @param {import('./protocol.js').EvolveSettings} settings
+   */
+  onGeneration(msg, settings) {
+    const { record } = msg;
+    if (record.best !== null && record.best > this.bestSoFar) this.bestSoFar = record.best;
+    show(this.out.generation, record.generation, String(record.generation));
+    show(this.out.evaluations, msg.evaluations, `${msg.evaluations} / ${msg.planned}`);
+    show(this.out.best, this.bestSoFar, `${fixed(this.bestSoFar)} m/s`);
+    show(this.out.genBest, record.best ?? NaN, `${fixed(record.best)} m/s`);
+    show(this.out.median, record.median ?? NaN, `${fixed(record.median)} m/s`);
+    show(this.out.rate, msg.evalsPerSecond, `${fixed(msg.evalsPerSecond, 1)} evaluations/s`);
+    if (this.mode === 'evolve') {
+      this.chart.add('best', STYLE.best, msg.evaluations, record.best);
+      this.chart.add('median', STYLE.median, msg.evaluations, record.median);
+    } else {
+      this.chart.add(this.mode, STYLE[this.mode], msg.evaluations, this.bestSoFar);
+    }
+    this.chart.draw();
+    if (msg.best && this.follow.checked && this.mode !== 'scratch') {
+      this.hooks.best(msg.best.genome, msg.best.fitness, settings, this.kind(settings), null);
+    }
+  }
+
+  /** @param {import('./protocol.js').EvolveSettings} settings */
+  kind(settings) {
+    return this.mode === 'evolve' ? settings.controller : 'attention';
+  }
+
+  /** @param {{stopped: boolean, runFile: string | null}} msg @param {import('./protocol.js').EvolveSettings} settings */
+  onDone(msg, settings) {
+    const compare = this.compareNext && !msg.stopped;
+    if (msg.runFile && this.mode !== 'scratch') {
+      this.runFile = msg.runFile;
+      this.runSettings = settings;
+      try {
+        const best = JSON.parse(msg.runFile).best;
+        this.hooks.best(new Float32Array(best.genome), best.fitness, settings, this.kind(settings), msg.runFile);
+      } catch (error) {
+        this.hooks.message(`the run file could not be read: ${messageOf(error)}`);
+      }
+    }
+    this.end('', msg.stopped ? 'stopped' : 'finished');
+    if (compare) this.start('scratch');
+  }
+
+  /** Downloads the run file: the running one's so far, or the last finished one. */
+  exportRunFile() {
+    if (this.coordinator && this.mode !== 'scratch') {
+      this.exportWanted = true;
+      this.send(ToCoordinator.RUN_FILE);
+      return;
+    }
+    if (this.runFile && this.runSettings) download(this.runFile, this.fileName(this.runSettings));
+  }
+
+  /** @param {import('./protocol.js').EvolveSettings} s */
+  fileName(s) {
+    const what = this.mode === 'finetune' || (this.runFile && JSON.parse(this.runFile).config.source) ? 'finetuned-attention' : `evolved-${s.controller}`;
+    return `${what}-seed${s.seed}.json`;
+  }
+
+  /** The run ended: an error message (or ''), and the status to show. @param {string} error @param {string} status */
+  end(error, status) {
+    this.coordinator?.terminate();
+    this.coordinator = null;
+    this.paused = false;
+    if (error) this.hooks.message(error);
+    this.setStatus(status);
+    this.hooks.running(false);
+    this.update();
+  }
+
+  /** @param {string} text */
+  setStatus(text) {
+    this.out.status.textContent = text;
+    document.body.dataset.run = text.split(' ')[0].replace('…', '');
+  }
+
+  /** Enables the buttons that apply now. */
+  update() {
+    const running = this.coordinator !== null;
+    const b = this.buttons;
+    const body = this.hooks.body();
+    b.evolve.disabled = running || !body.ok;
+    b.finetune.disabled = running || !body.ok || this.hooks.source() === null;
+    for (const key of ['quick', 'paper', 'dice']) b[key].disabled = running;
+    for (const input of Object.values(this.inputs)) input.disabled = running;
+    b.pause.disabled = !running;
+    b.step.disabled = !running || !this.paused;
+    b.stop.disabled = !running;
+    b.pause.textContent = this.paused ? 'Resume' : 'Pause';
+    b.export.disabled = !running && this.runFile === null;
+  }
+}
+
+/** @param {number | null} v @param {number} [digits] */
+function fixed(v, digits = 2) {
+  return v === null || !Number.isFinite(v) ? '–' : v.toFixed(digits);
+}
+
+/** Shows a figure, with its raw number in data-value for tests. @param {HTMLElement} el @param {number} value @param {string} text */
+function show(el, value, text) {
+  el.dataset.value = String(value);
+  el.textContent = text;
+}
+
+/** @param {string} text @param {string} name */
+function download(text, name) {
+  const url = URL.createObjectURL(new Blob([text], { type: 'application/json' }));
+  const link = document.createElement('a');
+  link.href = url;
+  link.download = name;
+  link.click();
+  setTimeout(() => URL.revokeObjectURL(url), 1000);
+}

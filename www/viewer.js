@@ -1,0 +1,124 @@
+// @ts-check
+/**
+ * The viewer: the simulation worker that walks the robot, the scene canvas, the live
+ * figures and the attention maps, with Play / Hold / Restart, speed and terrain. It shows
+ * whatever body and brain the page gives it; the worker answers 'loaded' or 'error' and a
+ * refused load leaves the previous robot walking. Messages: protocol.js.
+ */
+import { AttentionPanel } from './attention.js';
+import { spawn } from './kit.js';
+import { FromWorker, ToWorker, frameIsConsistent } from './protocol.js';
+import { Readout } from './readout.js';
+import { Renderer } from './renderer.js';
+
+/** Workers restarted after a crash before the page gives up. */
+const MAX_RESTARTS = 3;
+
+/**
+ * @typedef {object} ViewerHooks
+ * @property {(text: string) => void} message  shows an error ('' clears it)
+ * @property {(params: import('./protocol.js').EpisodeParams, voxels: number, controller: string) => void} loaded
+ * @property {(pick: {voxel: number, dx: number, dy: number}) => void} clicked  a click on or next to a voxel
+ */
+
+export class Viewer {
+  /** @param {Document} doc @param {ViewerHooks} hooks */
+  constructor(doc, hooks) {
+    const el = (/** @type {string} */ id) => /** @type {any} */ (doc.getElementById(id));
+    this.hooks = hooks;
+    this.canvas = /** @type {HTMLCanvasElement} */ (el('scene'));
+    this.renderer = new Renderer(this.canvas);
+    this.readout = new Readout(doc);
+    this.attention = new AttentionPanel(el('attention-panel'), el('attention'));
+    this.status = el('status');
+    this.buttons = { play: el('sim-play'), hold: el('sim-hold'), restart: el('sim-restart') };
+    this.speed = /** @type {HTMLSelectElement} */ (el('speed'));
+    this.terrain = /** @type {HTMLInputElement} */ (el('terrain'));
+    this.gait = { frequency: /** @type {HTMLInputElement} */ (el('frequency')), phase: /** @type {HTMLInputElement} */ (el('phase')) };
+    /** The episode the worker runs now (the last one that loaded). @type {import('./protocol.js').EpisodeParams | null} */
+    this.current = null;
+    /** The episode asked for last (kept across a worker restart). @type {import('./protocol.js').EpisodeParams | null} */
+    this.wanted = null;
+    this.running = true;
+    this.restarts = 0;
+    this.worker = this.startWorker();
+    this.wire();
+    requestAnimationFrame(function loop(/** @type {number} */ now) {
+      this.renderer.draw(now);
+      this.attention.draw();
+      requestAnimationFrame(loop.bind(this));
+    }.bind(this));
+  }
+
+  wire() {
+    const { buttons } = this;
+    buttons.play.addEventListener('click', () => this.worker.postMessage({ type: ToWorker.START }));
+    buttons.hold.addEventListener('click', () => this.worker.postMessage({ type: ToWorker.PAUSE }));
+    buttons.restart.addEventListener('click', () => this.worker.postMessage({ type: ToWorker.RESET }));
+    this.speed.addEventListener('change', () => this.worker.postMessage({ type: ToWorker.SPEED, speed: Number(this.speed.value) }));
+    for (const input of [this.terrain, this.gait.frequency, this.gait.phase]) {
+      input.addEventListener('change', () => { if (this.wanted) this.show(this.wanted.shape, this.wanted.brain); });
+    }
+    this.canvas.addEventListener('click', (e) => {
+      const pick = this.renderer.pick(e.clientX, e.clientY);
+      if (pick) this.hooks.clicked(pick);
+    });
+  }
+
+  /** @returns {Worker} a new simulation worker, told to load the wanted episode */
+  startWorker() {
+    const w = spawn('worker.js', (msg) => this.onMessage(msg), (text) => this.onError(`the simulation stopped: ${text}`, true));
+    w.postMessage({ type: ToWorker.SPEED, speed: Number(this.speed.value) });
+    if (this.wanted) w.postMessage({ type: ToWorker.LOAD, params: this.wanted });
+    if (this.running) w.postMessage({ type: ToWorker.START });
+    return w;
+  }
+
+  /**
+   * Walks `rows` driven by `brain` (or the phase gait when null).
+   * @param {string} rows @param {import('./protocol.js').Brain | null} brain
+   */
+  show(rows, brain) {
+    this.wanted = {
+      shape: rows, terrain: this.terrain.value.trim(), brain,
+      frequency: this.gait.frequency.valueAsNumber, phase: this.gait.phase.valueAsNumber,
+    };
+    this.worker.postMessage({ type: ToWorker.LOAD, params: this.wanted });
+  }
+
+  /** @param {any} msg a message from the worker */
+  onMessage(msg) {
+    switch (msg.type) {
+      case FromWorker.READY: break;
+      case FromWorker.LOADED:
+        this.current = msg.params;
+        this.renderer.setTerrain(msg.terrainXs, msg.terrainYs);
+        this.attention.setLayout(msg.cells);
+        this.readout.reset();
+        this.status.textContent = `${msg.voxels} voxels, ${msg.controller}`;
+        for (const input of Object.values(this.gait)) input.disabled = msg.params.brain !== null;
+        this.hooks.loaded(msg.params, msg.voxels, msg.controller);
+        break;
+      case FromWorker.FRAME:
+        if (frameIsConsistent(msg)) { this.renderer.setFrame(msg); this.readout.update(msg); this.attention.setFrame(msg); }
+        break;
+      case FromWorker.STATE: this.running = msg.running; this.updateButtons(); break;
+      case FromWorker.ERROR: this.onError(msg.message, msg.fatal); break;
+      default: console.warn('unknown message from the simulation worker', msg);
+    }
+  }
+
+  /** @param {string} text @param {boolean} fatal */
+  onError(text, fatal) {
+    this.hooks.message(text);
+    if (!fatal) { this.wanted = this.current; return; }
+    this.worker.terminate();
+    if (this.restarts++ < MAX_RESTARTS) this.worker = this.startWorker();
+  }
+
+  updateButtons() {
+    this.buttons.play.disabled = this.running;
+    this.buttons.hold.disabled = !this.running;
+    document.body.dataset.running = String(this.running);
+  }
+}
