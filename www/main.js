@@ -373,8 +373,25 @@ async function start() {
   }
   editor.draw();
   bodyChanged();
-  if (fromLink && 'error' in fromLink) showMessage(`This link could not be opened (${fromLink.error}); your own robot is shown instead.`);
+  if (fromLink && 'error' in fromLink) linkRefused(fromLink.error);
   modules.listPretrained();
+  window.addEventListener('hashchange', openLink);
+}
+
+/** A link pasted into this tab (only the part after '#' changed): open it, unless a run goes on. */
+async function openLink() {
+  if (location.hash.length <= 1) return;
+  if (running) { showMessage('stop the run before opening another robot'); return; }
+  const opened = decodeState(location.hash, defaults.controllers);
+  if ('error' in opened) { linkRefused(opened.error); return; }
+  await restore(opened.state);
+  editor.draw();
+  bodyChanged();
+}
+
+/** @param {string} why */
+function linkRefused(why) {
+  showMessage(`This link could not be opened (${why}); your own robot is shown instead.`);
 }
 
 start();

@@ -1,0 +1,124 @@
+// @ts-check
+/**
+ * Browser test of keeping and sharing (node --test): Share puts the drawing, controller,
+ * settings and genome in a link that a fresh browser opens to the same robot and genome;
+ * a reload finds the drawing; a damaged link (disconnected shape, wrong-size genome, bad
+ * base64) shows a readable message and changes nothing kept; at 420 px the page does not
+ * scroll sideways and no button is cut; while evolving, no main-thread task reaches 50 ms
+ * (longtask observer) and evaluations per second are measured with 1 and 2 workers.
+ * Saves screenshots/phone.png and screenshots/shared.png.
+ */
+import assert from 'node:assert/strict';
+import { after, before, test } from 'node:test';
+import { byTestId, clickCells, figure, openPage, screenshot, start, waitForText } from './harness.mjs';
+
+const ATTENTION = 'pretrained/biped-4x3-attention-seed1.json';
+
+/** @type {Awaited<ReturnType<typeof start>>} */ let env;
+
+before(async () => { env = await start(); });
+after(async () => { await env?.close(); });
+
+/** The genome parameter of the link the page shares now. @param {import('playwright-core').Page} page */
+async function sharedLink(page) {
+  await byTestId(page, 'share').click();
+  await page.waitForFunction(() => (document.getElementById('share-link')?.dataset.value ?? '').includes('#'));
+  return String(await page.locator('#share-link').getAttribute('data-value'));
+}
+
+test('a shared link opens the same robot, settings and genome in a fresh browser; a reload keeps the drawing', async () => {
+  const { page, problems } = await openPage(env.browser, env.url);
+  await page.locator('#clear').click();
+  await clickCells(page, [[0, 0], [1, 0], [2, 0], [3, 0], [0, 1], [3, 1], [1, 1]]);
+  await byTestId(page, 'pretrained').selectOption(ATTENTION);
+  await byTestId(page, 'load-pretrained').click();
+  await waitForText(page, 'status', /^7 voxels, attention$/);
+  await byTestId(page, 'controller').selectOption('mlp-comm');
+  await byTestId(page, 'seed').fill('77');
+  await byTestId(page, 'seed').press('Enter');
+  const link = await sharedLink(page);
+  assert.match(link, /shape=1101-1111/);
+  assert.match(link, /genome=/);
+
+  const fresh = await openPage(env.browser, link);
+  await waitForText(fresh.page, 'status', /^7 voxels, attention$/);
+  assert.equal(await fresh.page.locator('#rows').inputValue(), '1101-1111');
+  assert.equal(await byTestId(fresh.page, 'controller').inputValue(), 'mlp-comm');
+  assert.equal(await byTestId(fresh.page, 'seed').inputValue(), '77');
+  const again = await sharedLink(fresh.page);
+  assert.equal(new URL(again).hash, new URL(link).hash, 'the same state, genome bit for bit');
+  assert.equal(await byTestId(fresh.page, 'finetune').isEnabled(), true, 'the pretrained source came back: it can be fine-tuned');
+  await screenshot(fresh.page, 'shared.png');
+
+  await page.goto(env.url); // the same browser, no link: what was kept
+  await waitForText(page, 'status', /^7 voxels, attention$/);
+  assert.equal(await page.locator('#rows').inputValue(), '1101-1111');
+  assert.deepEqual([...problems, ...fresh.problems], []);
+  await fresh.context.close();
+});
+
+test('a damaged link shows a readable message and changes nothing kept', async () => {
+  const { page, problems, context } = await openPage(env.browser, env.url);
+  await byTestId(page, 'preset').selectOption({ label: 'comb-7x2' });
+  await waitForText(page, 'status', /^11 voxels/);
+  await page.waitForTimeout(500); // kept after a short delay
+  for (const [hash, pattern] of /** @type {[string, RegExp][]} */ ([
+    ['#shape=101-000-101&controller=attention', /pieces/],
+    ['#shape=1111-1111-1001&brain=attention&genome=AAAAAAAAAAA', /genome has 2 genes/],
+    ['#shape=1111-1111-1001&brain=attention&genome=%%%', /not valid base64/],
+    ['#shape=11&controller=transformer', /unknown controller/],
+  ])) {
+    await page.goto(`${env.url}${hash}`);
+    await waitForText(page, 'message', pattern);
+    assert.match(String(await byTestId(page, 'message').textContent()), /could not be opened/);
+    await waitForText(page, 'status', /^11 voxels/);
+    assert.equal(await page.locator('#rows').inputValue(), '1111111-1010101', 'the kept comb');
+  }
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('at 420 px wide nothing scrolls sideways and no button is cut', async () => {
+  const { page, problems, context } = await openPage(env.browser, env.url, { width: 420, height: 900 });
+  const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+  assert.ok(overflow <= 0, `the page is ${overflow} px wider than the screen`);
+  const cut = await page.evaluate(() => [...document.querySelectorAll('button')]
+    .filter((b) => b.offsetParent !== null && (b.scrollWidth > b.clientWidth + 1 || b.getBoundingClientRect().right > window.innerWidth))
+    .map((b) => b.textContent));
+  assert.deepEqual(cut, [], 'buttons whose label is cut or that leave the screen');
+  await clickCells(page, [[5, 0]]);
+  await waitForText(page, 'message', /2 separate pieces/);
+  await screenshot(page, 'phone.png');
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('while evolving no main-thread task reaches 50 ms; evaluations per second with 1 and 2 workers', async () => {
+  const { page, problems, context } = await openPage(env.browser, env.url);
+  /** @type {number[]} */
+  const rates = [];
+  let longest = 0;
+  for (const workers of ['1', '2']) {
+    for (const [key, value] of Object.entries({ population: '20', seconds: '10', budget: '400', seed: '1', terrain: 'hilly-1-10', workers })) {
+      await page.locator(`#run-${key}`).fill(value);
+    }
+    await byTestId(page, 'evolve').click();
+    await waitForText(page, 'run-status', /^evolving/);
+    await page.evaluate(() => { // from here on, until the run ends: the main thread while evolving
+      const w = /** @type {any} */ (window);
+      w.longest = 0;
+      w.longTasks?.disconnect();
+      w.longTasks = new PerformanceObserver((list) => { for (const e of list.getEntries()) w.longest = Math.max(w.longest, e.duration); });
+      w.longTasks.observe({ type: 'longtask' });
+    });
+    await page.waitForFunction(() => document.body.dataset.run === 'finished', undefined, { timeout: 300_000 });
+    rates.push(await figure(page, 'run-rate'));
+    longest = Math.max(longest, await page.evaluate(() => /** @type {any} */ (window).longest));
+  }
+  console.log(`# evaluations/s (10-s biped episodes): 1 worker ${rates[0].toFixed(1)}, 2 workers ${rates[1].toFixed(1)}`
+    + ` (scaling ${(rates[1] / rates[0] / 2 * 100).toFixed(0)}%); longest main-thread task ${longest.toFixed(0)} ms`);
+  assert.ok(longest < 50, `a main-thread task took ${longest} ms while evolving`);
+  assert.ok(rates.every((r) => r > 0));
+  assert.deepEqual(problems, []);
+  await context.close();
+});
