@@ -55,6 +55,19 @@ export class Drawing {
     return true;
   }
 
+  /**
+   * The rows the drawing would have with one cell changed, without changing anything.
+   * @param {number} x @param {number} y @param {boolean} filled
+   */
+  rowsWith(x, y, filled) {
+    const saved = this.cells;
+    this.cells = new Set(saved);
+    if (filled) this.cells.add(y * this.width + x); else this.cells.delete(y * this.width + x);
+    const rows = this.rows();
+    this.cells = saved;
+    return rows;
+  }
+
   /** Empties the grid (one undo step). */
   clear() { this.replace(new Set()); }
 

@@ -177,17 +177,12 @@ function editWalking(pick) {
   const adding = pick.dx !== 0 || pick.dy !== 0;
   if (!drawing.inside(x, y)) { showMessage('that cell is outside the drawing grid'); return; }
   if (adding && drawing.has(x, y)) return;
-  drawing.beginStroke();
-  drawing.set(x, y, adding);
-  const after = checkShape(drawing.rows());
+  const after = checkShape(drawing.rowsWith(x, y, adding));
   if (!after.ok) {
-    drawing.endStroke();
-    drawing.undo();
-    drawing.redoStack.pop();
-    showMessage(`removing that voxel would leave ${after.message.replace(/^the shape is/, 'the robot')}; not done`);
+    showMessage(`removing that voxel would split the robot into ${after.pieces.length} pieces; not done`);
     return;
   }
-  drawing.endStroke();
+  drawing.set(x, y, adding);
   editor.draw();
   bodyChanged();
 }

@@ -7,6 +7,8 @@
 
 /** Window over which the velocity is measured (simulated s). */
 const VELOCITY_WINDOW_S = 1;
+/** Least wall time between two updates of the figures (ms). */
+const SHOW_INTERVAL_MS = 200;
 
 export class Readout {
   /** @param {Document} doc */
@@ -20,11 +22,14 @@ export class Readout {
     };
     /** Recent (time, x) samples, oldest first. @type {{t: number, x: number}[]} */
     this.history = [];
+    /** When the figures were last written (ms). */
+    this.shownAt = -Infinity;
   }
 
   /** Forgets the velocity history (a new episode starts). */
   reset() {
     this.history = [];
+    this.shownAt = -Infinity;
   }
 
   /** @param {import('./protocol.js').Frame} frame */
@@ -33,6 +38,10 @@ export class Readout {
     if (last && frame.time < last.t) this.history = [];
     this.history.push({ t: frame.time, x: frame.centreX });
     while (this.history.length > 2 && frame.time - this.history[1].t >= VELOCITY_WINDOW_S) this.history.shift();
+    // Text changes make the browser lay the page out again: a few times a second is enough.
+    const now = performance.now();
+    if (now - this.shownAt < SHOW_INTERVAL_MS) return;
+    this.shownAt = now;
     const first = this.history[0];
     const velocity = frame.time > first.t ? (frame.centreX - first.x) / (frame.time - first.t) : NaN;
     show(this.fields.time, frame.time, `${frame.time.toFixed(2)} s`);

@@ -5,7 +5,8 @@
  * a reload finds the drawing; a damaged link (disconnected shape, wrong-size genome, bad
  * base64) shows a readable message and changes nothing kept; at 420 px the page does not
  * scroll sideways and no button is cut; while evolving, no main-thread task reaches 50 ms
- * (longtask observer) and evaluations per second are measured with 1 and 2 workers.
+ * (longtask observer), and evaluations per second (1 and 2 workers) and the viewer's frames
+ * per second while evolving are measured and printed.
  * Saves screenshots/phone.png and screenshots/shared.png.
  */
 import assert from 'node:assert/strict';
@@ -97,6 +98,8 @@ test('while evolving no main-thread task reaches 50 ms; evaluations per second w
   const { page, problems, context } = await openPage(env.browser, env.url);
   /** @type {number[]} */
   const rates = [];
+  /** @type {number[]} */
+  const fps = [];
   let longest = 0;
   for (const workers of ['1', '2']) {
     for (const [key, value] of Object.entries({ population: '20', seconds: '10', budget: '400', seed: '1', terrain: 'hilly-1-10', workers })) {
@@ -111,12 +114,19 @@ test('while evolving no main-thread task reaches 50 ms; evaluations per second w
       w.longTasks = new PerformanceObserver((list) => { for (const e of list.getEntries()) w.longest = Math.max(w.longest, e.duration); });
       w.longTasks.observe({ type: 'longtask' });
     });
+    fps.push(await page.evaluate(() => new Promise((resolve) => { // the viewer's frame rate while evolving
+      const t0 = performance.now();
+      let frames = 0;
+      const tick = () => { frames++; if (performance.now() - t0 < 2000) requestAnimationFrame(tick); else resolve(frames / ((performance.now() - t0) / 1000)); };
+      requestAnimationFrame(tick);
+    })));
     await page.waitForFunction(() => document.body.dataset.run === 'finished', undefined, { timeout: 300_000 });
     rates.push(await figure(page, 'run-rate'));
     longest = Math.max(longest, await page.evaluate(() => /** @type {any} */ (window).longest));
   }
   console.log(`# evaluations/s (10-s biped episodes): 1 worker ${rates[0].toFixed(1)}, 2 workers ${rates[1].toFixed(1)}`
-    + ` (scaling ${(rates[1] / rates[0] / 2 * 100).toFixed(0)}%); longest main-thread task ${longest.toFixed(0)} ms`);
+    + ` (scaling ${(rates[1] / rates[0] / 2 * 100).toFixed(0)}%); longest main-thread task ${longest.toFixed(0)} ms;`
+    + ` viewer ${fps.map((f) => f.toFixed(0)).join(' / ')} frames/s while evolving`);
   assert.ok(longest < 50, `a main-thread task took ${longest} ms while evolving`);
   assert.ok(rates.every((r) => r > 0));
   assert.deepEqual(problems, []);

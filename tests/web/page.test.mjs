@@ -145,6 +145,49 @@ test('clicking a voxel of the walking robot removes it; the same controller keep
   assert.deepEqual(problems, []);
 });
 
+test('clicking next to the robot adds a voxel; an edit that would split it is refused', async () => {
+  await page.locator('#rows').fill('111');
+  await page.locator('#rows').press('Enter');
+  await waitForText(page, 'status', /^3 voxels/);
+  await page.locator('#sim-hold').click();
+  await page.waitForFunction(() => document.body.dataset.running === 'false');
+  await page.waitForTimeout(300);
+  const box = await robotBox();
+  const cell = (box.right - box.left) / 3;
+  await byTestId(page, 'viewer').click({ position: { x: box.right + 0.45 * cell, y: (box.top + box.bottom) / 2 } });
+  await waitForText(page, 'status', /^4 voxels/);
+  assert.equal(await page.locator('#rows').inputValue(), '1111', 'a voxel added on the right');
+  await page.locator('#undo').click();
+  await waitForText(page, 'status', /^3 voxels/);
+  await page.waitForTimeout(300);
+  await byTestId(page, 'viewer').click({ position: await robotCentre() });
+  await waitForText(page, 'message', /would split the robot into 2 pieces; not done/);
+  assert.equal(await page.locator('#rows').inputValue(), '111', 'the robot is unchanged');
+  assert.equal(await page.locator('#redo').isEnabled(), true, 'the refused edit kept the history: the undone addition can be redone');
+  await page.locator('#sim-play').click();
+  assert.deepEqual(problems, []);
+});
+
+/** The box around the robot's coloured pixels on the viewer (CSS px). */
+async function robotBox() {
+  return page.evaluate(() => {
+    const canvas = /** @type {HTMLCanvasElement} */ (document.querySelector('[data-testid="viewer"]'));
+    const data = canvas.getContext('2d')?.getImageData(0, 0, canvas.width, canvas.height).data ?? [];
+    const box = { left: Infinity, right: -Infinity, top: Infinity, bottom: -Infinity };
+    for (let i = 0; i < data.length; i += 4) {
+      const [r, g, b] = [data[i], data[i + 1], data[i + 2]];
+      if (Math.max(r, g) > 140 && b < 100 && Math.abs(r - g) > 20) {
+        const p = i / 4;
+        const [x, y] = [p % canvas.width, Math.floor(p / canvas.width)];
+        box.left = Math.min(box.left, x); box.right = Math.max(box.right, x);
+        box.top = Math.min(box.top, y); box.bottom = Math.max(box.bottom, y);
+      }
+    }
+    const scale = canvas.width / canvas.clientWidth;
+    return { left: box.left / scale, right: box.right / scale, top: box.top / scale, bottom: box.bottom / scale };
+  });
+}
+
 /** Where the robot is on the viewer: the centre of its coloured pixels (CSS px). */
 async function robotCentre() {
   return page.evaluate(() => {
