@@ -276,9 +276,14 @@ function scheduleKeep() {
   }, KEEP_DELAY_MS);
 }
 
-/** Restores a state from a link or storage. @param {import('./share.js').PageState} state */
+/**
+ * Restores a state from a link or storage; a robot that does not fit the grid is refused.
+ * @param {import('./share.js').PageState} state
+ * @returns {Promise<string>} '' or why nothing was restored
+ */
 async function restore(state) {
-  drawing.setRows(state.rows);
+  const problem = drawing.setRows(state.rows);
+  if (problem) return problem;
   drawing.undoStack = [];
   if (defaults.controllers.includes(state.controller)) controllerSelect.value = state.controller;
   if (state.terrain) viewer.terrain.value = state.terrain;
@@ -295,6 +300,7 @@ async function restore(state) {
       }
     }
   }
+  return '';
 }
 
 /** The Share button: the state in the address bar and on the clipboard. */
@@ -358,17 +364,23 @@ async function start() {
   const fromLink = location.hash.length > 1 ? decodeState(location.hash, defaults.controllers) : null;
   const kept = loadKept();
   const fromStorage = kept ? decodeState(kept, defaults.controllers) : null;
+  // A link first, else what was kept, else the first preset.
+  let refused = '';
+  let restored = false;
   if (fromLink && 'state' in fromLink) {
-    await restore(fromLink.state);
-  } else if (fromStorage && 'state' in fromStorage) {
-    await restore(fromStorage.state);
-  } else {
+    refused = await restore(fromLink.state);
+    restored = refused === '';
+  } else if (fromLink) {
+    refused = fromLink.error;
+  }
+  if (!restored && fromStorage && 'state' in fromStorage) restored = (await restore(fromStorage.state)) === '';
+  if (!restored) {
     drawing.setRows(defaults.presets[0].rows);
     drawing.undoStack = [];
   }
   editor.draw();
   bodyChanged();
-  if (fromLink && 'error' in fromLink) linkRefused(fromLink.error);
+  if (refused) linkRefused(refused);
   modules.listPretrained();
   window.addEventListener('hashchange', openLink);
 }
@@ -379,7 +391,8 @@ async function openLink() {
   if (running) { showMessage('stop the run before opening another robot'); return; }
   const opened = decodeState(location.hash, defaults.controllers);
   if ('error' in opened) { linkRefused(opened.error); return; }
-  await restore(opened.state);
+  const problem = await restore(opened.state);
+  if (problem) { linkRefused(problem); return; }
   editor.draw();
   bodyChanged();
 }

@@ -68,6 +68,7 @@ test('a damaged link shows a readable message and changes nothing kept', async (
     ['#shape=1111-1111-1001&brain=attention&genome=AAAAAAAAAAA', /genome has 2 genes/],
     ['#shape=1111-1111-1001&brain=attention&genome=%%%', /not valid base64/],
     ['#shape=11&controller=transformer', /unknown controller/],
+    [`#shape=${'1'.repeat(25)}&controller=mlp`, /the grid holds at most 20 x 10/],
   ])) {
     await page.goto(`${env.url}${hash}`);
     await waitForText(page, 'message', pattern);
