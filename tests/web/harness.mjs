@@ -38,10 +38,11 @@ export async function start() {
 /**
  * A new page (its own storage) at `url`, with its problems collected, once the robot walks.
  * @param {import('playwright-core').Browser} browser @param {string} url
- * @param {{width?: number, height?: number}} [size]
+ * @param {{width?: number, height?: number, touch?: boolean}} [options] screen size, a touch screen
  */
-export async function openPage(browser, url, size = {}) {
-  const context = await browser.newContext({ viewport: { width: size.width ?? 1300, height: size.height ?? 1100 }, acceptDownloads: true });
+export async function openPage(browser, url, options = {}) {
+  const context = await browser.newContext({ viewport: { width: options.width ?? 1300, height: options.height ?? 1100 },
+    acceptDownloads: true, hasTouch: options.touch ?? false });
   const page = await context.newPage();
   /** @type {string[]} */
   const problems = [];
@@ -100,6 +101,17 @@ export async function clickCells(page, cells, button = 'left') {
   for (const [x, y] of cells) {
     await page.mouse.click(box.x + (x + 0.5) * side, box.y + box.height - (y + 0.5) * side, { button });
   }
+}
+
+/**
+ * Taps grid cells of the editor with a finger, x from the left and y from the bottom.
+ * @param {import('playwright-core').Page} page @param {[number, number][]} cells
+ */
+export async function tapCells(page, cells) {
+  const box = await byTestId(page, 'editor').boundingBox();
+  if (!box) throw new Error('the editor is not visible');
+  const side = box.width / 20;
+  for (const [x, y] of cells) await page.touchscreen.tap(box.x + (x + 0.5) * side, box.y + box.height - (y + 0.5) * side);
 }
 
 /**

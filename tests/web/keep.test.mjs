@@ -3,15 +3,16 @@
  * Browser test of keeping and sharing (node --test): Share puts the drawing, controller,
  * settings and genome in a link that a fresh browser opens to the same robot and genome;
  * a reload finds the drawing; a damaged link (disconnected shape, wrong-size genome, bad
- * base64) shows a readable message and changes nothing kept; at 420 px the page does not
- * scroll sideways and no button is cut; while evolving, no main-thread task reaches 50 ms
+ * base64, larger than the grid) shows a readable message and changes nothing kept; at 420 px
+ * on a touch screen the page does not scroll sideways, no button is cut, and a finger draws
+ * and erases; while evolving, no main-thread task reaches 50 ms
  * (longtask observer), and evaluations per second (1 and 2 workers) and the viewer's frames
  * per second while evolving are measured and printed.
  * Saves screenshots/phone.png and screenshots/shared.png.
  */
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
-import { byTestId, clickCells, figure, openPage, screenshot, start, waitForText } from './harness.mjs';
+import { byTestId, clickCells, figure, openPage, screenshot, start, tapCells, waitForText } from './harness.mjs';
 
 const ATTENTION = 'pretrained/biped-4x3-attention-seed1.json';
 
@@ -80,17 +81,23 @@ test('a damaged link shows a readable message and changes nothing kept', async (
   await context.close();
 });
 
-test('at 420 px wide nothing scrolls sideways and no button is cut', async () => {
-  const { page, problems, context } = await openPage(env.browser, env.url, { width: 420, height: 900 });
+test('at 420 px wide on a touch screen: nothing scrolls sideways, no button is cut, a finger draws and erases', async () => {
+  const { page, problems, context } = await openPage(env.browser, env.url, { width: 420, height: 900, touch: true });
   const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
   assert.ok(overflow <= 0, `the page is ${overflow} px wider than the screen`);
   const cut = await page.evaluate(() => [...document.querySelectorAll('button')]
     .filter((b) => b.offsetParent !== null && (b.scrollWidth > b.clientWidth + 1 || b.getBoundingClientRect().right > window.innerWidth))
     .map((b) => b.textContent));
   assert.deepEqual(cut, [], 'buttons whose label is cut or that leave the screen');
-  await clickCells(page, [[5, 0]]);
+  await tapCells(page, [[4, 0]]);
+  await waitForText(page, 'status', /^11 voxels/);
+  await tapCells(page, [[6, 0]]);
   await waitForText(page, 'message', /2 separate pieces/);
   await screenshot(page, 'phone.png');
+  await page.locator('#erase').tap();
+  await tapCells(page, [[6, 0], [4, 0]]);
+  await waitForText(page, 'status', /^10 voxels/);
+  assert.equal(await page.locator('#rows').inputValue(), '1111-1111-1001');
   assert.deepEqual(problems, []);
   await context.close();
 });
