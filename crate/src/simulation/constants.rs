@@ -32,7 +32,11 @@ pub const ROPE_MIN_LENGTH: f64 = CORNER_SIDE;
 
 /// Coulomb friction between a corner square and the ground: sqrt(0.2 * 10).
 pub const FRICTION: f64 = std::f64::consts::SQRT_2;
-/// Restitution between a corner square and the ground.
+/// Coulomb friction between corner squares of different voxels (self-collision):
+/// corner-body friction 10, mixed as sqrt(10 * 10).
+pub const SELF_FRICTION: f64 = 10.0;
+/// Restitution between a corner square and the ground, and between two corner
+/// squares (the larger of the two bodies' 0.1).
 pub const RESTITUTION: f64 = 0.1;
 /// Approach speed (m/s) below which restitution is ignored (dyn4j default).
 pub const RESTITUTION_VELOCITY: f64 = 1.0;
@@ -47,6 +51,12 @@ pub const LINEAR_SLOP: f64 = 0.005;
 /// speculative contacts that may close the gap in one step but not bounce off it;
 /// without the margin a loaded corner chatters on and off the ground.
 pub const CONTACT_MARGIN: f64 = 2.0 * LINEAR_SLOP;
+/// In the step after an actuation change, squares of different voxels are
+/// (speculative) contacts up to this much farther apart (m): the springs' new rest
+/// lengths can close a gap of up to 20 cm within that step beyond what the speeds
+/// before it predict (measured: without it comb-7x2's feet sink up to 20 cm into each
+/// other in that step).
+pub const ACTUATION_KICK_MARGIN: f64 = 0.2;
 /// Fraction of the penetration corrected per position iteration.
 pub const BAUMGARTE: f64 = 0.2;
 /// Largest position correction per iteration (m).

@@ -4,6 +4,8 @@
 
 pub mod assembly;
 pub mod body;
+pub mod box_box;
+pub mod broad_phase;
 pub mod collide;
 pub mod constants;
 pub mod contact;
@@ -15,6 +17,8 @@ pub mod lane_solve;
 pub mod lanes;
 pub mod packing;
 pub mod ropes;
+pub mod self_collide;
+pub mod self_contact;
 pub mod sensors;
 pub mod shape;
 pub mod springs;

@@ -11,20 +11,25 @@
 //! explicit or substepped integrator would ring at the true 8 Hz. Welded squares are
 //! merged into rigid pieces (exact for rigid welds, and fewer bodies and rows).
 //!
-//! One step is a list of phases: gravity and damping, prepare and warm start every
-//! row, 10 velocity iterations (springs, ropes, contacts), integrate positions, up to
-//! 10 position iterations (contacts, ropes), detect the contacts of the new pose.
+//! One step is a list of phases: find the self-contacts (corner squares of different
+//! voxels that are not welded together), gravity and damping, prepare and warm start
+//! every row, 10 velocity iterations (springs, ropes, ground contacts,
+//! self-contacts), integrate positions, up to 10 position iterations (ground contacts,
+//! ropes, self-contacts), detect the ground contacts of the new pose.
 
 use super::assembly::{assemble, Assembly};
 use super::body::{Pieces, Squares};
+use super::broad_phase::BroadPhase;
 use super::collide::{detect, Contact};
 use super::constants::{
-    DAMPING, DT, GRAVITY, LINEAR_SLOP, MAX_ROTATION, MAX_TRANSLATION, POSITION_ITERATIONS,
-    VELOCITY_ITERATIONS,
+    ACTUATION_KICK_MARGIN, CONTACT_MARGIN, DAMPING, DT, GRAVITY, LINEAR_SLOP, MAX_ROTATION,
+    MAX_TRANSLATION, POSITION_ITERATIONS, VELOCITY_ITERATIONS,
 };
 use super::contact::ContactSolver;
 use super::ground::Ground;
 use super::ropes::Ropes;
+use super::self_collide::{detect_self, PairContact};
+use super::self_contact::SelfContactSolver;
 use super::springs::Springs;
 
 /// A robot on a terrain.
@@ -37,9 +42,14 @@ pub struct World {
     ground: Ground,
     contacts: Vec<Contact>,
     solver: ContactSolver,
+    broad: BroadPhase,
+    self_contacts: Vec<PairContact>,
+    self_solver: SelfContactSolver,
     hints: Vec<usize>,
     touching: Vec<bool>,
     steps: u64,
+    /// Whether the actuation was set since the last step.
+    actuated: bool,
 }
 
 impl World {
@@ -54,6 +64,7 @@ impl World {
             ropes,
         } = assemble(cells, &ground);
         let hints = vec![ground.segments() / 2; squares.len()];
+        let broad = BroadPhase::new(&squares, pieces.len());
         let pad = pieces.len();
         let mut pieces = pieces;
         pieces.vel.push(Default::default());
@@ -65,10 +76,14 @@ impl World {
             ground,
             contacts: Vec::new(),
             solver: ContactSolver::default(),
+            broad,
+            self_contacts: Vec::new(),
+            self_solver: SelfContactSolver::default(),
             hints,
             touching: vec![false; cells.len()],
             squares,
             steps: 0,
+            actuated: false,
         };
         world.detect_contacts();
         world
@@ -78,24 +93,32 @@ impl World {
     /// next call. Values outside the range are clipped; NaN counts as 0.
     pub fn set_actuation(&mut self, actuation: &[f64]) {
         self.springs.set_actuation(actuation);
+        self.actuated = true;
     }
 
     /// Advances the world by one step of [`DT`] seconds.
     pub fn step(&mut self) {
+        self.detect_self_contacts();
         self.apply_gravity_and_damping();
         self.springs.prepare(&mut self.pieces);
         self.ropes.prepare(&mut self.pieces);
         self.solver.prepare(&self.contacts, &mut self.pieces);
+        self.self_solver
+            .prepare(&self.self_contacts, &mut self.pieces);
         for _ in 0..VELOCITY_ITERATIONS {
             self.springs.solve_velocity(&mut self.pieces.vel);
             self.ropes.solve_velocity(&mut self.pieces.vel);
             self.solver.solve_velocity(&mut self.pieces);
+            self.self_solver.solve_velocity(&mut self.pieces);
         }
         self.integrate_positions();
         for _ in 0..POSITION_ITERATIONS {
             let contacts_ok = ContactSolver::solve_position(&self.contacts, &mut self.pieces);
             let ropes_ok = self.ropes.solve_position(&mut self.pieces);
-            if contacts_ok && ropes_ok {
+            // Self-contacts last: a rope's full correction must not leave squares of
+            // different voxels pushed into each other.
+            let self_ok = SelfContactSolver::solve_position(&self.self_contacts, &mut self.pieces);
+            if contacts_ok && self_ok && ropes_ok {
                 break;
             }
         }
@@ -148,6 +171,25 @@ impl World {
         }
     }
 
+    /// Finds the contacts between squares of different voxels for this step. Right
+    /// after an actuation change the springs' new rest lengths can accelerate a limb
+    /// within the step beyond what its speed predicts, so the speculative margin is
+    /// widened for that step.
+    fn detect_self_contacts(&mut self) {
+        let margin = match self.actuated {
+            true => CONTACT_MARGIN + ACTUATION_KICK_MARGIN,
+            false => CONTACT_MARGIN,
+        };
+        self.actuated = false;
+        detect_self(
+            &self.pieces,
+            &self.squares,
+            &mut self.broad,
+            margin,
+            &mut self.self_contacts,
+        );
+    }
+
     /// Changes the robot-ground friction coefficient (default 1.414, SPEC 3); for
     /// experiments and tests.
     pub fn set_friction(&mut self, friction: f64) {
@@ -188,6 +230,16 @@ impl World {
     /// Number of contact points this step.
     pub fn contact_count(&self) -> usize {
         self.contacts.len()
+    }
+
+    /// Number of contact points between corner squares of different voxels this step.
+    pub fn self_contact_count(&self) -> usize {
+        self.self_contacts.len()
+    }
+
+    /// The contacts between corner squares of different voxels this step.
+    pub fn self_contacts(&self) -> &[PairContact] {
+        &self.self_contacts
     }
 
     /// Potential energy stored in the springs at the last step (J).

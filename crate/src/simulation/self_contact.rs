@@ -1,0 +1,191 @@
+//! Contact constraints between two pieces (self-collision), solved like the ground
+//! contacts in `contact.rs` but with both bodies moving: Coulomb friction between
+//! corner squares (sqrt(10 x 10) = 10, SPEC 3), then a non-negative normal impulse with
+//! restitution 0.1 above 1 m/s approach or, for a speculative contact, the speed that
+//! just closes the gap; warm started by contact key; then Baumgarte-limited position
+//! correction that pushes both pieces apart.
+
+use super::body::Pieces;
+use super::constants::{
+    BAUMGARTE, DT, LINEAR_SLOP, MAX_LINEAR_CORRECTION, RESTITUTION, RESTITUTION_VELOCITY,
+    SELF_FRICTION,
+};
+use super::self_collide::{PairContact, PairGeometry};
+
+/// A two-piece contact prepared for one step.
+#[derive(Debug, Clone, Copy, Default)]
+struct Row {
+    a: usize,
+    b: usize,
+    /// Normal, from a toward b.
+    n: (f64, f64),
+    /// Offsets of the contact point from a's and b's centres of mass.
+    ra: (f64, f64),
+    rb: (f64, f64),
+    normal_mass: f64,
+    tangent_mass: f64,
+    /// Target relative normal velocity (see `contact.rs`).
+    bounce: f64,
+    normal_impulse: f64,
+    tangent_impulse: f64,
+}
+
+/// The self-contact solver's state: this step's rows and last step's impulses by key.
+#[derive(Debug, Clone, Default)]
+pub struct SelfContactSolver {
+    rows: Vec<Row>,
+    keys: Vec<u64>,
+    previous: Vec<(u64, f64, f64)>,
+}
+
+#[inline]
+fn cross(r: (f64, f64), n: (f64, f64)) -> f64 {
+    r.0 * n.1 - r.1 * n.0
+}
+
+/// Inverse effective mass of the two pieces along direction d at the contact.
+#[inline]
+fn inverse_mass(pieces: &Pieces, row: &Row, d: (f64, f64)) -> f64 {
+    let (ca, cb) = (cross(row.ra, d), cross(row.rb, d));
+    pieces.inv_mass[row.a]
+        + pieces.inv_inertia[row.a] * ca * ca
+        + pieces.inv_mass[row.b]
+        + pieces.inv_inertia[row.b] * cb * cb
+}
+
+/// Velocity of b's contact point relative to a's.
+#[inline]
+fn relative_velocity(pieces: &Pieces, row: &Row) -> (f64, f64) {
+    let va = pieces.point_velocity(row.a, row.ra.0, row.ra.1);
+    let vb = pieces.point_velocity(row.b, row.rb.0, row.rb.1);
+    (vb.0 - va.0, vb.1 - va.1)
+}
+
+/// Applies impulse (px, py) to b and its opposite to a, at the contact point.
+#[inline]
+fn apply(pieces: &mut Pieces, row: &Row, px: f64, py: f64) {
+    for (p, r, sign) in [(row.a, row.ra, -1.0), (row.b, row.rb, 1.0)] {
+        let (im, ii) = (pieces.inv_mass[p], pieces.inv_inertia[p]);
+        let v = &mut pieces.vel[p];
+        v.vx += sign * im * px;
+        v.vy += sign * im * py;
+        v.w += sign * ii * (r.0 * py - r.1 * px);
+    }
+}
+
+impl SelfContactSolver {
+    /// Prepares the rows for `contacts` (sorted by key) and applies the warm-start
+    /// impulses of contacts that persist from the previous step.
+    pub fn prepare(&mut self, contacts: &[PairContact], pieces: &mut Pieces) {
+        self.previous.clear();
+        for (row, key) in self.rows.iter().zip(&self.keys) {
+            self.previous
+                .push((*key, row.normal_impulse, row.tangent_impulse));
+        }
+        self.rows.clear();
+        self.keys.clear();
+        let mut k = 0;
+        for c in contacts {
+            let PairGeometry {
+                n,
+                ra,
+                rb,
+                separation,
+            } = c.evaluate(pieces);
+            let mut row = Row {
+                a: c.a,
+                b: c.b,
+                n,
+                ra,
+                rb,
+                ..Row::default()
+            };
+            let t = (n.1, -n.0);
+            row.normal_mass = 1.0 / inverse_mass(pieces, &row, n);
+            row.tangent_mass = 1.0 / inverse_mass(pieces, &row, t);
+            let (vx, vy) = relative_velocity(pieces, &row);
+            let vn = vx * n.0 + vy * n.1;
+            row.bounce = if separation > 0.0 {
+                -separation / DT
+            } else if vn < -RESTITUTION_VELOCITY {
+                -RESTITUTION * vn
+            } else {
+                0.0
+            };
+            while k < self.previous.len() && self.previous[k].0 < c.key {
+                k += 1;
+            }
+            if let Some(&(key, ni, ti)) = self.previous.get(k) {
+                if key == c.key {
+                    (row.normal_impulse, row.tangent_impulse) = (ni, ti);
+                    apply(pieces, &row, ni * n.0 + ti * t.0, ni * n.1 + ti * t.1);
+                }
+            }
+            self.rows.push(row);
+            self.keys.push(c.key);
+        }
+    }
+
+    /// One sweep: friction, then the normal impulse, for every contact.
+    pub fn solve_velocity(&mut self, pieces: &mut Pieces) {
+        for row in &mut self.rows {
+            let t = (row.n.1, -row.n.0);
+            let (vx, vy) = relative_velocity(pieces, row);
+            let vt = vx * t.0 + vy * t.1;
+            let max = SELF_FRICTION * row.normal_impulse;
+            let old = row.tangent_impulse;
+            row.tangent_impulse = (old - vt * row.tangent_mass).clamp(-max, max);
+            let d = row.tangent_impulse - old;
+            apply(pieces, row, d * t.0, d * t.1);
+
+            let (vx, vy) = relative_velocity(pieces, row);
+            let vn = vx * row.n.0 + vy * row.n.1;
+            let old = row.normal_impulse;
+            row.normal_impulse = (old - (vn - row.bounce) * row.normal_mass).max(0.0);
+            let d = row.normal_impulse - old;
+            apply(pieces, row, d * row.n.0, d * row.n.1);
+        }
+    }
+
+    /// One position sweep over `contacts`; true when none penetrates by more than
+    /// three times the slop.
+    pub fn solve_position(contacts: &[PairContact], pieces: &mut Pieces) -> bool {
+        let mut min_separation: f64 = 0.0;
+        for c in contacts {
+            let PairGeometry {
+                n,
+                ra,
+                rb,
+                separation,
+            } = c.evaluate(pieces);
+            min_separation = min_separation.min(separation);
+            let correction =
+                (BAUMGARTE * (separation + LINEAR_SLOP)).clamp(-MAX_LINEAR_CORRECTION, 0.0);
+            if correction == 0.0 {
+                continue;
+            }
+            let row = Row {
+                a: c.a,
+                b: c.b,
+                ra,
+                rb,
+                ..Row::default()
+            };
+            let impulse = -correction / inverse_mass(pieces, &row, n);
+            let (px, py) = (impulse * n.0, impulse * n.1);
+            pieces.push_position(c.a, -px, -py, ra.0, ra.1);
+            pieces.push_position(c.b, px, py, rb.0, rb.1);
+        }
+        min_separation >= -3.0 * LINEAR_SLOP
+    }
+
+    /// Number of contact rows this step.
+    pub fn len(&self) -> usize {
+        self.rows.len()
+    }
+
+    /// True if no two pieces touch.
+    pub fn is_empty(&self) -> bool {
+        self.rows.is_empty()
+    }
+}
