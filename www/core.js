@@ -64,3 +64,9 @@ export function checkGenome(controller, rows, genome) { wasm.checkGenome(control
 
 /** @returns {number} a fresh seed from the operating system's randomness (getrandom) */
 export function freshSeed() { return wasm.freshSeed(); }
+
+/** '' or why `name` is not a terrain. @param {string} name @returns {string} */
+export function checkTerrain(name) { return wasm.checkTerrain(name); }
+
+/** '' or why `name` is not a training terrain (family or name). @param {string} name @returns {string} */
+export function checkTrainingTerrain(name) { return wasm.checkTrainingTerrain(name); }

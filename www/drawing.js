@@ -81,6 +81,8 @@ export class Drawing {
     const height = lines.length;
     const width = Math.max(...lines.map((r) => r.length));
     if (lines.some((r) => !/^[01]+$/.test(r))) return 'rows hold only 1 (voxel) and 0 (empty), separated by -';
+    const ragged = lines.findIndex((r) => r.length !== lines[0].length);
+    if (ragged > 0) return `every row needs the same number of cells: row ${ragged + 1} has ${lines[ragged].length}, row 1 has ${lines[0].length}`;
     if (width > this.width || height > this.height) {
       return `that shape is ${width} x ${height} cells; the grid holds at most ${this.width} x ${this.height}`;
     }

@@ -15,7 +15,7 @@ export class Editor {
   /**
    * @param {HTMLCanvasElement} canvas
    * @param {import('./drawing.js').Drawing} drawing
-   * @param {{onPaint: () => void, onStroke: () => void}} hooks
+   * @param {{onPaint: () => void, onStroke: () => void, onLocked: () => void}} hooks
    */
   constructor(canvas, drawing, hooks) {
     this.canvas = canvas;
@@ -60,7 +60,8 @@ export class Editor {
 
   /** @param {PointerEvent} e */
   down(e) {
-    if (this.locked || this.stroke || (e.button !== 0 && e.button !== 2)) return;
+    if (this.locked) { this.hooks.onLocked(); return; }
+    if (this.stroke || (e.button !== 0 && e.button !== 2)) return;
     e.preventDefault();
     this.canvas.setPointerCapture(e.pointerId);
     this.stroke = { fill: e.button === 0 && !this.erase, pointer: e.pointerId };

@@ -60,9 +60,9 @@ export class FitnessChart {
     ctx.clearRect(0, 0, width, height);
     const ys = [...this.series.values()].flatMap((s) => s.points.map((p) => p.y)).filter(Number.isFinite);
     const yTicks = ticks(Math.min(0, ...ys), Math.max(0.5, ...ys));
-    const xTicks = ticks(0, this.maxX);
+    const xMax = this.maxX; // the planned evaluations: the run ends at the right edge
+    const xTicks = ticks(0, xMax).filter((v) => v <= xMax);
     const [low, high] = [yTicks[0], yTicks[yTicks.length - 1]];
-    const xMax = xTicks[xTicks.length - 1];
     const x = (/** @type {number} */ v) => PAD.left + (v / xMax) * (width - PAD.left - PAD.right);
     const y = (/** @type {number} */ v) => height - PAD.bottom - ((v - low) / (high - low)) * (height - PAD.top - PAD.bottom);
     ctx.font = FONT;

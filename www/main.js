@@ -11,6 +11,7 @@ import { checkShape, ready, remapGenome, runGenome, transplant, describeRun } fr
 import { Drawing } from './drawing.js';
 import { Editor } from './editor.js';
 import { messageOf } from './kit.js';
+import { MessageBox, plain } from './message.js';
 import { ModuleList } from './modules.js';
 import { RunPanel } from './run-panel.js';
 import { decodeState, encodeState } from './share.js';
@@ -33,13 +34,12 @@ const KEEP_DELAY_MS = 300;
  * @property {string | null} source  the run file whose attention block it carries (fine-tuning), if any
  */
 
+const el = (/** @type {string} */ id) => /** @type {any} */ (document.getElementById(id));
+const messages = new MessageBox(el('message'), el('message-text'), el('message-close'));
 const defaults = await ready.catch((error) => {
-  document.getElementById('message')?.replaceChildren(`The simulator could not load: ${messageOf(error)}`);
-  document.getElementById('message')?.removeAttribute('hidden');
+  messages.show(`The simulator could not load: ${messageOf(error)}`);
   throw error;
 });
-const el = (/** @type {string} */ id) => /** @type {any} */ (document.getElementById(id));
-const message = el('message');
 const drawing = new Drawing(defaults.grid.width, defaults.grid.height);
 const rowsInput = /** @type {HTMLInputElement} */ (el('rows'));
 const controllerSelect = /** @type {HTMLSelectElement} */ (el('controller'));
@@ -49,14 +49,20 @@ let brain = null;
 /** The last check of the drawing. @type {import('./core.js').ShapeCheck} */
 let check = checkShape('');
 let edits = 0;
+/** A brain set aside by choosing another controller family, back if that family is chosen again. @type {Brain | null} */
+let shelved = null;
 let running = false;
 let keepTimer = 0;
 let follow = { last: -Infinity, timer: 0, pending: /** @type {(() => void) | null} */ (null) };
 
-const editor = new Editor(el('editor'), drawing, { onPaint: () => updateCheck(), onStroke: () => bodyChanged() });
+const editor = new Editor(el('editor'), drawing, {
+  onPaint: () => updateCheck(),
+  onStroke: () => bodyChanged(),
+  onLocked: () => messages.show('A run is using this robot: pause or stop it to edit the drawing.', 'note'),
+});
 const viewer = new Viewer(document, {
   message: showMessage,
-  loaded: () => {},
+  loaded: () => messages.clear('error'),
   clicked: (pick) => editWalking(pick),
 });
 const modules = new ModuleList(document, { loadOnto: loadModule, openOwn: openModule, message: showMessage });
@@ -65,21 +71,20 @@ const runs = new RunPanel(document, defaults, {
   controller: () => controllerSelect.value,
   source: () => (brain && brain.controller === 'attention' ? brain.source : null),
   best: onBest,
+  finished: onFinished,
   running: (on) => { running = on; editor.setLocked(on); updateButtons(); },
   message: showMessage,
+  note: (text) => messages.show(text, 'note'),
 });
 
-/** @param {string} text an error or a note for the person, or '' to clear it */
+/** @param {string} text an error for the person, or '' to clear it */
 function showMessage(text) {
-  message.textContent = text;
-  message.hidden = text === '';
-  message.dataset.kind = 'error';
+  messages.show(text, 'error');
 }
 
 /** Validation of the drawing, shown in the message area too. @param {string} text */
 function showValidation(text) {
-  if (text) { showMessage(text); message.dataset.kind = 'validation'; return; }
-  if (message.dataset.kind === 'validation') showMessage('');
+  if (text) messages.show(text, 'validation'); else messages.clear('validation', 'error');
 }
 
 /** Re-checks the drawing: words, pieces, parameter count, buttons. */
@@ -90,14 +95,15 @@ function updateCheck() {
   rowsInput.value = rows;
   const status = el('shape-status');
   if (check.ok) {
-    status.textContent = `${check.voxels} voxels · ${rows}`;
+    status.textContent = `${check.voxels} voxel${check.voxels === 1 ? '' : 's'} · ${rows}`;
     showValidation('');
   } else {
-    const pieces = check.pieces.length > 1 ? ` (each piece has its own colour)` : '';
-    status.textContent = `not a robot yet: ${check.message}${pieces}`;
-    showValidation(`Your drawing is not a robot yet: ${check.message}${pieces}. Evolve and Fine-tune are off until it is.`);
+    const pieces = check.pieces.length > 1 ? `; each of its ${check.pieces.length} pieces has its own colour` : '';
+    status.textContent = check.pieces.length > 1 ? `Not a robot yet: ${check.pieces.length} separate pieces` : 'Not a robot yet: no voxels';
+    showValidation(`Your drawing is not a robot yet: ${plain(check.message)}${pieces}. Evolve and Fine-tune are off until it is.`);
   }
   status.dataset.ok = String(check.ok);
+  presetSelect.value = defaults.presets.find((p) => p.rows === rows)?.rows ?? '';
   updateParams();
   updateButtons();
 }
@@ -151,11 +157,35 @@ function bodyChanged() {
 
 /** Sends the drawing and its brain to the viewer and says what drives it. */
 function showBrain() {
+  if (brain) { controllerSelect.value = brain.controller; shelved = null; }
+  updateParams();
   viewer.show(drawing.rows(), brain ? { controller: brain.controller, genome: brain.genome } : null);
   el('driver').textContent = brain
     ? `Driven by: ${brain.label} (${brain.controller}, ${brain.genome.length} genes).`
     : 'Driven by: the phase gait (no controller yet: evolve one, or load a module).';
   updateButtons();
+}
+
+/**
+ * Another controller family was chosen: the robot's brain belongs to one family, so a brain of
+ * another family is set aside (the phase gait drives the robot until a run gives it one), and
+ * comes back when its family is chosen again.
+ */
+function controllerChosen() {
+  const kind = controllerSelect.value;
+  if (brain && brain.controller !== kind) {
+    const aside = brain;
+    brain = null;
+    showBrain();
+    shelved = aside;
+    messages.show(`The ${aside.controller} brain is set aside (choose ${aside.controller} again to get it back); `
+      + `the phase gait drives the robot until you evolve a ${kind} controller.`, 'note');
+  } else if (!brain && shelved && shelved.controller === kind && shelved.rows === drawing.rows()) {
+    brain = shelved;
+    showBrain();
+  }
+  updateParams();
+  scheduleKeep();
 }
 
 /** @returns {number} the run seed in the form (0 when not a number) */
@@ -166,7 +196,7 @@ function seed() {
 
 /** A click on the walking robot: remove that voxel, or add one next to it. @param {{voxel: number, dx: number, dy: number}} pick */
 function editWalking(pick) {
-  if (running) { showMessage('stop the run to edit the robot'); return; }
+  if (running) { messages.show('A run is using this robot: stop it to edit the robot.', 'note'); return; }
   const box = drawing.box();
   if (!box || !check.ok) return;
   const cells = [];
@@ -179,7 +209,8 @@ function editWalking(pick) {
   if (adding && drawing.has(x, y)) return;
   const after = checkShape(drawing.rowsWith(x, y, adding));
   if (!after.ok) {
-    showMessage(`removing that voxel would split the robot into ${after.pieces.length} pieces; not done`);
+    showMessage(after.pieces.length === 0 ? 'A robot needs at least one voxel; not done'
+      : `Removing that voxel would split the robot into ${after.pieces.length} pieces; not done`);
     return;
   }
   drawing.set(x, y, adding);
@@ -198,7 +229,7 @@ function loadModule(module) {
     brain = {
       controller: info.controller, genome, rows, origin: origin(), module: module.key.startsWith('pretrained/') ? module.key : null,
       source: info.controller === 'attention' ? module.text : null,
-      label: same ? `${module.label}, on its own body` : `the attention of ${module.label}, downstream re-drawn for this body (seed ${seed()})`,
+      label: same ? `${module.label}, on its own body` : `the attention block of a module evolved on ${info.shape}; downstream genes re-drawn for this body (seed ${seed()})`,
     };
     showMessage('');
     showBrain();
@@ -228,49 +259,78 @@ function openModule(module) {
 }
 
 /**
- * A new best from the run panel: it drives the robot (at most every few seconds while a run
- * goes on; at once when the run ended, which also lists its run file as a module).
+ * A new best seen during a run ("walk the best so far"): it drives the robot, at most every
+ * few seconds so that each one walks a while.
  * @param {Float32Array} genome @param {number} fitness
- * @param {import('./protocol.js').EvolveSettings} settings @param {string} kind @param {string | null} runFile
+ * @param {import('./protocol.js').EvolveSettings} settings @param {string} kind
  */
-function onBest(genome, fitness, settings, kind, runFile) {
+function onBest(genome, fitness, settings, kind) {
   const apply = () => {
     follow.last = performance.now();
     follow.pending = null;
     if (settings.shape !== drawing.rows()) return;
-    const finetuned = runFile ? JSON.parse(runFile).config.source !== null : brain?.source !== null && kind === 'attention' && runs.mode === 'finetune';
-    const label = `${finetuned ? 'fine-tuned' : 'evolved'} best (${fitness.toFixed(2)} m/s, seed ${settings.seed})`;
-    const source = runFile && kind === 'attention' ? runFile : brain?.source ?? null;
-    brain = { controller: kind, genome, rows: settings.shape, origin: origin(), label, module: null, source };
-    if (runFile) {
-      try {
-        modules.add({ key: `run:${settings.seed}:${kind}:${finetuned}`, label: `${label} (this page)`, text: runFile });
-      } catch (error) {
-        showMessage(`the finished run could not be listed: ${messageOf(error)}`);
-      }
-    }
+    const what = runs.mode === 'finetune' ? 'fine-tuning' : 'evolving';
+    brain = { controller: kind, genome, rows: settings.shape, origin: origin(), module: null,
+      source: runs.mode === 'finetune' ? brain?.source ?? null : null,
+      label: `the best so far while ${what} (${fitness.toFixed(2)} m/s in one evaluation, seed ${settings.seed})` };
     showBrain();
     scheduleKeep();
   };
   window.clearTimeout(follow.timer);
   const wait = follow.last + FOLLOW_INTERVAL_MS - performance.now();
-  if (runFile || wait <= 0) { apply(); return; }
+  if (wait <= 0) { apply(); return; }
   follow.pending = apply;
   follow.timer = window.setTimeout(() => follow.pending?.(), wait);
+}
+
+/**
+ * A run ended: its run file becomes a module (to watch, export, fine-tune further) and, with
+ * "walk the best so far", its result drives the robot: the run file's best, the best of the
+ * final population by its latest evaluation (what `vsr` reports and replays), which can be
+ * below the best single evaluation seen on the way (fitness is re-measured on fresh terrains).
+ * @param {import('./run-panel.js').FinishedRun} run
+ */
+function onFinished(run) {
+  window.clearTimeout(follow.timer);
+  follow.pending = null;
+  let best;
+  try {
+    best = JSON.parse(run.runFile).best;
+  } catch (error) {
+    showMessage(`the run file could not be read: ${messageOf(error)}`);
+    return;
+  }
+  const what = { evolve: 'evolved', finetune: 'fine-tuned', scratch: 'from scratch' }[run.mode];
+  const label = `${what} ${best.controller}, seed ${run.settings.seed}: ${best.fitness.toFixed(2)} m/s`;
+  try {
+    modules.add({ key: `run:${run.mode}:${run.settings.seed}:${best.controller}:${run.settings.shape}`, label: `${label} (this page)`, text: run.runFile });
+  } catch (error) {
+    showMessage(`the finished run could not be listed: ${messageOf(error)}`);
+  }
+  const peak = Number.isFinite(run.peak) ? `; best single evaluation on the way ${run.peak.toFixed(2)} m/s` : '';
+  const result = `the final population's best, ${best.fitness.toFixed(2)} m/s in its latest evaluation${peak}`;
+  if (run.mode === 'scratch' || !run.follow || run.settings.shape !== drawing.rows()) {
+    messages.show(`The run ${run.stopped ? 'stopped' : 'finished'}: its result (${result}) is in the module list.`, 'note');
+    return;
+  }
+  brain = { controller: best.controller, genome: new Float32Array(best.genome), rows: run.settings.shape, origin: origin(),
+    module: null, source: best.controller === 'attention' ? run.runFile : null, label: `the ${what} run's result: ${result}` };
+  showBrain();
+  scheduleKeep();
 }
 
 /** @returns {import('./share.js').PageState} */
 function pageState() {
   return {
     rows: drawing.rows(), controller: controllerSelect.value, terrain: viewer.terrain.value, run: runs.values(),
-    brain: brain ? { controller: brain.controller, genome: brain.genome, label: brain.label, module: brain.module } : null,
+    brain: brain && brain.rows === drawing.rows()
+      ? { controller: brain.controller, genome: brain.genome, label: brain.label, module: brain.module } : null,
   };
 }
 
 function scheduleKeep() {
   window.clearTimeout(keepTimer);
   keepTimer = window.setTimeout(() => {
-    if (!check.ok && drawing.cells.size > 0) return; // keep the last valid robot, not a half-drawn one
     const problem = keep(encodeState(pageState()));
     if (problem) showMessage(problem);
   }, KEEP_DELAY_MS);
@@ -307,14 +367,16 @@ async function restore(state) {
 async function share() {
   const url = `${location.origin}${location.pathname}#${encodeState(pageState())}`;
   history.replaceState(null, '', url);
-  const out = el('share-link');
-  out.textContent = url;
+  const out = /** @type {HTMLInputElement} */ (el('share-link'));
+  out.value = url;
   out.dataset.value = url;
+  out.hidden = false;
+  out.select();
   try {
     await navigator.clipboard.writeText(url);
-    out.title = 'copied to the clipboard';
+    messages.show('Link copied: it opens this robot, its settings and its controller.', 'note');
   } catch {
-    out.title = 'select and copy this link';
+    messages.show('Here is the link (selected): copy it to share this robot.', 'note');
   }
 }
 
@@ -324,7 +386,6 @@ function wire() {
   presetSelect.addEventListener('change', () => {
     if (!presetSelect.value) return;
     drawing.setRows(presetSelect.value);
-    presetSelect.value = '';
     editor.draw();
     bodyChanged();
   });
@@ -345,12 +406,12 @@ function wire() {
     if ((key === 'z' && e.shiftKey) || key === 'y') { e.preventDefault(); redo(); }
   });
   rowsInput.addEventListener('change', () => {
-    const problem = drawing.setRows(rowsInput.value);
+    const problem = drawing.setRows(rowsInput.value.trim() || '0');
     if (problem) { showMessage(problem); rowsInput.value = drawing.rows(); return; }
     editor.draw();
     bodyChanged();
   });
-  controllerSelect.addEventListener('change', () => { updateParams(); scheduleKeep(); });
+  controllerSelect.addEventListener('change', controllerChosen);
   el('share').addEventListener('click', share);
   for (const input of Object.values(runs.inputs)) input.addEventListener('change', scheduleKeep);
   viewer.terrain.addEventListener('change', scheduleKeep);
@@ -361,9 +422,9 @@ async function start() {
   viewer.terrain.value = defaults.viewTerrain;
   viewer.gait.frequency.value = String(defaults.gait.frequency);
   viewer.gait.phase.value = String(defaults.gait.phase);
-  const fromLink = location.hash.length > 1 ? decodeState(location.hash, defaults.controllers) : null;
+  const fromLink = location.hash.length > 1 ? decodeState(location.hash, defaults.controllers, defaults.grid) : null;
   const kept = loadKept();
-  const fromStorage = kept ? decodeState(kept, defaults.controllers) : null;
+  const fromStorage = kept ? decodeState(kept, defaults.controllers, defaults.grid, true) : null;
   // A link first, else what was kept, else the first preset.
   let refused = '';
   let restored = false;
@@ -383,13 +444,16 @@ async function start() {
   if (refused) linkRefused(refused);
   modules.listPretrained();
   window.addEventListener('hashchange', openLink);
+  window.addEventListener('beforeunload', (event) => {
+    if (running) event.preventDefault(); // the browser asks: leaving ends the run (its best so far is kept)
+  });
 }
 
 /** A link pasted into this tab (only the part after '#' changed): open it, unless a run goes on. */
 async function openLink() {
   if (location.hash.length <= 1) return;
   if (running) { showMessage('stop the run before opening another robot'); return; }
-  const opened = decodeState(location.hash, defaults.controllers);
+  const opened = decodeState(location.hash, defaults.controllers, defaults.grid);
   if ('error' in opened) { linkRefused(opened.error); return; }
   const problem = await restore(opened.state);
   if (problem) { linkRefused(problem); return; }

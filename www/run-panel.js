@@ -9,8 +9,8 @@
  * and hands each new best to the page to watch. A fine-tuning run can be followed by a
  * from-scratch run with the same budget, drawn as a second line.
  */
-import { freshSeed } from './core.js';
-import { messageOf, spawn } from './kit.js';
+import { checkTrainingTerrain, freshSeed } from './core.js';
+import { spawn } from './kit.js';
 import { FitnessChart } from './fitness-chart.js';
 import { FromCoordinator, MAX_EVALUATORS, ToCoordinator } from './protocol.js';
 
@@ -26,10 +26,22 @@ const STYLE = {
  * @property {() => {rows: string, ok: boolean}} body   the drawing now
  * @property {() => string} controller                   the family chosen for Evolve
  * @property {() => string | null} source                the run file of the module on the robot, if any
- * @property {(genome: Float32Array, fitness: number, settings: import('./protocol.js').EvolveSettings, kind: string, runFile: string | null) => void} best
- *   a new best (runFile is set when the run has ended)
+ * @property {(genome: Float32Array, fitness: number, settings: import('./protocol.js').EvolveSettings, kind: string) => void} best
+ *   a new best seen during a run (with "walk the best so far")
+ * @property {(run: FinishedRun) => void} finished     a run ended with a run file
  * @property {(running: boolean) => void} running        a run started or ended
- * @property {(text: string) => void} message            shows an error or a note ('' clears it)
+ * @property {(text: string) => void} message            shows an error ('' clears it)
+ * @property {(text: string) => void} note               shows a note
+ */
+
+/**
+ * @typedef {object} FinishedRun
+ * @property {string} runFile     its run file (JSON text)
+ * @property {import('./protocol.js').EvolveSettings} settings
+ * @property {'evolve' | 'finetune' | 'scratch'} mode
+ * @property {number} peak        the best single evaluation seen (m/s)
+ * @property {boolean} stopped    ended by Stop
+ * @property {boolean} follow     "walk the best so far" is on
  */
 
 export class RunPanel {
@@ -70,6 +82,8 @@ export class RunPanel {
     /** What runs now: 'evolve', 'finetune' or 'scratch' (the comparison), and its series key. */
     this.mode = 'evolve';
     this.bestSoFar = -Infinity;
+    /** Whether the coordinator reported the run started (errors before that: 'not started'). */
+    this.started = false;
     /** Start a from-scratch run when this fine-tuning run finishes. */
     this.compareNext = false;
     /** A download asked for while running, waiting for the coordinator's run file. */
@@ -134,6 +148,8 @@ export class RunPanel {
     if (!Number.isSafeInteger(seed) || seed < 0) return { error: `the seed must be a whole number from 0 to 2^53 - 1, not "${this.inputs.seed.value}"` };
     if (!Number.isInteger(workers) || workers < 1 || workers > MAX_EVALUATORS) return { error: `workers must be a whole number from 1 to ${MAX_EVALUATORS}, not "${this.inputs.workers.value}"` };
     const terrain = this.inputs.terrain.value.trim();
+    const terrainProblem = checkTrainingTerrain(terrain);
+    if (terrainProblem) return { error: `training terrain: ${terrainProblem}` };
     return { settings: { shape: body.rows, controller, seed, seconds, terrain, population, budget }, workers };
   }
 
@@ -145,9 +161,9 @@ export class RunPanel {
   start(mode) {
     if (this.coordinator) return;
     const source = mode === 'finetune' ? this.hooks.source() : null;
-    if (mode === 'finetune' && !source) { this.hooks.message('load an attention module onto your robot first (Load onto my robot)'); return; }
+    if (mode === 'finetune' && !source) { this.refuse('load an attention module onto your robot first (Load onto my robot)'); return; }
     const read = this.readSettings(mode === 'evolve' ? this.hooks.controller() : 'attention');
-    if ('error' in read) { this.hooks.message(read.error); return; }
+    if ('error' in read) { this.refuse(read.error); return; }
     this.hooks.message('');
     this.mode = mode;
     this.compareNext = mode === 'finetune' && this.compare.checked;
@@ -158,6 +174,8 @@ export class RunPanel {
     coordinator.postMessage({ type: ToCoordinator.START, settings, workers: read.workers, source });
     this.coordinator = coordinator;
     this.paused = false;
+    this.started = false;
+    for (const key of ['generation', 'evaluations', 'best', 'genBest', 'median', 'rate']) show(this.out[key], NaN, '–');
     this.setStatus('starting…');
     this.hooks.running(true);
     this.update();
@@ -167,11 +185,11 @@ export class RunPanel {
   onMessage(msg, settings) {
     switch (msg.type) {
       case FromCoordinator.STARTED:
+        this.started = true;
         if (this.mode !== 'scratch') this.chart.clear(msg.planned); else this.chart.extend(msg.planned);
         this.runSettings = settings;
         this.setStatus(`${this.verb()} on ${msg.workers} worker${msg.workers === 1 ? '' : 's'}`);
         show(this.out.evaluations, 0, `0 / ${msg.planned}`);
-        for (const key of ['generation', 'best', 'genBest', 'median', 'rate']) show(this.out[key], NaN, '–');
         break;
       case FromCoordinator.GENERATION: this.onGeneration(msg, settings); break;
       case FromCoordinator.STATE:
@@ -180,18 +198,24 @@ export class RunPanel {
         this.update();
         break;
       case FromCoordinator.RUN_FILE:
-        if (this.exportWanted && msg.runFile) download(msg.runFile, this.fileName(settings));
+        if (this.exportWanted && msg.runFile) download(msg.runFile, RunPanel.fileName(msg.runFile));
         this.exportWanted = false;
         break;
       case FromCoordinator.RECOVERED: this.hooks.message(msg.message); break;
       case FromCoordinator.DONE: this.onDone(msg, settings); break;
-      case FromCoordinator.ERROR: this.end(msg.message, 'failed'); break;
+      case FromCoordinator.ERROR: this.end(msg.message, this.started ? 'failed' : 'not started'); break;
       default: console.warn('unknown message from the coordinator', msg);
     }
   }
 
   verb() {
-    return { evolve: 'evolving', finetune: 'fine-tuning', scratch: 'from scratch' }[this.mode] ?? 'running';
+    return { evolve: 'evolving', finetune: 'fine-tuning', scratch: 'from scratch: evolving' }[this.mode] ?? 'running';
+  }
+
+  /** A run that cannot start: the message, and the status says so. @param {string} why */
+  refuse(why) {
+    this.hooks.message(why);
+    this.setStatus('not started');
   }
 
   /**
@@ -216,7 +240,7 @@ export class RunPanel {
     }
     this.chart.draw();
     if (msg.best && this.follow.checked && this.mode !== 'scratch') {
-      this.hooks.best(msg.best.genome, msg.best.fitness, settings, this.kind(settings), null);
+      this.hooks.best(msg.best.genome, msg.best.fitness, settings, this.kind(settings));
     }
   }
 
@@ -228,17 +252,13 @@ export class RunPanel {
   /** @param {{stopped: boolean, runFile: string | null}} msg @param {import('./protocol.js').EvolveSettings} settings */
   onDone(msg, settings) {
     const compare = this.compareNext && !msg.stopped;
-    if (msg.runFile && this.mode !== 'scratch') {
-      this.runFile = msg.runFile;
-      this.runSettings = settings;
-      try {
-        const best = JSON.parse(msg.runFile).best;
-        this.hooks.best(new Float32Array(best.genome), best.fitness, settings, this.kind(settings), msg.runFile);
-      } catch (error) {
-        this.hooks.message(`the run file could not be read: ${messageOf(error)}`);
-      }
+    if (msg.runFile) {
+      if (this.mode !== 'scratch') { this.runFile = msg.runFile; this.runSettings = settings; }
+      this.hooks.finished({ runFile: msg.runFile, settings, mode: /** @type {any} */ (this.mode), peak: this.bestSoFar,
+        stopped: msg.stopped, follow: this.follow.checked });
     }
-    this.end('', msg.stopped ? 'stopped' : 'finished');
+    const how = msg.stopped ? 'stopped' : 'finished';
+    this.end('', this.mode === 'scratch' ? `from scratch: ${how}` : how);
     if (compare) this.start('scratch');
   }
 
@@ -249,13 +269,13 @@ export class RunPanel {
       this.send(ToCoordinator.RUN_FILE);
       return;
     }
-    if (this.runFile && this.runSettings) download(this.runFile, this.fileName(this.runSettings));
+    if (this.runFile) download(this.runFile, RunPanel.fileName(this.runFile));
   }
 
-  /** @param {import('./protocol.js').EvolveSettings} s */
-  fileName(s) {
-    const what = this.mode === 'finetune' || (this.runFile && JSON.parse(this.runFile).config.source) ? 'finetuned-attention' : `evolved-${s.controller}`;
-    return `${what}-seed${s.seed}.json`;
+  /** A download name that says what the run file holds. @param {string} runFile */
+  static fileName(runFile) {
+    const { config } = JSON.parse(runFile);
+    return `${config.source ? `finetuned-${config.controller}` : `evolved-${config.controller}`}-seed${config.seed}.json`;
   }
 
   /** The run ended: an error message (or ''), and the status to show. @param {string} error @param {string} status */
@@ -272,7 +292,7 @@ export class RunPanel {
   /** @param {string} text */
   setStatus(text) {
     this.out.status.textContent = text;
-    document.body.dataset.run = text.split(' ')[0].replace('…', '');
+    document.body.dataset.run = text.replace(/^from scratch: /, '').split(' ')[0].replace('…', '');
   }
 
   /** Enables the buttons that apply now. */
@@ -282,6 +302,9 @@ export class RunPanel {
     const body = this.hooks.body();
     b.evolve.disabled = running || !body.ok;
     b.finetune.disabled = running || !body.ok || this.hooks.source() === null;
+    b.finetune.title = b.finetune.disabled && !running && this.hooks.source() === null
+      ? 'First load an attention module onto your robot (Transplant a module, Load onto my robot)'
+      : 'Evolve only the downstream genes of the module on your robot; its attention stays frozen';
     for (const key of ['quick', 'paper', 'dice']) b[key].disabled = running;
     for (const input of Object.values(this.inputs)) input.disabled = running;
     b.pause.disabled = !running;

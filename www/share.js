@@ -6,7 +6,7 @@
  * little-endian, so every bit survives) with where it came from. Reading checks everything
  * with the core and returns a message instead of a state when anything is wrong.
  */
-import { checkGenome, checkShape } from './core.js';
+import { checkGenome, checkShape, checkTerrain, checkTrainingTerrain } from './core.js';
 import { messageOf } from './kit.js';
 
 /**
@@ -38,26 +38,41 @@ export function encodeState(state) {
 }
 
 /**
+ * Reads a state and checks all of it: the robot (valid, and within the grid), the controller,
+ * the terrains, every run setting and the genome (the core's checks). A draft (the kept state
+ * of a drawing not finished yet) may be an invalid robot; it then has no brain.
  * @param {string} text URL-hash parameters (with or without '#')
  * @param {string[]} controllers the families the page knows
+ * @param {{width: number, height: number}} grid the editor's grid
+ * @param {boolean} [draft] accept an unfinished drawing
  * @returns {{state: PageState} | {error: string}}
  */
-export function decodeState(text, controllers) {
+export function decodeState(text, controllers, grid, draft = false) {
   try {
     const p = new URLSearchParams(text.replace(/^#/, ''));
     const rows = p.get('shape') ?? '';
+    const lines = rows.split('-');
+    if (!/^[01]+(-[01]+)*$/.test(rows)) return { error: `its robot "${rows.slice(0, 40)}" is not rows of 0 and 1` };
+    if (lines.length > grid.height || lines.some((l) => l.length > grid.width)) {
+      return { error: `its robot does not fit the ${grid.width} x ${grid.height} drawing grid` };
+    }
     const check = checkShape(rows);
-    if (!check.ok) return { error: `its robot is not valid: ${check.message}` };
+    if (!check.ok && !(draft && check.pieces.length > 0)) return { error: `its robot is not valid: ${check.message}` };
     const controller = p.get('controller') ?? controllers[0];
     if (!controllers.includes(controller)) return { error: `unknown controller "${controller}"` };
+    const view = p.get('view') ?? '';
+    if (view && checkTerrain(view)) return { error: checkTerrain(view) };
     /** @type {Record<string, string>} */
     const run = {};
     for (const k of RUN_KEYS) {
       const v = p.get(k === 'terrain' ? 'train' : k);
-      if (v !== null) run[k] = v;
+      if (v === null) continue;
+      const problem = settingProblem(k, v);
+      if (problem) return { error: problem };
+      run[k] = v;
     }
     let brain = null;
-    const genomeText = p.get('genome');
+    const genomeText = check.ok ? p.get('genome') : null;
     if (genomeText !== null) {
       const kind = p.get('brain') ?? '';
       if (!controllers.includes(kind)) return { error: `unknown controller "${kind}" for its genome` };
@@ -66,9 +81,25 @@ export function decodeState(text, controllers) {
       const module = p.get('module');
       brain = { controller: kind, genome, label: p.get('label') ?? `${kind} from a link`, module: module && /^pretrained\/[\w.-]+\.json$/.test(module) ? module : null };
     }
-    return { state: { rows, controller, terrain: p.get('view') ?? '', run, brain } };
+    return { state: { rows, controller, terrain: view, run, brain } };
   } catch (error) {
     return { error: messageOf(error) };
+  }
+}
+
+/**
+ * '' or what is wrong with a run setting read from a link.
+ * @param {string} key @param {string} value
+ */
+function settingProblem(key, value) {
+  const n = Number(value);
+  switch (key) {
+    case 'population': return Number.isInteger(n) && n >= 1 && n <= 100_000 ? '' : `population "${value}" is not a whole number from 1`;
+    case 'seconds': return n > 0 && n <= 3600 ? '' : `episode seconds "${value}" are not in (0, 3600]`;
+    case 'budget': return Number.isInteger(n) && n >= 1 && n <= 10_000_000 ? '' : `budget "${value}" is not a whole number of evaluations from 1 to 10,000,000`;
+    case 'seed': return Number.isSafeInteger(n) && n >= 0 ? '' : `seed "${value}" is not a whole number from 0 to 2^53 - 1`;
+    case 'terrain': return checkTrainingTerrain(value);
+    default: return '';
   }
 }
 

@@ -67,7 +67,7 @@ export class Viewer {
 
   /** @returns {Worker} a new simulation worker, told to load the wanted episode */
   startWorker() {
-    const w = spawn('worker.js', (msg) => this.onMessage(msg), (text) => this.onError(`the simulation stopped: ${text}`, true));
+    const w = spawn('worker.js', (msg) => this.onMessage(msg), () => this.onError('The simulation worker crashed; a new one took over.', true));
     w.postMessage({ type: ToWorker.SPEED, speed: Number(this.speed.value) });
     if (this.wanted) w.postMessage({ type: ToWorker.LOAD, params: this.wanted });
     if (this.running) w.postMessage({ type: ToWorker.START });
@@ -111,7 +111,11 @@ export class Viewer {
   /** @param {string} text @param {boolean} fatal */
   onError(text, fatal) {
     this.hooks.message(text);
-    if (!fatal) { this.wanted = this.current; return; }
+    if (!fatal) {
+      this.wanted = this.current;
+      if (this.current) this.terrain.value = this.current.terrain; // a refused terrain does not stay typed
+      return;
+    }
     this.worker.terminate();
     if (this.restarts++ < MAX_RESTARTS) this.worker = this.startWorker();
   }

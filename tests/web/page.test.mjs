@@ -61,7 +61,8 @@ test('draw a robot cell by cell: the parameter count follows and the viewer walk
 test('a disconnected drawing names its pieces and turns Evolve off; undo and redo', async () => {
   await clickCells(page, [[5, 0], [7, 3]]);
   await waitForText(page, 'message', /3 separate pieces/);
-  assert.match(String(await page.locator('#shape-status').textContent()), /each piece has its own colour/);
+  assert.match(String(await byTestId(page, 'message').textContent()), /each of its 3 pieces has its own colour/);
+  assert.match(String(await page.locator('#shape-status').textContent()), /^Not a robot yet: 3 separate pieces$/);
   assert.equal(await byTestId(page, 'evolve').isDisabled(), true);
   assert.equal(await byTestId(page, 'finetune').isDisabled(), true);
   assert.equal(await byTestId(page, 'load-pretrained').isDisabled(), true);

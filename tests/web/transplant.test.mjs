@@ -46,7 +46,7 @@ test('a pretrained attention module loads onto a drawn body and walks at once', 
   await byTestId(page, 'pretrained').selectOption(ATTENTION);
   await byTestId(page, 'load-pretrained').click();
   await waitForText(page, 'status', /^13 voxels, attention$/);
-  await waitForText(page, 'driver', /downstream re-drawn for this body/);
+  await waitForText(page, 'driver', /attention block of a module evolved on 1111-1111-1001; downstream genes re-drawn for this body/);
   assert.equal(await byTestId(page, 'finetune').isEnabled(), true);
   const t0 = await figure(page, 'sim-time');
   await waitForFigure(page, 'sim-time', `v >= ${t0 + 3}`, 30_000);
@@ -67,9 +67,9 @@ test('Fine-tune runs live, keeps the 32 attention genes, and the from-scratch li
   await waitForText(page, 'run-status', /^from scratch/, 60_000);
   const finetuneSeconds = (Date.now() - started) / 1000;
   assert.match(String(await byTestId(page, 'evaluations').textContent()), /\/ 30$/, 'the same budget from scratch');
-  await page.waitForFunction(() => document.body.dataset.run === 'finished', undefined, { timeout: 120_000 });
+  await waitForText(page, 'run-status', /^from scratch: finished$/, 120_000);
   assert.equal(await byTestId(page, 'fitness-chart').getAttribute('data-series'), 'finetune,scratch');
-  await waitForText(page, 'driver', /fine-tuned best/);
+  await waitForText(page, 'driver', /the fine-tuned run's result/);
   console.log(`# a 30-evaluation fine-tune in the page took ${finetuneSeconds.toFixed(1)} s`);
 
   const [download] = await Promise.all([page.waitForEvent('download'), byTestId(page, 'export').click()]);
@@ -111,6 +111,18 @@ test('the page\'s fine-tuning equals vsr finetune bit for bit', async () => {
   assert.deepEqual(inPage.best.genome, native.best.genome);
   assert.equal(inPage.best.fitness, native.best.fitness);
   assert.deepEqual(inPage.config, native.config);
+  assert.deepEqual(problems, []);
+});
+
+test('choosing another controller family sets the brain aside; choosing it again brings it back', async () => {
+  await byTestId(page, 'controller').selectOption('mlp');
+  await waitForText(page, 'status', /phase gait$/);
+  await waitForText(page, 'message', /attention brain is set aside/);
+  assert.equal(await page.locator('#param-count').getAttribute('data-value'), String(4 * 13 + 1));
+  assert.equal(await byTestId(page, 'finetune').isDisabled(), true, 'no module on the robot now');
+  await byTestId(page, 'controller').selectOption('attention');
+  await waitForText(page, 'status', /^13 voxels, attention$/);
+  await waitForText(page, 'driver', /fine-tuned run's result/);
   assert.deepEqual(problems, []);
 });
 

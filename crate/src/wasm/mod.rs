@@ -19,7 +19,8 @@ pub use bench::bench_episode;
 pub use episode::Episode;
 pub use evolution::{evaluate_job, Evolution};
 pub use page::{
-    check_genome, check_shape, defaults, describe_run, fresh_seed, remap, run_genome, transplant,
+    check_genome, check_shape, check_terrain, check_training_terrain, defaults, describe_run,
+    fresh_seed, remap, run_genome, transplant,
 };
 
 use wasm_bindgen::prelude::wasm_bindgen;

@@ -10,9 +10,9 @@ use crate::controllers::{remap_genome, ControllerKind, ATTENTION_PARAMS};
 use crate::experiment::config::{PAPER_SECONDS, PAPER_TERRAIN};
 use crate::experiment::finetune::initial_population;
 use crate::experiment::seeds::{evaluation_seed, Purpose};
-use crate::experiment::{source_of, EvolutionConfig, RunFile};
+use crate::experiment::{source_of, EvolutionConfig, RunFile, TrainingTerrain};
 use crate::genetics::GaConfig;
-use crate::simulation::Shape;
+use crate::simulation::{Shape, Terrain};
 
 /// The drawing grid of the page's editor (cells).
 const GRID: Grid = Grid {
@@ -286,4 +286,18 @@ pub fn fresh_seed() -> Result<f64, JsError> {
     getrandom::getrandom(&mut bytes)
         .map_err(|e| JsError::new(&format!("no randomness available: {e}")))?;
     Ok((u64::from_le_bytes(bytes) & crate::experiment::config::MAX_SEED) as f64)
+}
+
+/// `''` when `name` is a terrain the viewer can show (`flat`, `hilly-1-10-0`, ...), else
+/// why not, in words.
+#[wasm_bindgen(js_name = checkTerrain)]
+pub fn check_terrain(name: &str) -> String {
+    Terrain::parse(name).map_or_else(|e| e.to_string(), |_| String::new())
+}
+
+/// `''` when `name` is a training terrain (a family such as `hilly-1-10`, or a terrain
+/// name), else why not, in words.
+#[wasm_bindgen(js_name = checkTrainingTerrain)]
+pub fn check_training_terrain(name: &str) -> String {
+    TrainingTerrain::parse(name).map_or_else(|e| e.to_string(), |_| String::new())
 }
