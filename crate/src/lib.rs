@@ -11,6 +11,7 @@ pub mod experiment;
 pub mod genetics;
 pub mod random;
 pub mod simulation;
+pub mod statistics;
 
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;

@@ -10,8 +10,7 @@
 //! and K[c][k] = s_c w_k[k] + b_k[k]; A = tanh(Q K^T / sqrt 8) (4x4, row-major, kept per voxel
 //! in `attention`, 16 floats per voxel); u_i = tanh(b + sum_r W[r n + i] tanh((A s)_r)).
 
-use super::{io_fits, validate_params, Controller, SENSORS_PER_VOXEL};
-use crate::Result;
+use super::{io_fits, Controller, Params, SENSORS_PER_VOXEL};
 use libm::tanhf;
 
 /// Width d of the query and key projections.
@@ -23,7 +22,7 @@ const SQRT_DIM: f32 = 2.0 * core::f32::consts::SQRT_2;
 
 /// Computes one voxel's attention matrix `a` (16, row-major) from the attention block
 /// `block` (32) and its readings `s` (4).
-pub(crate) fn attention_matrix(block: &[f32], s: &[f32], a: &mut [f32]) {
+fn attention_matrix(block: &[f32], s: &[f32], a: &mut [f32]) {
     let (w_q, rest) = block.split_at(ATTENTION_DIM);
     let (b_q, rest) = rest.split_at(ATTENTION_DIM);
     let (w_k, b_k) = rest.split_at(ATTENTION_DIM);
@@ -45,7 +44,7 @@ pub(crate) fn attention_matrix(block: &[f32], s: &[f32], a: &mut [f32]) {
 
 /// The downstream output of voxel `i` of `n`, from the downstream block `down` (4n + 1),
 /// the matrix `a` in use and the readings `s`.
-pub(crate) fn downstream(down: &[f32], n: usize, i: usize, a: &[f32], s: &[f32]) -> f32 {
+fn downstream(down: &[f32], n: usize, i: usize, a: &[f32], s: &[f32]) -> f32 {
     let mut sum = down[SENSORS_PER_VOXEL * n];
     for r in 0..SENSORS_PER_VOXEL {
         let row = &a[r * SENSORS_PER_VOXEL..(r + 1) * SENSORS_PER_VOXEL];
@@ -59,7 +58,7 @@ pub(crate) fn downstream(down: &[f32], n: usize, i: usize, a: &[f32], s: &[f32])
 #[derive(Debug, Clone)]
 pub struct Attention {
     n: usize,
-    params: Vec<f32>,
+    params: Params,
     /// Current A of every voxel, 16 floats per voxel (zero until the first control call).
     attention: Vec<f32>,
 }
@@ -69,7 +68,7 @@ impl Attention {
     pub fn new(n_voxels: usize) -> Self {
         Self {
             n: n_voxels,
-            params: vec![0.0; Self::param_count_for(n_voxels)],
+            params: Params::zeros(Self::param_count_for(n_voxels)),
             attention: vec![0.0; 16 * n_voxels],
         }
     }
@@ -95,10 +94,16 @@ impl Attention {
 
     /// Applies the stored A of every voxel to the live readings (lengths already checked).
     pub(crate) fn apply_attention(&self, sensors: &[f32], out: &mut [f32]) {
+        self.apply_matrices(&self.attention, sensors, out);
+    }
+
+    /// Applies `matrices` (16 floats per voxel, in place of the stored A) to the live
+    /// readings through the downstream block (lengths already checked).
+    pub(crate) fn apply_matrices(&self, matrices: &[f32], sensors: &[f32], out: &mut [f32]) {
         let down = &self.params[ATTENTION_PARAMS..];
         for (i, u) in out.iter_mut().enumerate() {
             let s = &sensors[SENSORS_PER_VOXEL * i..SENSORS_PER_VOXEL * (i + 1)];
-            *u = downstream(down, self.n, i, &self.attention[16 * i..16 * (i + 1)], s);
+            *u = downstream(down, self.n, i, &matrices[16 * i..16 * (i + 1)], s);
         }
     }
 
@@ -109,18 +114,12 @@ impl Attention {
 }
 
 impl Controller for Attention {
-    fn param_count(&self) -> usize {
-        self.params.len()
+    fn genome(&self) -> &Params {
+        &self.params
     }
 
-    fn params(&self) -> Vec<f32> {
-        self.params.clone()
-    }
-
-    fn set_params(&mut self, p: &[f32]) -> Result<()> {
-        validate_params(self.params.len(), p)?;
-        self.params.copy_from_slice(p);
-        Ok(())
+    fn genome_mut(&mut self) -> &mut Params {
+        &mut self.params
     }
 
     fn reset(&mut self) {

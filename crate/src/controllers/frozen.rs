@@ -5,7 +5,7 @@
 //! live readings: u_i = tanh(b + sum_r W[r n + i] tanh((A_frozen s)_r)). `reset()` keeps the
 //! frozen matrices, so a fresh episode can run with them. The genome layout is the attention one.
 
-use super::{io_fits, Attention, Controller, ATTENTION_FLOATS_PER_VOXEL};
+use super::{io_fits, Attention, Controller, Params, ATTENTION_FLOATS_PER_VOXEL};
 use crate::{Error, Result};
 
 /// Attention whose per-voxel matrices can be frozen; see the module doc.
@@ -60,16 +60,12 @@ impl FrozenAttention {
 }
 
 impl Controller for FrozenAttention {
-    fn param_count(&self) -> usize {
-        self.inner.param_count()
+    fn genome(&self) -> &Params {
+        self.inner.genome()
     }
 
-    fn params(&self) -> Vec<f32> {
-        self.inner.params()
-    }
-
-    fn set_params(&mut self, p: &[f32]) -> Result<()> {
-        self.inner.set_params(p)
+    fn genome_mut(&mut self) -> &mut Params {
+        self.inner.genome_mut()
     }
 
     fn reset(&mut self) {

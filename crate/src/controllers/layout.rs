@@ -9,7 +9,7 @@
 //! - MLP: 1 row of (4 per voxel) | bias                         (W[4 i + j], b)
 //! - MLP-Comm: 5 rows of (8 per voxel, then the row's bias)     (P[o (8n + 1) + 8 i + j])
 
-use super::{ControllerKind, ATTENTION_PARAMS};
+use super::{ControllerKind, ATTENTION_PARAMS, SLOW_GENES};
 use crate::random::rng_from;
 use crate::simulation::Shape;
 use crate::Result;
@@ -30,7 +30,7 @@ impl GenomeLayout {
     pub fn of(kind: ControllerKind) -> Self {
         let (prefix, rows, per_voxel, row_tail, tail) = match kind {
             ControllerKind::Attention => (ATTENTION_PARAMS, 4, 1, 0, 1),
-            ControllerKind::SlowAttention => (ATTENTION_PARAMS, 4, 1, 0, 3),
+            ControllerKind::SlowAttention => (ATTENTION_PARAMS, 4, 1, 0, 1 + SLOW_GENES),
             ControllerKind::Mlp => (0, 1, 4, 0, 1),
             ControllerKind::MlpComm => (0, 5, 8, 1, 0),
         };

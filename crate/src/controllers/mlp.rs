@@ -4,15 +4,14 @@
 //! `j` of voxel `i` (the one-hot position encoding: voxel `i` only sees its own 4 slots), then
 //! `[4 n]` the bias b. Output: u_i = tanh(b + sum_j W[4 i + j] tanh(s_j)).
 
-use super::{io_fits, validate_params, Controller, SENSORS_PER_VOXEL};
-use crate::Result;
+use super::{io_fits, Controller, Params, SENSORS_PER_VOXEL};
 use libm::tanhf;
 
 /// MLP controller for `n` voxels; see the module doc for the genome layout.
 #[derive(Debug, Clone)]
 pub struct Mlp {
     n: usize,
-    params: Vec<f32>,
+    params: Params,
 }
 
 impl Mlp {
@@ -20,7 +19,7 @@ impl Mlp {
     pub fn new(n_voxels: usize) -> Self {
         Self {
             n: n_voxels,
-            params: vec![0.0; Self::param_count_for(n_voxels)],
+            params: Params::zeros(Self::param_count_for(n_voxels)),
         }
     }
 
@@ -31,18 +30,12 @@ impl Mlp {
 }
 
 impl Controller for Mlp {
-    fn param_count(&self) -> usize {
-        self.params.len()
+    fn genome(&self) -> &Params {
+        &self.params
     }
 
-    fn params(&self) -> Vec<f32> {
-        self.params.clone()
-    }
-
-    fn set_params(&mut self, p: &[f32]) -> Result<()> {
-        validate_params(self.params.len(), p)?;
-        self.params.copy_from_slice(p);
-        Ok(())
+    fn genome_mut(&mut self) -> &mut Params {
+        &mut self.params
     }
 
     fn reset(&mut self) {}

@@ -12,8 +12,7 @@
 //! voxel `i` (one-hot position encoding) and slot `8 n` is the bias. So output `o` of voxel `i`
 //! is tanh(P[o (8n + 1) + 8 n] + sum_j P[o (8n + 1) + 8 i + j] tanh(x_j)).
 
-use super::{io_fits, opposite, validate_params, Controller, Topology, SENSORS_PER_VOXEL};
-use crate::Result;
+use super::{io_fits, opposite, Controller, Params, Topology, SENSORS_PER_VOXEL};
 use libm::tanhf;
 
 /// Outputs per voxel: 1 actuation + 4 directional messages.
@@ -25,7 +24,7 @@ const INPUTS: usize = 8;
 #[derive(Debug, Clone)]
 pub struct MlpComm {
     topology: Topology,
-    params: Vec<f32>,
+    params: Params,
     /// Messages each voxel sent at the previous call, `[to_up, to_right, to_down, to_left]`.
     sent: Vec<[f32; 4]>,
     /// Scratch for the messages being sent at this call.
@@ -38,7 +37,7 @@ impl MlpComm {
         let n = topology.voxel_count();
         Self {
             topology,
-            params: vec![0.0; Self::param_count_for(n)],
+            params: Params::zeros(Self::param_count_for(n)),
             sent: vec![[0.0; 4]; n],
             sending: vec![[0.0; 4]; n],
         }
@@ -80,18 +79,12 @@ impl MlpComm {
 }
 
 impl Controller for MlpComm {
-    fn param_count(&self) -> usize {
-        self.params.len()
+    fn genome(&self) -> &Params {
+        &self.params
     }
 
-    fn params(&self) -> Vec<f32> {
-        self.params.clone()
-    }
-
-    fn set_params(&mut self, p: &[f32]) -> Result<()> {
-        validate_params(self.params.len(), p)?;
-        self.params.copy_from_slice(p);
-        Ok(())
+    fn genome_mut(&mut self) -> &mut Params {
+        &mut self.params
     }
 
     fn reset(&mut self) {

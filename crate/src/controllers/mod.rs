@@ -17,6 +17,7 @@ mod kind;
 mod layout;
 mod mlp;
 mod mlp_comm;
+mod params;
 mod slow;
 mod topology;
 
@@ -26,7 +27,8 @@ pub use kind::{build, ControllerKind};
 pub use layout::{remap_genome, GenomeLayout};
 pub use mlp::Mlp;
 pub use mlp_comm::{MlpComm, MLP_COMM_OUTPUTS};
-pub use slow::SlowAttention;
+pub use params::Params;
+pub use slow::{split_slow_genome, SlowAttention, SlowRates, SLOW_GENES};
 pub use topology::{opposite, Topology, DIRECTION_NAMES, DOWN, LEFT, RIGHT, UP};
 
 use crate::{Error, Result};
@@ -38,13 +40,23 @@ pub const ATTENTION_FLOATS_PER_VOXEL: usize = 16;
 
 /// A voxel controller: the same parameters drive every voxel of a robot.
 pub trait Controller: Send {
+    /// The stored genome, in the controller's documented layout.
+    fn genome(&self) -> &Params;
+    /// The stored genome, to replace through [`Params::set`] (which checks it).
+    fn genome_mut(&mut self) -> &mut Params;
     /// Length of the genome this controller reads.
-    fn param_count(&self) -> usize;
+    fn param_count(&self) -> usize {
+        self.genome().len()
+    }
     /// The current parameters, in the controller's documented genome layout.
-    fn params(&self) -> Vec<f32>;
+    fn params(&self) -> Vec<f32> {
+        self.genome().to_vec()
+    }
     /// Replaces the parameters. Fails, leaving the controller unchanged, on a length mismatch
     /// or a non-finite value.
-    fn set_params(&mut self, p: &[f32]) -> Result<()>;
+    fn set_params(&mut self, p: &[f32]) -> Result<()> {
+        self.genome_mut().set(p)
+    }
     /// Clears the state carried between control calls (messages, slow attention), as at the
     /// start of an episode.
     fn reset(&mut self);

@@ -1,20 +1,48 @@
-//! Slow attention (SPEC 7): the attention controller whose matrix changes slowly.
+//! Slow attention (SPEC 7): the attention controller whose matrix changes slowly. It wraps
+//! [`Attention`] (as frozen attention does) and owns only what it adds: two genes and A'.
 //!
 //! Genome layout (`32 + 4 n + 1 + 2` floats): the attention genome (see `attention`) followed
-//! by two genes g1, g2 at the END. alpha = min(|g1|, 1), eta = min(|g2|, 1). At the first control
-//! call after `reset`, A'(0) = A; at every later call A'(k) = alpha A + eta A'(k-1), where A is
-//! computed from the live readings as in plain attention. The downstream uses A', and
-//! `attention()` returns A' (16 floats per voxel). With alpha = 1, eta = 0 this is attention.
+//! by the [`SLOW_GENES`] = 2 genes g1, g2 at the END; alpha = min(|g1|, 1), eta = min(|g2|, 1)
+//! ([`split_slow_genome`] is the one place that reads them). At the first control call after
+//! `reset`, A'(0) = A; at every later call A'(k) = alpha A + eta A'(k-1), where A is computed
+//! from the live readings as in plain attention. The downstream uses A', and `attention()`
+//! returns A' (16 floats per voxel). With alpha = 1, eta = 0 this is attention.
 
-use super::attention::{attention_matrix, downstream};
-use super::{io_fits, validate_params, Controller, ATTENTION_PARAMS, SENSORS_PER_VOXEL};
+use super::{io_fits, Attention, Controller, Params, ATTENTION_FLOATS_PER_VOXEL};
 use crate::Result;
+
+/// Genes slow attention appends to the attention genome: g1 (alpha), then g2 (eta).
+pub const SLOW_GENES: usize = 2;
+
+/// The two rates of slow attention, derived from its last two genes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SlowRates {
+    /// Weight of the fresh matrix: min(|g1|, 1).
+    pub alpha: f32,
+    /// Weight of the previous matrix: min(|g2|, 1).
+    pub eta: f32,
+}
+
+/// Splits a slow-attention genome into its attention genome and its rates; `None` when it is
+/// too short to hold the two genes.
+pub fn split_slow_genome(genome: &[f32]) -> Option<(&[f32], SlowRates)> {
+    let cut = genome.len().checked_sub(SLOW_GENES)?;
+    let (attention, genes) = genome.split_at(cut);
+    let rates = SlowRates {
+        alpha: genes[0].abs().min(1.0),
+        eta: genes[1].abs().min(1.0),
+    };
+    Some((attention, rates))
+}
 
 /// Slow-attention controller; see the module doc for the genome layout and the update.
 #[derive(Debug, Clone)]
 pub struct SlowAttention {
-    n: usize,
-    params: Vec<f32>,
+    /// Plain attention holding the genome without the two slow genes; computes A.
+    inner: Attention,
+    /// The whole genome (attention genome, g1, g2).
+    params: Params,
+    rates: SlowRates,
     /// A' of every voxel, 16 floats per voxel.
     slow: Vec<f32>,
     /// False until the first control call after a reset (then A' starts at A).
@@ -25,79 +53,79 @@ impl SlowAttention {
     /// A slow-attention controller for `n_voxels` voxels with every parameter at zero.
     pub fn new(n_voxels: usize) -> Self {
         Self {
-            n: n_voxels,
-            params: vec![0.0; Self::param_count_for(n_voxels)],
-            slow: vec![0.0; 16 * n_voxels],
+            inner: Attention::new(n_voxels),
+            params: Params::zeros(Self::param_count_for(n_voxels)),
+            rates: SlowRates {
+                alpha: 0.0,
+                eta: 0.0,
+            },
+            slow: vec![0.0; ATTENTION_FLOATS_PER_VOXEL * n_voxels],
             started: false,
         }
     }
 
     /// Genome length: 32 + 4 n + 1 + 2 (75 for the biped, 79 for the comb).
     pub fn param_count_for(n_voxels: usize) -> usize {
-        ATTENTION_PARAMS + SENSORS_PER_VOXEL * n_voxels + 3
+        Attention::param_count_for(n_voxels) + SLOW_GENES
     }
 
     /// Weight of the fresh matrix: min(|g1|, 1).
     pub fn alpha(&self) -> f32 {
-        self.params[self.params.len() - 2].abs().min(1.0)
+        self.rates.alpha
     }
 
     /// Weight of the previous matrix: min(|g2|, 1).
     pub fn eta(&self) -> f32 {
-        self.params[self.params.len() - 1].abs().min(1.0)
+        self.rates.eta
     }
 
-    /// Updates A' of every voxel from the live readings (lengths already checked).
-    fn update(&mut self, sensors: &[f32]) {
-        let (alpha, eta) = (self.alpha(), self.eta());
-        let block = &self.params[..ATTENTION_PARAMS];
-        let mut fresh = [0.0f32; 16];
-        let rows = sensors.chunks_exact(SENSORS_PER_VOXEL);
-        for (s, slow) in rows.zip(self.slow.chunks_exact_mut(16)) {
-            attention_matrix(block, s, &mut fresh);
-            for (a_prime, a) in slow.iter_mut().zip(&fresh) {
-                *a_prime = if self.started {
-                    alpha * a + eta * *a_prime
-                } else {
-                    *a
-                };
-            }
+    /// Updates A' of every voxel from the fresh A the inner attention just computed.
+    fn blend(&mut self) {
+        let SlowRates { alpha, eta } = self.rates;
+        let fresh = self.inner.attention().unwrap_or_default();
+        for (a_prime, a) in self.slow.iter_mut().zip(fresh) {
+            *a_prime = if self.started {
+                alpha * a + eta * *a_prime
+            } else {
+                *a
+            };
         }
         self.started = true;
     }
 }
 
 impl Controller for SlowAttention {
-    fn param_count(&self) -> usize {
-        self.params.len()
+    fn genome(&self) -> &Params {
+        &self.params
     }
 
-    fn params(&self) -> Vec<f32> {
-        self.params.clone()
+    fn genome_mut(&mut self) -> &mut Params {
+        &mut self.params
     }
 
     fn set_params(&mut self, p: &[f32]) -> Result<()> {
-        validate_params(self.params.len(), p)?;
-        self.params.copy_from_slice(p);
+        self.params.set(p)?;
+        // Length and values are checked, so the split exists and the inner genome fits.
+        if let Some((attention, rates)) = split_slow_genome(p) {
+            self.inner.set_params(attention)?;
+            self.rates = rates;
+        }
         Ok(())
     }
 
     fn reset(&mut self) {
+        self.inner.reset();
         self.slow.fill(0.0);
         self.started = false;
     }
 
     fn control(&mut self, sensors: &[f32], out: &mut [f32]) {
-        if !io_fits(self.n, sensors, out) {
+        if !io_fits(self.inner.voxel_count(), sensors, out) {
             return;
         }
-        self.update(sensors);
-        // The downstream block is the attention genome's tail, without g1 and g2.
-        let down = &self.params[ATTENTION_PARAMS..self.params.len() - 2];
-        for (i, u) in out.iter_mut().enumerate() {
-            let s = &sensors[SENSORS_PER_VOXEL * i..SENSORS_PER_VOXEL * (i + 1)];
-            *u = downstream(down, self.n, i, &self.slow[16 * i..16 * (i + 1)], s);
-        }
+        self.inner.update_attention(sensors);
+        self.blend();
+        self.inner.apply_matrices(&self.slow, sensors, out);
     }
 
     fn needs_every_step(&self) -> bool {

@@ -11,16 +11,18 @@ use super::episode::{steps_for, Episode, Policy};
 use super::evaluate::controller_for;
 use super::run::Best;
 use super::validation::validation_noise_seed;
-use crate::controllers::{Attention, Controller, ControllerKind, FrozenAttention};
+use crate::controllers::{
+    split_slow_genome, Attention, Controller, ControllerKind, FrozenAttention,
+};
 use crate::error::{Error, Result};
 use crate::simulation::Terrain;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// The paper's ablation terrain.
 pub const ABLATION_TERRAIN: &str = "hilly-1-10-0";
 
 /// The velocity of the fresh episode with the matrices frozen at one time.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct AblationPoint {
     /// When the matrices were taken (s of the recording episode).
     pub freeze_second: u32,
@@ -62,7 +64,9 @@ fn attention_genome(best: &Best) -> Result<&[f32]> {
     best.validate("the genome")?;
     match best.controller {
         ControllerKind::Attention => Ok(&best.genome),
-        ControllerKind::SlowAttention => Ok(&best.genome[..best.genome.len() - 2]),
+        ControllerKind::SlowAttention => split_slow_genome(&best.genome)
+            .map(|(attention, _)| attention)
+            .ok_or_else(|| Error::Input("the slow-attention genome is too short".into())),
         other => Err(Error::Input(format!(
             "the ablation freezes attention matrices, but this genome is a {other} controller \
              (use an attention or slow-attention run)"

@@ -111,7 +111,10 @@ impl Evolution {
     /// seconds since the start of the run. Fails, changing nothing, on a wrong count.
     pub fn tell(&mut self, fitness: &[f64], wall_seconds: f64) -> Result<GenerationRecord> {
         let stats = self.ga.tell(fitness)?;
-        let record = GenerationRecord::new(&stats, wall_seconds);
+        let mut record = GenerationRecord::new(&stats, wall_seconds);
+        if let Some(best) = self.best() {
+            (record.alpha, record.eta) = (best.alpha, best.eta);
+        }
         self.history.push(record);
         Ok(record)
     }

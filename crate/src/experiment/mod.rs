@@ -2,6 +2,7 @@
 //! seeds, evolutionary runs and their run files, fine-tuning, validation and the ablation.
 
 pub mod ablation;
+pub mod campaign;
 pub mod config;
 pub mod episode;
 pub mod evaluate;
@@ -19,4 +20,4 @@ pub use evolution::{Evolution, Job};
 pub use finetune::source_of;
 pub use gait::PhaseGait;
 pub use run::{Best, GenerationRecord, RunFile, Timing};
-pub use validation::{validate, Validation};
+pub use validation::{validate, validate_on, Validation, ValidationSet};

@@ -13,7 +13,7 @@
 //! command line writes the JSON atomically (temporary file, then rename).
 
 use super::config::{EvolutionConfig, SourceRun};
-use crate::controllers::{Controller, ControllerKind, SlowAttention};
+use crate::controllers::{split_slow_genome, ControllerKind};
 use crate::error::{Error, Result};
 use crate::genetics::GenerationStats;
 use crate::simulation::Shape;
@@ -49,6 +49,12 @@ pub struct GenerationRecord {
     /// Wall-clock seconds from the start of the run to the end of this generation, as
     /// measured by the caller (0 when unknown); never part of a comparison.
     pub wall_seconds: f64,
+    /// Slow attention only: alpha of the generation's best individual (absent otherwise).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub alpha: Option<f32>,
+    /// Slow attention only: eta of the generation's best individual (absent otherwise).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub eta: Option<f32>,
 }
 
 impl GenerationRecord {
@@ -63,6 +69,8 @@ impl GenerationRecord {
             q1: stats.q1,
             worst: stats.worst,
             wall_seconds,
+            alpha: None,
+            eta: None,
         }
     }
 }
@@ -105,10 +113,9 @@ impl Best {
 
     fn derive_slow_weights(&mut self) {
         (self.alpha, self.eta) = (None, None);
-        if self.controller == ControllerKind::SlowAttention {
-            let mut slow = SlowAttention::new(self.shape.voxel_count());
-            if slow.set_params(&self.genome).is_ok() {
-                (self.alpha, self.eta) = (Some(slow.alpha()), Some(slow.eta()));
+        if self.controller == ControllerKind::SlowAttention && self.validate("").is_ok() {
+            if let Some((_, rates)) = split_slow_genome(&self.genome) {
+                (self.alpha, self.eta) = (Some(rates.alpha), Some(rates.eta));
             }
         }
     }

@@ -24,6 +24,9 @@ pub struct Args {
     /// Print JSON: [{"freeze_second", "velocity"}...].
     #[arg(long)]
     json: bool,
+    /// Also write that JSON array to this file (atomically).
+    #[arg(long)]
+    out: Option<PathBuf>,
 }
 
 /// Runs the command.
@@ -35,8 +38,14 @@ pub fn run(args: Args) -> Result<()> {
             args.last_second
         )));
     }
+    if let Some(out) = &args.out {
+        crate::atomic::check_writable(out)?;
+    }
     let best = crate::runfile::load(&args.genome)?.best;
     let points = ablate(&best, &args.terrain, args.last_second, args.seconds)?;
+    if let Some(out) = &args.out {
+        crate::atomic::write_json(out, &points, "ablation file")?;
+    }
     if args.json {
         let body = serde_json::to_string(&points)
             .map_err(|e| Error::Io(format!("cannot print JSON: {e}")))?;

@@ -25,12 +25,18 @@ enum Command {
     Evolve(crate::evolve::Args),
     /// Evaluate a run's best individual on one terrain (JSON with velocity).
     Evaluate(crate::evaluate::Args),
-    /// Re-assess a run's best individual on the 10 unseen terrains hilly-1-10-0..9.
+    /// Re-assess a run's best individual on 10 validation terrains (--set paper: hilly-1-10-0..9,
+    /// unseen: hilly-1-10-10000..10009).
     Validate(crate::validate::Args),
     /// Fine-tune a run's best individual on another shape, its attention block frozen.
     Finetune(crate::finetune::Args),
     /// Frozen-attention ablation: velocity with the attention frozen at each second.
     Ablate(crate::ablate::Args),
+    /// A study as a campaign file: plan its jobs, run them, merge the results into a CSV.
+    #[command(subcommand)]
+    Campaign(crate::campaign::Command),
+    /// Statistics (Mann-Whitney U) and SVG figures of a campaign's results so far.
+    Report(crate::report::Args),
 }
 
 /// Parses arguments, runs the command and returns the process exit code.
@@ -53,6 +59,8 @@ pub fn run() -> i32 {
         Command::Validate(args) => crate::validate::run(args),
         Command::Finetune(args) => crate::finetune::run(args),
         Command::Ablate(args) => crate::ablate::run(args),
+        Command::Campaign(command) => crate::campaign::run(command),
+        Command::Report(args) => crate::report::run(args),
     };
     match result {
         Ok(()) => 0,

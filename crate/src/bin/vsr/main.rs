@@ -5,9 +5,15 @@
 #[cfg(not(target_arch = "wasm32"))]
 mod ablate;
 #[cfg(not(target_arch = "wasm32"))]
+mod atomic;
+#[cfg(not(target_arch = "wasm32"))]
 mod bench;
 #[cfg(not(target_arch = "wasm32"))]
 mod bench_evolution;
+#[cfg(not(target_arch = "wasm32"))]
+mod campaign;
+#[cfg(not(target_arch = "wasm32"))]
+mod campaign_run;
 #[cfg(not(target_arch = "wasm32"))]
 mod cli;
 #[cfg(not(target_arch = "wasm32"))]
@@ -19,9 +25,13 @@ mod finetune;
 #[cfg(not(target_arch = "wasm32"))]
 mod params;
 #[cfg(not(target_arch = "wasm32"))]
+mod report;
+#[cfg(not(target_arch = "wasm32"))]
 mod runfile;
 #[cfg(not(target_arch = "wasm32"))]
 mod simulate;
+#[cfg(not(target_arch = "wasm32"))]
+mod svg;
 #[cfg(not(target_arch = "wasm32"))]
 mod terrain;
 #[cfg(not(target_arch = "wasm32"))]

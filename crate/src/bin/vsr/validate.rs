@@ -1,9 +1,10 @@
-//! `vsr validate --genome RUN.json`: the best individual on the 10 unseen terrains
-//! hilly-1-10-0 .. hilly-1-10-9, each velocity and the median.
+//! `vsr validate --genome RUN.json [--set paper|unseen]`: the best individual on a set of 10
+//! validation terrains (the paper's hilly-1-10-0..9 by default, or hilly-1-10-10000..10009,
+//! outside the training pool), each velocity, the median and the mean.
 
 use std::path::PathBuf;
 
-use vsr::experiment::validate;
+use vsr::experiment::{validate_on, ValidationSet};
 use vsr::{Error, Result};
 
 /// Arguments of `vsr validate`.
@@ -15,9 +16,16 @@ pub struct Args {
     /// Simulated seconds per episode.
     #[arg(long, default_value_t = 30.0)]
     seconds: f64,
-    /// Print one JSON object: {"terrains": [{"terrain", "velocity"}...], "median"}.
+    /// The terrains: paper (hilly-1-10-0..9, also in the training pool) or unseen
+    /// (hilly-1-10-10000..10009).
+    #[arg(long, default_value = "paper")]
+    set: ValidationSet,
+    /// Print one JSON object: {"set", "terrains": [{"terrain", "velocity"}...], "median", "mean"}.
     #[arg(long)]
     json: bool,
+    /// Also write that JSON object to this file (atomically).
+    #[arg(long)]
+    out: Option<PathBuf>,
 }
 
 /// Rejects episode lengths outside (0, 3600] s.
@@ -34,7 +42,13 @@ pub fn check_seconds(seconds: f64) -> Result<()> {
 pub fn run(args: Args) -> Result<()> {
     check_seconds(args.seconds)?;
     let best = crate::runfile::load(&args.genome)?.best;
-    let validation = validate(&best, args.seconds)?;
+    if let Some(out) = &args.out {
+        crate::atomic::check_writable(out)?;
+    }
+    let validation = validate_on(&best, args.set, args.seconds)?;
+    if let Some(out) = &args.out {
+        crate::atomic::write_json(out, &validation, "validation file")?;
+    }
     if args.json {
         let body = serde_json::to_string(&validation)
             .map_err(|e| Error::Io(format!("cannot print JSON: {e}")))?;
@@ -42,8 +56,9 @@ pub fn run(args: Args) -> Result<()> {
         return Ok(());
     }
     for t in &validation.terrains {
-        println!("{:<14} {:>8.3} m/s", t.terrain, t.velocity);
+        println!("{:<16} {:>8.3} m/s", t.terrain, t.velocity);
     }
-    println!("{:<14} {:>8.3} m/s", "median", validation.median);
+    println!("{:<16} {:>8.3} m/s", "median", validation.median);
+    println!("{:<16} {:>8.3} m/s", "mean", validation.mean);
     Ok(())
 }

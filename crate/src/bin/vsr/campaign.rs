@@ -1,0 +1,176 @@
+//! `vsr campaign plan|run|merge FILE`: a campaign file's job list, run on local cores, and its
+//! run files collected into one CSV. Outputs go under the campaign's `output` folder,
+//! resolved relative to the campaign file, or under `--out-dir`.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+
+use vsr::experiment::campaign::{merge, plan, Campaign, Job, Results};
+use vsr::experiment::{RunFile, ValidationSet};
+use vsr::{Error, Result};
+
+/// Where a campaign's outputs go.
+#[derive(clap::Args, Debug, Clone)]
+pub struct Target {
+    /// The campaign file (TOML).
+    pub file: PathBuf,
+    /// Output folder (default: the campaign's `output`, relative to the campaign file).
+    #[arg(long)]
+    pub out_dir: Option<PathBuf>,
+}
+
+impl Target {
+    /// The parsed campaign and its output folder.
+    pub fn load(&self) -> Result<(Campaign, PathBuf)> {
+        let text = fs::read_to_string(&self.file).map_err(|e| {
+            Error::Io(format!(
+                "cannot read campaign file {}: {e}",
+                self.file.display()
+            ))
+        })?;
+        let campaign = Campaign::parse(&text)
+            .map_err(|e| Error::Input(format!("{}: {e}", self.file.display())))?;
+        let out = match &self.out_dir {
+            Some(dir) => dir.clone(),
+            None => {
+                let base = self.file.parent().unwrap_or(Path::new(""));
+                base.join(&campaign.output)
+            }
+        };
+        Ok((campaign, out))
+    }
+}
+
+/// `vsr campaign` subcommands.
+#[derive(clap::Subcommand, Debug)]
+pub enum Command {
+    /// Print the job list: one complete vsr command per line, in dependency order.
+    Plan(PlanArgs),
+    /// Run the jobs on local cores, skipping those whose output exists (resumable).
+    Run(crate::campaign_run::Args),
+    /// Collect the run files and validations into one CSV (OUT/campaign.csv by default).
+    Merge(MergeArgs),
+}
+
+/// Arguments of `vsr campaign plan`.
+#[derive(clap::Args, Debug)]
+pub struct PlanArgs {
+    #[command(flatten)]
+    target: Target,
+    /// Only the jobs of this stage (1 runs from scratch, 2 fine-tuning and the assessments of
+    /// stage 1, 3 the assessments of fine-tuning runs).
+    #[arg(long)]
+    stage: Option<u32>,
+    /// Only the jobs whose output does not exist yet.
+    #[arg(long)]
+    pending: bool,
+    /// --threads of each evolution job.
+    #[arg(long, default_value_t = 1)]
+    threads: usize,
+    /// The program name printed at the start of each line.
+    #[arg(long, default_value = "vsr")]
+    program: String,
+}
+
+/// Arguments of `vsr campaign merge`.
+#[derive(clap::Args, Debug)]
+pub struct MergeArgs {
+    #[command(flatten)]
+    target: Target,
+    /// The CSV file (default: OUT/campaign.csv).
+    #[arg(long)]
+    csv: Option<PathBuf>,
+}
+
+/// Runs a `vsr campaign` subcommand.
+pub fn run(command: Command) -> Result<()> {
+    match command {
+        Command::Plan(args) => print_plan(args),
+        Command::Run(args) => crate::campaign_run::run(args),
+        Command::Merge(args) => write_merge(args),
+    }
+}
+
+fn print_plan(args: PlanArgs) -> Result<()> {
+    if args.threads == 0 {
+        return Err(Error::Input("--threads must be at least 1".into()));
+    }
+    let (campaign, out) = args.target.load()?;
+    for job in plan(&campaign, &out) {
+        let stage_ok = args.stage.map_or(true, |s| s == job.stage);
+        if stage_ok && !(args.pending && job.out.exists()) {
+            println!("{}", job.command_line(&args.program, args.threads));
+        }
+    }
+    Ok(())
+}
+
+fn write_merge(args: MergeArgs) -> Result<()> {
+    let (campaign, out) = args.target.load()?;
+    let results = load_results(campaign, &out)?;
+    let path = args.csv.unwrap_or_else(|| out.join("campaign.csv"));
+    crate::atomic::write(&path, merge::csv(&results).as_bytes(), "table")?;
+    let found = results.data.iter().filter(|(_, d)| d.run.is_some()).count();
+    println!(
+        "{} runs of {} in {}; {} planned outputs missing",
+        found,
+        results.data.len(),
+        path.display(),
+        results.missing.len()
+    );
+    Ok(())
+}
+
+/// The folders of a campaign's outputs (see `plan`).
+pub fn create_folders(out: &Path, jobs: &[Job]) -> Result<()> {
+    for job in jobs {
+        if let Some(dir) = job.out.parent() {
+            fs::create_dir_all(dir)
+                .map_err(|e| Error::Io(format!("cannot create {}: {e}", dir.display())))?;
+        }
+    }
+    fs::create_dir_all(out.join("logs"))
+        .map_err(|e| Error::Io(format!("cannot create {}/logs: {e}", out.display())))
+}
+
+/// Reads every planned output that exists; the others are listed as missing.
+pub fn load_results(campaign: Campaign, out: &Path) -> Result<Results> {
+    let jobs = plan(&campaign, out);
+    let mut results = Results::new(campaign);
+    results.missing = jobs
+        .iter()
+        .filter(|j| !j.out.exists())
+        .map(|j| j.out.clone())
+        .collect();
+    let specs: Vec<_> = results.data.iter().map(|(s, _)| s.clone()).collect();
+    for spec in specs {
+        let run = read_json(&spec.run_path(out), RunFile::from_json)?;
+        let mut validation = std::collections::BTreeMap::new();
+        for set in ValidationSet::ALL {
+            if let Some(v) = read_json(&spec.validation_path(out, set), json)? {
+                validation.insert(set, v);
+            }
+        }
+        let ablation = read_json(&spec.ablation_path(out), json)?;
+        if let Some(d) = results.of_mut(&spec) {
+            (d.run, d.validation, d.ablation) = (run, validation, ablation);
+        }
+    }
+    Ok(results)
+}
+
+fn json<T: serde::de::DeserializeOwned>(text: &str) -> Result<T> {
+    serde_json::from_str(text).map_err(|e| Error::Input(e.to_string()))
+}
+
+/// Parses `path` with `parse` when it exists; an unreadable or invalid file is an error.
+fn read_json<T>(path: &Path, parse: impl Fn(&str) -> Result<T>) -> Result<Option<T>> {
+    if !path.exists() {
+        return Ok(None);
+    }
+    let text = fs::read_to_string(path)
+        .map_err(|e| Error::Io(format!("cannot read {}: {e}", path.display())))?;
+    parse(&text)
+        .map(Some)
+        .map_err(|e| Error::Input(format!("{}: {e}", path.display())))
+}

@@ -1,0 +1,44 @@
+//! `vsr report FILE`: the campaign's statistics (`report.md`: medians, Mann-Whitney U tests,
+//! effect sizes, what is missing) and its figures (SVG) in one folder, from whatever runs
+//! exist so far (see `vsr::experiment::campaign::report`).
+
+use std::fs;
+use std::path::PathBuf;
+
+use vsr::experiment::campaign::report;
+use vsr::{Error, Result};
+
+use crate::campaign::{load_results, Target};
+
+/// Arguments of `vsr report`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    target: Target,
+    /// Folder of report.md and the figures (default: OUT/report).
+    #[arg(long)]
+    dir: Option<PathBuf>,
+}
+
+/// Runs the command.
+pub fn run(args: Args) -> Result<()> {
+    let (campaign, out) = args.target.load()?;
+    let results = load_results(campaign, &out)?;
+    let dir = args.dir.unwrap_or_else(|| out.join("report"));
+    fs::create_dir_all(&dir)
+        .map_err(|e| Error::Io(format!("cannot create {}: {e}", dir.display())))?;
+    let built = report(&results);
+    for figure in &built.figures {
+        let svg = crate::svg::draw(figure)?;
+        crate::atomic::write(&dir.join(&figure.file), svg.as_bytes(), "figure")?;
+    }
+    let path = dir.join("report.md");
+    crate::atomic::write(&path, built.markdown.as_bytes(), "report")?;
+    println!(
+        "wrote {} and {} figures; {} planned outputs missing",
+        path.display(),
+        built.figures.len(),
+        results.missing.len()
+    );
+    Ok(())
+}

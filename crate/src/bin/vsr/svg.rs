@@ -1,0 +1,151 @@
+//! Draws the report's figures as SVG with plotters' SVG backend. Text is written as SVG
+//! `<text>` (plotters without its `ttf` / `ab_glyph` features lays text out by estimate and
+//! needs no font file), so the viewer's sans-serif font renders it.
+
+use plotters::prelude::*;
+use vsr::experiment::campaign::figures::{Band, BoxData, Figure, Plot};
+use vsr::{Error, Result};
+
+const SIZE: (u32, u32) = (800, 500);
+
+/// The SVG text of `figure`.
+pub fn draw(figure: &Figure) -> Result<String> {
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_error)?;
+        match &figure.plot {
+            Plot::Lines(bands) => lines(&root, figure, bands)?,
+            Plot::Boxes(boxes) => boxes_plot(&root, figure, boxes)?,
+        }
+        root.present().map_err(plot_error)?;
+    }
+    Ok(svg)
+}
+
+fn plot_error<E: std::fmt::Display>(e: E) -> Error {
+    Error::Io(format!("cannot draw the figure: {e}"))
+}
+
+/// The range of `values` (finite ones), padded by 5% (or 1 when flat).
+fn range(values: impl Iterator<Item = f64>) -> std::ops::Range<f64> {
+    let (lo, hi) = values
+        .filter(|v| v.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(v), b.max(v))
+        });
+    if lo > hi {
+        return 0.0..1.0;
+    }
+    let pad = if hi > lo { 0.05 * (hi - lo) } else { 1.0 };
+    (lo - pad)..(hi + pad)
+}
+
+type Area<'a> = DrawingArea<SVGBackend<'a>, plotters::coord::Shift>;
+
+fn lines(root: &Area, figure: &Figure, bands: &[Band]) -> Result<()> {
+    let xs = range(bands.iter().flat_map(|b| b.x.iter().copied()));
+    let ys = range(
+        bands
+            .iter()
+            .flat_map(|b| b.q1.iter().chain(&b.q3).chain(&b.median).copied()),
+    );
+    let mut chart = ChartBuilder::on(root)
+        .caption(&figure.title, ("sans-serif", 20))
+        .margin(15)
+        .x_label_area_size(45)
+        .y_label_area_size(60)
+        .build_cartesian_2d(xs, ys)
+        .map_err(plot_error)?;
+    chart
+        .configure_mesh()
+        .x_desc(&figure.x_label)
+        .y_desc(&figure.y_label)
+        .draw()
+        .map_err(plot_error)?;
+    for (i, b) in bands.iter().enumerate() {
+        let color = Palette99::pick(i).to_rgba();
+        let mut area: Vec<(f64, f64)> = b.x.iter().copied().zip(b.q3.iter().copied()).collect();
+        area.extend(b.x.iter().copied().zip(b.q1.iter().copied()).rev());
+        chart
+            .draw_series(std::iter::once(Polygon::new(area, color.mix(0.2).filled())))
+            .map_err(plot_error)?;
+        let line = b.x.iter().copied().zip(b.median.iter().copied());
+        chart
+            .draw_series(LineSeries::new(line, color.stroke_width(2)))
+            .map_err(plot_error)?
+            .label(format!("{} (median, IQR)", b.label))
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+            });
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .position(SeriesLabelPosition::LowerRight)
+        .draw()
+        .map_err(plot_error)
+}
+
+/// Box plots: box from q1 to q3, median line, whiskers to the smallest and largest value
+/// (no outlier rule: with 5 runs every value is drawn as a dot anyway).
+fn boxes_plot(root: &Area, figure: &Figure, boxes: &[BoxData]) -> Result<()> {
+    let ys = range(boxes.iter().flat_map(|b| b.values.iter().copied()));
+    let labels: Vec<&str> = boxes.iter().map(|b| b.label.as_str()).collect();
+    let xs = -0.5..boxes.len() as f64 - 0.5;
+    let mut chart = ChartBuilder::on(root)
+        .caption(&figure.title, ("sans-serif", 20))
+        .margin(15)
+        .x_label_area_size(45)
+        .y_label_area_size(60)
+        .build_cartesian_2d(xs, ys)
+        .map_err(plot_error)?;
+    let name = |x: &f64| {
+        let i = x.round();
+        let at_box = (x - i).abs() < 1e-6 && i >= 0.0;
+        let label = labels.get(i as usize).filter(|_| at_box);
+        label.map_or(String::new(), |l| l.to_string())
+    };
+    chart
+        .configure_mesh()
+        .x_desc(&figure.x_label)
+        .y_desc(&figure.y_label)
+        .x_labels(boxes.len().max(2) * 2 - 1)
+        .x_label_formatter(&name)
+        .disable_x_mesh()
+        .draw()
+        .map_err(plot_error)?;
+    for (i, b) in boxes.iter().enumerate() {
+        let color = Palette99::pick(i).to_rgba();
+        let (x, w, s) = (i as f64, 0.2, &b.summary);
+        let style = color.stroke_width(2);
+        let shapes: Vec<PathElement<(f64, f64)>> = vec![
+            PathElement::new(
+                vec![
+                    (x - w, s.q1),
+                    (x + w, s.q1),
+                    (x + w, s.q3),
+                    (x - w, s.q3),
+                    (x - w, s.q1),
+                ],
+                style,
+            ),
+            PathElement::new(
+                vec![(x - w, s.median), (x + w, s.median)],
+                color.stroke_width(3),
+            ),
+            PathElement::new(vec![(x, s.q3), (x, s.max)], style),
+            PathElement::new(vec![(x, s.q1), (x, s.min)], style),
+            PathElement::new(vec![(x - w / 2.0, s.max), (x + w / 2.0, s.max)], style),
+            PathElement::new(vec![(x - w / 2.0, s.min), (x + w / 2.0, s.min)], style),
+        ];
+        chart.draw_series(shapes).map_err(plot_error)?;
+        let dots = b
+            .values
+            .iter()
+            .map(|&v| Circle::new((x, v), 3, color.filled()));
+        chart.draw_series(dots).map_err(plot_error)?;
+    }
+    Ok(())
+}

@@ -1,0 +1,337 @@
+//! A campaign's job list: every run, validation and ablation as one complete `vsr` command
+//! that writes one output file, in dependency order.
+//!
+//! Output folder layout (under the campaign's output folder):
+//! - `runs/STEM.json`: run files; STEM is `SHAPE-CONTROLLER-EVALS-sSEED` from scratch and
+//!   `SOURCESHAPE-CONTROLLER-SOURCEEVALS-to-SHAPE-EVALS-sSEED` for fine-tuning;
+//! - `validation/STEM.SET.json`: `vsr validate --json` of a run's best on a set;
+//! - `ablation/STEM.json`: `vsr ablate --json` of a run's best.
+//!
+//! Stages: 1 = runs from scratch; 2 = fine-tuning runs (each needs its source run) and the
+//! assessments of stage-1 runs; 3 = the assessments of fine-tuning runs. A job needs only
+//! files of earlier stages, so running stage after stage respects every dependency. A run
+//! listed twice (the same shape, controller, budget and seed in two groups) is one job.
+
+use super::file::Campaign;
+use crate::controllers::ControllerKind;
+use crate::experiment::ValidationSet;
+use std::path::{Path, PathBuf};
+
+/// The identity of one evolutionary run of a campaign.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub struct RunSpec {
+    /// The shape as the campaign names it.
+    pub shape: String,
+    /// Controller family.
+    pub controller: ControllerKind,
+    /// Evaluation budget.
+    pub evals: u64,
+    /// Run seed.
+    pub seed: u64,
+    /// For fine-tuning: the run whose best lends its attention block.
+    pub source: Option<Box<RunSpec>>,
+}
+
+impl RunSpec {
+    /// A run from scratch.
+    pub fn scratch(shape: &str, controller: ControllerKind, evals: u64, seed: u64) -> Self {
+        RunSpec {
+            shape: shape.to_string(),
+            controller,
+            evals,
+            seed,
+            source: None,
+        }
+    }
+
+    /// The file stem of its outputs; see the module doc.
+    pub fn stem(&self) -> String {
+        let tail = format!("{}-s{}", self.evals, self.seed);
+        match &self.source {
+            None => format!("{}-{}-{tail}", self.shape, self.controller),
+            Some(s) => format!(
+                "{}-{}-{}-to-{}-{tail}",
+                s.shape, s.controller, s.evals, self.shape
+            ),
+        }
+    }
+
+    /// Its run file under `out`.
+    pub fn run_path(&self, out: &Path) -> PathBuf {
+        out.join("runs").join(format!("{}.json", self.stem()))
+    }
+
+    /// Its validation file on `set` under `out`.
+    pub fn validation_path(&self, out: &Path, set: ValidationSet) -> PathBuf {
+        out.join("validation")
+            .join(format!("{}.{set}.json", self.stem()))
+    }
+
+    /// Its ablation file under `out`.
+    pub fn ablation_path(&self, out: &Path) -> PathBuf {
+        out.join("ablation").join(format!("{}.json", self.stem()))
+    }
+
+    /// True for controllers whose attention can be frozen.
+    pub fn has_attention(&self) -> bool {
+        matches!(
+            self.controller,
+            ControllerKind::Attention | ControllerKind::SlowAttention
+        )
+    }
+}
+
+/// One job: a `vsr` command (without the program name) and the file it writes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Job {
+    /// 1, 2 or 3; see the module doc.
+    pub stage: u32,
+    /// The arguments after `vsr`.
+    pub args: Vec<String>,
+    /// The one file the command writes.
+    pub out: PathBuf,
+    /// Files that must exist before it starts.
+    pub needs: Vec<PathBuf>,
+    /// True when the command takes `--threads` (evolution and fine-tuning).
+    pub threaded: bool,
+}
+
+impl Job {
+    /// The whole command line for `program`, `--threads threads` added to evolutions,
+    /// arguments quoted for a POSIX shell where needed.
+    pub fn command_line(&self, program: &str, threads: usize) -> String {
+        let mut words = vec![quote(program)];
+        words.extend(self.args.iter().map(|a| quote(a)));
+        if self.threaded {
+            words.extend(["--threads".to_string(), threads.to_string()]);
+        }
+        words.join(" ")
+    }
+
+    /// The arguments for `threads` threads (what `command_line` prints, unquoted).
+    pub fn args_with_threads(&self, threads: usize) -> Vec<String> {
+        let mut args = self.args.clone();
+        if self.threaded {
+            args.extend(["--threads".to_string(), threads.to_string()]);
+        }
+        args
+    }
+}
+
+/// Quotes `word` for a POSIX shell unless it is made of safe characters only.
+fn quote(word: &str) -> String {
+    let safe = |c: char| c.is_ascii_alphanumeric() || "-_./=:+,".contains(c);
+    if !word.is_empty() && word.chars().all(safe) {
+        return word.to_string();
+    }
+    format!("'{}'", word.replace('\'', r"'\''"))
+}
+
+/// Every run of the campaign, each once, in campaign order: the evolve grids, then for each
+/// fine-tuning group its source runs, its scratch runs and its fine-tuning runs.
+pub fn runs(c: &Campaign) -> Vec<RunSpec> {
+    let mut all: Vec<RunSpec> = Vec::new();
+    let mut push = |r: RunSpec| {
+        if !all.contains(&r) {
+            all.push(r);
+        }
+    };
+    for g in &c.evolve {
+        let seeds = g.seeds.as_ref().unwrap_or(&c.seeds);
+        for shape in &g.shapes {
+            for &controller in &g.controllers {
+                for &evals in &g.evals {
+                    for &seed in seeds {
+                        push(RunSpec::scratch(shape, controller, evals, seed));
+                    }
+                }
+            }
+        }
+    }
+    for g in &c.finetune {
+        for r in finetune_runs(c, g) {
+            push(r);
+        }
+    }
+    all
+}
+
+/// A fine-tuning group's runs: sources, from-scratch comparisons, fine-tunings.
+pub fn finetune_runs(c: &Campaign, g: &super::file::FinetuneGroup) -> Vec<RunSpec> {
+    let seeds = g.seeds.as_ref().unwrap_or(&c.seeds);
+    let mut out = Vec::new();
+    for [from, to] in &g.pairs {
+        for &seed in seeds {
+            let source = RunSpec::scratch(from, g.controller, g.source_evals, seed);
+            out.push(source.clone());
+            if let Some(evals) = g.scratch_evals {
+                out.push(RunSpec::scratch(to, g.controller, evals, seed));
+            }
+            out.push(RunSpec {
+                source: Some(Box::new(source)),
+                ..RunSpec::scratch(to, g.controller, g.evals, seed)
+            });
+        }
+    }
+    out
+}
+
+/// True when some evolve group with `ablate` lists this run (fine-tuning runs are not ablated).
+fn ablated(c: &Campaign, r: &RunSpec) -> bool {
+    r.source.is_none()
+        && r.has_attention()
+        && c.evolve.iter().any(|g| {
+            g.ablate
+                && g.shapes.contains(&r.shape)
+                && g.controllers.contains(&r.controller)
+                && g.evals.contains(&r.evals)
+                && g.seeds.as_ref().unwrap_or(&c.seeds).contains(&r.seed)
+        })
+}
+
+/// The job list of campaign `c` with outputs under `out`, in dependency order.
+pub fn plan(c: &Campaign, out: &Path) -> Vec<Job> {
+    let mut jobs = Vec::new();
+    for r in runs(c) {
+        let run_path = r.run_path(out);
+        let stage = if r.source.is_some() { 2 } else { 1 };
+        jobs.push(run_job(c, &r, out, stage));
+        let genome = run_path.display().to_string();
+        let seconds = c.seconds.to_string();
+        for &set in &c.validate {
+            let path = r.validation_path(out, set);
+            jobs.push(Job {
+                stage: stage + 1,
+                args: words(&["validate", "--genome", &genome, "--set", set.name()])
+                    .into_iter()
+                    .chain(words(&["--seconds", &seconds, "--json", "--out"]))
+                    .chain([path.display().to_string()])
+                    .collect(),
+                out: path,
+                needs: vec![run_path.clone()],
+                threaded: false,
+            });
+        }
+        if ablated(c, &r) {
+            let path = r.ablation_path(out);
+            let last = c.ablation.last_second.to_string();
+            jobs.push(Job {
+                stage: stage + 1,
+                args: words(&["ablate", "--genome", &genome, "--last-second", &last])
+                    .into_iter()
+                    .chain(words(&["--seconds", &seconds, "--json", "--out"]))
+                    .chain([path.display().to_string()])
+                    .collect(),
+                out: path,
+                needs: vec![run_path],
+                threaded: false,
+            });
+        }
+    }
+    jobs.sort_by_key(|j| j.stage);
+    jobs
+}
+
+fn words(w: &[&str]) -> Vec<String> {
+    w.iter().map(|s| s.to_string()).collect()
+}
+
+/// The `vsr evolve` or `vsr finetune` job of run `r`.
+fn run_job(c: &Campaign, r: &RunSpec, out: &Path, stage: u32) -> Job {
+    let path = r.run_path(out);
+    let mut args = match &r.source {
+        None => words(&[
+            "evolve",
+            "--shape",
+            &r.shape,
+            "--controller",
+            r.controller.name(),
+        ]),
+        Some(s) => {
+            let from = s.run_path(out).display().to_string();
+            words(&["finetune", "--from", &from, "--shape", &r.shape])
+        }
+    };
+    let (evals, seed) = (r.evals.to_string(), r.seed.to_string());
+    let (seconds, population) = (c.seconds.to_string(), c.population.to_string());
+    args.extend(words(&[
+        "--evals",
+        &evals,
+        "--seed",
+        &seed,
+        "--seconds",
+        &seconds,
+    ]));
+    args.extend(words(&[
+        "--population",
+        &population,
+        "--terrain",
+        &c.terrain,
+    ]));
+    args.extend(["--out".to_string(), path.display().to_string()]);
+    Job {
+        stage,
+        args,
+        out: path,
+        needs: r.source.iter().map(|s| s.run_path(out)).collect(),
+        threaded: true,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const CAMPAIGN: &str = r#"
+output = "o"
+seeds = [1, 2]
+[[evolve]]
+name = "a"
+shapes = ["biped-4x3"]
+controllers = ["attention", "mlp"]
+evals = [300]
+ablate = true
+[[finetune]]
+name = "b"
+pairs = [["comb-7x2", "biped-4x3"]]
+controller = "attention"
+source_evals = 200
+evals = 100
+scratch_evals = 300
+"#;
+
+    #[test]
+    fn every_job_comes_after_the_jobs_it_needs_and_runs_are_not_repeated() {
+        let c = Campaign::parse(CAMPAIGN).unwrap();
+        let jobs = plan(&c, Path::new("o"));
+        // Runs: 2 controllers x 2 seeds + per seed (source, fine-tune; the scratch run is
+        // the attention run of group a) = 8; each validated twice; 2 attention runs ablated.
+        assert_eq!(jobs.iter().filter(|j| j.threaded).count(), 8);
+        assert_eq!(jobs.len(), 8 + 16 + 2);
+        for (i, job) in jobs.iter().enumerate() {
+            for need in &job.needs {
+                let at = jobs
+                    .iter()
+                    .position(|j| &j.out == need)
+                    .expect("needed job");
+                assert!(at < i && jobs[at].stage < job.stage, "{need:?}");
+            }
+        }
+        let outs: std::collections::HashSet<_> = jobs.iter().map(|j| &j.out).collect();
+        assert_eq!(outs.len(), jobs.len(), "one file per job");
+    }
+
+    #[test]
+    fn commands_are_complete_and_quoted() {
+        let c = Campaign::parse(CAMPAIGN).unwrap();
+        let jobs = plan(&c, Path::new("my study"));
+        let ft = jobs.iter().find(|j| j.args[0] == "finetune").unwrap();
+        assert_eq!(
+            ft.command_line("vsr", 2),
+            "vsr finetune --from 'my study/runs/comb-7x2-attention-200-s1.json' --shape \
+             biped-4x3 --evals 100 --seed 1 --seconds 30 --population 100 --terrain hilly-1-10 \
+             --out 'my study/runs/comb-7x2-attention-200-to-biped-4x3-100-s1.json' --threads 2"
+        );
+        assert_eq!(quote("it's"), r"'it'\''s'");
+    }
+}

@@ -1,0 +1,359 @@
+//! `vsr report`: the campaign's statistics as Markdown and the figures to draw, from
+//! whatever runs exist (missing files are listed, never guessed).
+//!
+//! Measures per run: `best`, the best fitness of the last generation (training, one
+//! evaluation per individual); `SET mean`, the mean velocity of the run's best over the
+//! 10 terrains of a validation set (the paper's re-assessment figure). Every pair the paper
+//! compares is tested with the two-sided Mann-Whitney U test (exact for small samples without
+//! ties) and Vargha-Delaney A12 (`statistics`): the controllers of each shape and budget
+//! pairwise (RQ1), and fine-tuning against from scratch on each target shape (RQ2).
+//!
+//! Figures (file names): `fig3-GROUP-SHAPE-EVALS.svg` best fitness against evaluations;
+//! `fig4-GROUP-SHAPE-EVALS-SET.svg` validation boxes; `fig6-GROUP-SHAPE-EVALS.svg`
+//! ablation; `fig7-GROUP-SOURCE-to-TARGET.svg` fine-tuning against from scratch;
+//! `fig8-GROUP-SHAPE-EVALS.svg` alpha and eta of slow attention.
+
+use super::figures::{ablation_series, band, best_series, box_of, rate_series, Figure, Plot};
+use super::file::{EvolveGroup, FinetuneGroup};
+use super::plan::RunSpec;
+use super::results::{Results, RunData};
+use crate::controllers::ControllerKind;
+use crate::experiment::ValidationSet;
+use crate::statistics::{mann_whitney, Summary};
+use std::fmt::Write;
+
+/// The report: Markdown text and the figures it links.
+#[derive(Debug, Clone)]
+pub struct Report {
+    /// The Markdown (figures linked by file name).
+    pub markdown: String,
+    /// The figures to draw next to it.
+    pub figures: Vec<Figure>,
+}
+
+/// Builds the report of `results`.
+pub fn report(results: &Results) -> Report {
+    let mut r = Report {
+        markdown: String::from("# Campaign report\n\n"),
+        figures: Vec::new(),
+    };
+    missing_section(results, &mut r.markdown);
+    for g in &results.campaign.evolve {
+        for shape in &g.shapes {
+            for &evals in &g.evals {
+                evolve_section(results, g, shape, evals, &mut r);
+            }
+        }
+    }
+    for g in &results.campaign.finetune {
+        for pair in &g.pairs {
+            finetune_section(results, g, pair, &mut r);
+        }
+    }
+    r
+}
+
+fn missing_section(results: &Results, md: &mut String) {
+    let found = results
+        .data
+        .iter()
+        .map(|(_, d)| d)
+        .filter(|d| d.run.is_some())
+        .count();
+    let _ = writeln!(md, "Run files found: {found} of {}.", results.data.len());
+    if results.missing.is_empty() {
+        md.push_str("Every planned output exists.\n\n");
+        return;
+    }
+    let _ = writeln!(
+        md,
+        "\n**Missing: {} planned outputs** (the tables use what exists):\n",
+        results.missing.len()
+    );
+    for path in results.missing.iter().take(40) {
+        let _ = writeln!(md, "- `{}`", path.display());
+    }
+    if results.missing.len() > 40 {
+        let _ = writeln!(md, "- ... and {} more", results.missing.len() - 40);
+    }
+    md.push('\n');
+}
+
+/// A labelled sample of runs.
+struct Sample {
+    label: String,
+    runs: Vec<RunData>,
+}
+
+fn evolve_section(results: &Results, g: &EvolveGroup, shape: &str, evals: u64, r: &mut Report) {
+    let seeds = g.seeds.as_ref().unwrap_or(&results.campaign.seeds);
+    let samples: Vec<Sample> = g
+        .controllers
+        .iter()
+        .map(|&c| Sample {
+            label: c.to_string(),
+            runs: results.seeds_of(&RunSpec::scratch(shape, c, evals, 0), seeds),
+        })
+        .collect();
+    let id = format!("{}-{shape}-{evals}", g.name);
+    let md = &mut r.markdown;
+    let _ = writeln!(md, "## {} · {shape} · {evals} evaluations\n", g.name);
+    let sets = &results.campaign.validate;
+    summary_table(&samples, sets, md);
+    comparisons(&samples, sets, md);
+    let bands = samples
+        .iter()
+        .filter_map(|s| band(&s.label, &best_series(&s.runs, 0.0)));
+    push_lines(
+        r,
+        format!("fig3-{id}.svg"),
+        format!("{shape}: best fitness"),
+        "evaluations",
+        "best fitness (m/s)",
+        bands.collect(),
+    );
+    for &set in sets {
+        let boxes = samples.iter().map(|s| {
+            let means = s.runs.iter().filter_map(|d| d.validation_mean(set));
+            box_of(&s.label, means.collect())
+        });
+        let boxes: Vec<_> = boxes.filter(|b| !b.values.is_empty()).collect();
+        if !boxes.is_empty() {
+            let file = format!("fig4-{id}-{set}.svg");
+            let _ = writeln!(r.markdown, "![validation on the {set} set]({file})\n");
+            r.figures.push(Figure {
+                file,
+                title: format!("{shape}: mean velocity on the {set} terrains"),
+                x_label: "controller".into(),
+                y_label: "velocity (m/s)".into(),
+                plot: Plot::Boxes(boxes),
+            });
+        }
+    }
+    if g.ablate {
+        ablation_part(&samples, &id, shape, r);
+    }
+    slow_part(&samples, &id, shape, r);
+}
+
+/// Pushes a line figure (and its link) when it has at least one band.
+fn push_lines(
+    r: &mut Report,
+    file: String,
+    title: String,
+    x: &str,
+    y: &str,
+    bands: Vec<super::figures::Band>,
+) {
+    if bands.is_empty() {
+        return;
+    }
+    let _ = writeln!(r.markdown, "![{title}]({file})\n");
+    r.figures.push(Figure {
+        file,
+        title,
+        x_label: x.into(),
+        y_label: y.into(),
+        plot: Plot::Lines(bands),
+    });
+}
+
+/// The measures of a sample: `best`, then the validation mean of each set.
+fn measures(s: &Sample, sets: &[ValidationSet]) -> Vec<(String, Vec<f64>)> {
+    let mut m = vec![(
+        "best".to_string(),
+        s.runs.iter().filter_map(RunData::final_best).collect(),
+    )];
+    for &set in sets {
+        let values = s.runs.iter().filter_map(|d| d.validation_mean(set));
+        m.push((format!("{set} mean"), values.collect()));
+    }
+    m
+}
+
+fn cell(values: &[f64]) -> String {
+    let s = Summary::of(values);
+    match s.n {
+        0 => "-".into(),
+        _ => format!("{:.3} [{:.3}, {:.3}] (n={})", s.median, s.q1, s.q3, s.n),
+    }
+}
+
+fn summary_table(samples: &[Sample], sets: &[ValidationSet], md: &mut String) {
+    let names: Vec<String> = measures(
+        &Sample {
+            label: String::new(),
+            runs: vec![],
+        },
+        sets,
+    )
+    .into_iter()
+    .map(|(n, _)| n)
+    .collect();
+    let _ = writeln!(md, "Median [q1, q3] across seeds (m/s):\n");
+    let _ = writeln!(md, "| configuration | {} |", names.join(" | "));
+    let _ = writeln!(md, "|---|{}", "---|".repeat(names.len()));
+    for s in samples {
+        let cells: Vec<String> = measures(s, sets).iter().map(|(_, v)| cell(v)).collect();
+        let _ = writeln!(md, "| {} | {} |", s.label, cells.join(" | "));
+    }
+    md.push('\n');
+}
+
+/// Every pair of samples, every measure: medians, U test and A12.
+fn comparisons(samples: &[Sample], sets: &[ValidationSet], md: &mut String) {
+    if samples.len() < 2 {
+        return;
+    }
+    let _ = writeln!(md, "Mann-Whitney U, two-sided; A12 = P(A > B):\n");
+    let _ = writeln!(
+        md,
+        "| A | B | measure | median A | median B | U | p | A12 | method |"
+    );
+    let _ = writeln!(md, "|---|---|---|---|---|---|---|---|---|");
+    for (i, a) in samples.iter().enumerate() {
+        for b in &samples[i + 1..] {
+            for ((name, x), (_, y)) in measures(a, sets).into_iter().zip(measures(b, sets)) {
+                if x.is_empty() || y.is_empty() {
+                    let _ = writeln!(
+                        md,
+                        "| {} | {} | {name} | - | - | - | no data | - | - |",
+                        a.label, b.label
+                    );
+                    continue;
+                }
+                let t = mann_whitney(&x, &y);
+                let _ = writeln!(
+                    md,
+                    "| {} | {} | {name} | {:.3} | {:.3} | {} | {:.4} | {:.2} | {:?} |",
+                    a.label,
+                    b.label,
+                    Summary::of(&x).median,
+                    Summary::of(&y).median,
+                    t.u1,
+                    t.p,
+                    t.a12,
+                    t.method
+                );
+            }
+        }
+    }
+    md.push('\n');
+}
+
+fn ablation_part(samples: &[Sample], id: &str, shape: &str, r: &mut Report) {
+    let with: Vec<&Sample> = samples
+        .iter()
+        .filter(|s| s.runs.iter().any(|d| d.ablation.is_some()))
+        .collect();
+    if with.is_empty() {
+        let _ = writeln!(r.markdown, "No ablation file yet.\n");
+        return;
+    }
+    let _ = writeln!(r.markdown, "Frozen-attention ablation: mean velocity over the freeze seconds, median [q1, q3] across seeds:\n");
+    for s in &with {
+        let means = s
+            .runs
+            .iter()
+            .filter_map(|d| d.ablation.as_ref())
+            .map(|a| a.iter().map(|p| p.velocity).sum::<f64>() / a.len().max(1) as f64);
+        let _ = writeln!(
+            r.markdown,
+            "- {}: {} m/s",
+            s.label,
+            cell(&means.collect::<Vec<_>>())
+        );
+    }
+    r.markdown.push('\n');
+    let bands = with
+        .iter()
+        .filter_map(|s| band(&s.label, &ablation_series(&s.runs)));
+    push_lines(
+        r,
+        format!("fig6-{id}.svg"),
+        format!("{shape}: attention frozen at t"),
+        "freeze time (s)",
+        "velocity (m/s)",
+        bands.collect(),
+    );
+}
+
+fn slow_part(samples: &[Sample], id: &str, shape: &str, r: &mut Report) {
+    let slow = ControllerKind::SlowAttention.to_string();
+    let Some(s) = samples
+        .iter()
+        .find(|s| s.label == slow && !s.runs.is_empty())
+    else {
+        return;
+    };
+    let finals = |f: fn(&crate::experiment::Best) -> Option<f32>| -> Vec<f64> {
+        s.runs
+            .iter()
+            .filter_map(|d| d.run.as_ref().and_then(|r| f(&r.best)))
+            .map(f64::from)
+            .collect()
+    };
+    let _ = writeln!(
+        r.markdown,
+        "Slow attention, final best: alpha {}, eta {}.\n",
+        cell(&finals(|b| b.alpha)),
+        cell(&finals(|b| b.eta))
+    );
+    let bands = [("alpha", false), ("eta", true)]
+        .into_iter()
+        .filter_map(|(name, eta)| band(name, &rate_series(&s.runs, eta)));
+    push_lines(
+        r,
+        format!("fig8-{id}.svg"),
+        format!("{shape}: slow attention's alpha and eta"),
+        "evaluations",
+        "value",
+        bands.collect(),
+    );
+}
+
+fn finetune_section(results: &Results, g: &FinetuneGroup, pair: &[String; 2], r: &mut Report) {
+    let seeds = g.seeds.as_ref().unwrap_or(&results.campaign.seeds);
+    let [from, to] = pair;
+    let source = RunSpec::scratch(from, g.controller, g.source_evals, 0);
+    let tuned = RunSpec {
+        source: Some(Box::new(source)),
+        ..RunSpec::scratch(to, g.controller, g.evals, 0)
+    };
+    let mut samples = vec![Sample {
+        label: format!("fine-tuned from {from} ({} + {})", g.source_evals, g.evals),
+        runs: results.seeds_of(&tuned, seeds),
+    }];
+    if let Some(evals) = g.scratch_evals {
+        samples.push(Sample {
+            label: format!("from scratch ({evals})"),
+            runs: results.seeds_of(&RunSpec::scratch(to, g.controller, evals, 0), seeds),
+        });
+    }
+    let _ = writeln!(
+        r.markdown,
+        "## {} · {from} -> {to} · {}\n",
+        g.name, g.controller
+    );
+    let sets = &results.campaign.validate;
+    summary_table(&samples, sets, &mut r.markdown);
+    comparisons(&samples, sets, &mut r.markdown);
+    let offset = g.source_evals as f64;
+    let mut bands: Vec<_> = samples[1..]
+        .iter()
+        .filter_map(|s| band(&s.label, &best_series(&s.runs, 0.0)))
+        .collect();
+    bands.extend(band(
+        &samples[0].label,
+        &best_series(&samples[0].runs, offset),
+    ));
+    let file = format!("fig7-{}-{from}-to-{to}.svg", g.name);
+    push_lines(
+        r,
+        file,
+        format!("{to}: fine-tuning against from scratch"),
+        "evaluations (fine-tuning: after its source's)",
+        "best fitness (m/s)",
+        bands,
+    );
+}

@@ -1,0 +1,189 @@
+#![cfg(not(target_arch = "wasm32"))]
+//! `vsr campaign plan | run | merge` and `vsr report` end to end on campaigns/smoke.toml in a
+//! scratch directory: the plan lists complete commands in dependency order, a run makes
+//! every output, a second run does nothing, a missing output is the only pending job and is
+//! remade, the CSV has a row per run, the report tests every pair and draws SVG figures, and
+//! a killed job leaves no partial file.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn vsr(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_vsr"))
+        .args(args)
+        .output()
+        .expect("vsr runs")
+}
+
+fn text(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr)
+}
+
+/// A fresh scratch directory holding a copy of campaigns/smoke.toml.
+fn smoke(name: &str) -> (PathBuf, String) {
+    let dir = std::env::temp_dir().join(format!("vsr-campaign-{name}-{}", std::process::id()));
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).unwrap();
+    let source = Path::new(env!("CARGO_MANIFEST_DIR")).join("campaigns/smoke.toml");
+    let file = dir.join("smoke.toml");
+    fs::copy(source, &file).unwrap();
+    (dir, file.to_str().unwrap().to_string())
+}
+
+fn files_in(dir: &Path) -> Vec<PathBuf> {
+    let mut all = Vec::new();
+    for entry in fs::read_dir(dir).into_iter().flatten().flatten() {
+        all.push(entry.path());
+    }
+    all.sort();
+    all
+}
+
+#[test]
+fn plan_run_merge_report_and_resume() {
+    let (dir, file) = smoke("e2e");
+    let plan = vsr(&["campaign", "plan", &file]);
+    assert!(plan.status.success(), "{}", text(&plan));
+    let lines: Vec<String> = text(&plan).lines().map(String::from).collect();
+    // 3 controllers x 3 seeds + per seed a scratch run and a fine-tuning run on worm-4x1
+    // (the source is the grid's attention run) = 15 runs, 30 validations, 6 ablations.
+    assert_eq!(lines.len(), 51, "{lines:?}");
+    assert!(lines
+        .iter()
+        .all(|l| l.starts_with("vsr ") && l.contains(" --out ")));
+    let first_use = |what: &str| lines.iter().position(|l| l.contains(what)).unwrap();
+    let source = "runs/worm-3x1-attention-8-s1.json";
+    assert!(
+        lines[first_use(source)].starts_with("vsr evolve"),
+        "made before it is used"
+    );
+    let stage1 = vsr(&["campaign", "plan", &file, "--stage", "1"]);
+    assert_eq!(text(&stage1).lines().count(), 12, "runs from scratch");
+
+    let run = vsr(&["campaign", "run", &file, "--jobs", "2"]);
+    assert!(run.status.success(), "{}", text(&run));
+    let out = dir.join("smoke-out");
+    assert_eq!(files_in(&out.join("runs")).len(), 15);
+    assert_eq!(files_in(&out.join("validation")).len(), 30);
+    assert_eq!(files_in(&out.join("ablation")).len(), 6);
+    let pending = vsr(&["campaign", "plan", &file, "--pending"]);
+    assert_eq!(text(&pending), "", "nothing left to do");
+
+    let kept = fs::read(out.join(source)).unwrap();
+    let again = vsr(&["campaign", "run", &file]);
+    assert!(
+        text(&again).contains("51 done (51 already"),
+        "{}",
+        text(&again)
+    );
+    assert_eq!(
+        fs::read(out.join(source)).unwrap(),
+        kept,
+        "a second run changes nothing"
+    );
+
+    let csv = vsr(&["campaign", "merge", &file]);
+    assert!(csv.status.success(), "{}", text(&csv));
+    let table = fs::read_to_string(out.join("campaign.csv")).unwrap();
+    let header = table.lines().next().unwrap();
+    assert!(header.starts_with("run,kind,shape,controller,evals,seed"));
+    assert!(
+        header.contains("paper_mean") && header.contains("unseen_9") && header.contains("best_g1")
+    );
+    assert_eq!(table.lines().count(), 1 + 15);
+
+    let report = vsr(&["report", &file]);
+    assert!(report.status.success(), "{}", text(&report));
+    let md = fs::read_to_string(out.join("report/report.md")).unwrap();
+    assert!(md.contains("Every planned output exists"), "{md}");
+    assert!(md.contains("| attention | mlp | best |"), "{md}");
+    assert!(md.contains("| fine-tuned from worm-3x1 (8 + 4) | from scratch (12) | unseen mean |"));
+    let svgs: Vec<PathBuf> = files_in(&out.join("report"))
+        .into_iter()
+        .filter(|p| p.extension().is_some_and(|e| e == "svg"))
+        .collect();
+    assert_eq!(svgs.len(), 6, "{svgs:?}");
+    for svg in &svgs {
+        let body = fs::read_to_string(svg).unwrap();
+        assert!(
+            body.starts_with("<svg") && body.contains("<text"),
+            "{svg:?}"
+        );
+    }
+
+    // A lost run file: the report names it, it is the only pending job, a run remakes it.
+    fs::remove_file(out.join(source)).unwrap();
+    let report = vsr(&["report", &file]);
+    let md = fs::read_to_string(out.join("report/report.md")).unwrap();
+    assert!(
+        report.status.success() && md.contains("Missing: 1 planned outputs"),
+        "{md}"
+    );
+    assert!(md.contains("worm-3x1-attention-8-s1.json"));
+    let pending = text(&vsr(&["campaign", "plan", &file, "--pending"]));
+    assert_eq!(pending.lines().count(), 1, "{pending}");
+    let rerun = vsr(&["campaign", "run", &file]);
+    assert!(
+        text(&rerun).contains("51 done (50 already"),
+        "{}",
+        text(&rerun)
+    );
+    let best =
+        |bytes: &[u8]| serde_json::from_slice::<serde_json::Value>(bytes).unwrap()["best"].clone();
+    let remade = fs::read(out.join(source)).unwrap();
+    assert!(
+        best(&remade) == best(&kept),
+        "the same run again (timings aside)"
+    );
+    let _ = fs::remove_dir_all(dir);
+}
+
+#[test]
+fn a_killed_job_leaves_no_file() {
+    let (dir, _) = smoke("kill");
+    let out = dir.join("run.json");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_vsr"))
+        .args([
+            "evolve",
+            "--shape",
+            "biped-4x3",
+            "--controller",
+            "mlp",
+            "--evals",
+            "100000",
+        ])
+        .args([
+            "--seed",
+            "1",
+            "--threads",
+            "1",
+            "--out",
+            out.to_str().unwrap(),
+        ])
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    child.kill().unwrap();
+    child.wait().unwrap();
+    assert_eq!(
+        files_in(&dir),
+        [dir.join("smoke.toml")],
+        "no output, no temporary file"
+    );
+    let _ = fs::remove_dir_all(dir);
+}
+
+#[test]
+fn bad_campaign_files_exit_with_code_2() {
+    let (dir, file) = smoke("bad");
+    fs::write(&file, "output = \"o\"\nseeds = []\n").unwrap();
+    let out = vsr(&["campaign", "plan", &file]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out).contains("seeds"), "{}", text(&out));
+    let missing = vsr(&["campaign", "run", "/no/such/campaign.toml"]);
+    assert_eq!(missing.status.code(), Some(2));
+    let _ = fs::remove_dir_all(dir);
+}
