@@ -11,6 +11,8 @@ mod bench_evolution;
 #[cfg(not(target_arch = "wasm32"))]
 mod cli;
 #[cfg(not(target_arch = "wasm32"))]
+mod ensemble;
+#[cfg(not(target_arch = "wasm32"))]
 mod evaluate;
 #[cfg(not(target_arch = "wasm32"))]
 mod evolve;
@@ -24,6 +26,8 @@ mod runfile;
 mod simulate;
 #[cfg(not(target_arch = "wasm32"))]
 mod terrain;
+#[cfg(not(target_arch = "wasm32"))]
+mod trajectory;
 #[cfg(not(target_arch = "wasm32"))]
 mod validate;
 
