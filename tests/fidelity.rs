@@ -5,7 +5,7 @@
 //! before the first ground contact and gaits only as distributions.
 
 use serde_json::Value;
-use vsr::experiment::{GaitEpisode, PhaseGait};
+use vsr::experiment::{gait_ensemble, GaitEpisode, PhaseGait};
 use vsr::simulation::{Shape, Terrain, World};
 
 fn fixture(name: &str) -> Value {
@@ -98,4 +98,63 @@ fn gait_velocities_fall_in_the_reference_distributions() {
         conditions.len(),
         report.join("\n")
     );
+}
+
+/// Spearman rank correlation (no ties expected between velocities).
+fn rank_correlation(a: &[f64], b: &[f64]) -> f64 {
+    let ranks = |v: &[f64]| {
+        let mut idx: Vec<usize> = (0..v.len()).collect();
+        idx.sort_by(|&i, &j| v[i].total_cmp(&v[j]));
+        let mut r = vec![0.0; v.len()];
+        for (k, &i) in idx.iter().enumerate() {
+            r[i] = k as f64;
+        }
+        r
+    };
+    let (ra, rb) = (ranks(a), ranks(b));
+    let n = a.len() as f64;
+    let d2: f64 = ra.iter().zip(&rb).map(|(x, y)| (x - y) * (x - y)).sum();
+    1.0 - 6.0 * d2 / (n * (n * n - 1.0))
+}
+
+#[test]
+fn gait_ensembles_match_the_reference_distributions() {
+    // SPEC 12: compare distributions, not single chaotic runs. Each gait runs from 17
+    // starts shifted by k x 1e-5 m, as the reference did; its ensemble mean must fall
+    // within the reference mean +- 2 sd, the gaits must rank alike, the average speed
+    // must match, and the ensembles must spread (chaos) on the scale of the reference.
+    let r = fixture("gaits-biped-flat.json");
+    let conditions = r["conditions"].as_array().expect("list");
+    let shape = Shape::parse("biped-4x3").expect("valid");
+    let flat = Terrain::parse("flat").expect("valid");
+    let (mut ours, mut theirs, mut sd_ratios) = (vec![], vec![], vec![]);
+    let (mut inside, mut report) = (0, vec![]);
+    for c in conditions {
+        let gait = PhaseGait::new(f(&c["f"]), f(&c["phi"])).expect("finite");
+        let e = gait_ensemble(&shape, &flat, gait, 30.0, 17, 0.0).expect("stable");
+        let (mean, sd) = (f(&c["mean_velocity"]), f(&c["sd_velocity"]));
+        let our_sd = e.sd.expect("17 runs");
+        inside += usize::from((e.mean - mean).abs() <= 2.0 * sd);
+        ours.push(e.mean);
+        theirs.push(mean);
+        sd_ratios.push(our_sd / sd);
+        report.push(format!(
+            "f={} phi={}: {:.3} +- {our_sd:.3} vs {mean:.3} +- {sd:.3}",
+            c["f"], c["phi"], e.mean
+        ));
+    }
+    let n = conditions.len() as f64;
+    let rho = rank_correlation(&ours, &theirs);
+    let (avg, ref_avg) = (ours.iter().sum::<f64>() / n, theirs.iter().sum::<f64>() / n);
+    sd_ratios.sort_by(f64::total_cmp);
+    let median_ratio = sd_ratios[sd_ratios.len() / 2];
+    let summary = format!(
+        "{inside}/{n} within 2 sd, rank correlation {rho:.2}, mean {avg:.3} vs {ref_avg:.3}, \
+         median sd ratio {median_ratio:.2}\n{}",
+        report.join("\n")
+    );
+    assert!(inside as f64 >= 0.9 * n, "{summary}");
+    assert!(rho >= 0.6, "{summary}");
+    assert!((avg - ref_avg).abs() <= 0.1, "{summary}");
+    assert!((0.25..=4.0).contains(&median_ratio), "{summary}");
 }

@@ -97,10 +97,22 @@ impl Episode {
     pub fn with_policy(
         shape: &Shape,
         terrain: Terrain,
-        mut policy: Policy,
+        policy: Policy,
         noise_seed: Option<u64>,
     ) -> Episode {
-        let world = World::new(shape.voxels(), terrain.xs(), terrain.ys());
+        Episode::with_start_offset(shape, terrain, policy, noise_seed, 0.0)
+    }
+
+    /// As [`Episode::with_policy`], with the robot's start shifted right by `offset`
+    /// metres before it is lowered onto the terrain.
+    pub fn with_start_offset(
+        shape: &Shape,
+        terrain: Terrain,
+        mut policy: Policy,
+        noise_seed: Option<u64>,
+        offset: f64,
+    ) -> Episode {
+        let world = World::with_start_offset(shape.voxels(), terrain.xs(), terrain.ys(), offset);
         let columns: Vec<usize> = shape.voxels().iter().map(|c| c.0).collect();
         if let Policy::Brain(c) = &mut policy {
             c.reset();

@@ -4,6 +4,7 @@
 pub mod ablation;
 pub mod campaign;
 pub mod config;
+pub mod ensemble;
 pub mod episode;
 pub mod evaluate;
 pub mod evolution;
@@ -11,13 +12,16 @@ pub mod finetune;
 pub mod gait;
 pub mod run;
 pub mod seeds;
+pub mod trajectory;
 pub mod validation;
 
 pub use ablation::{ablate, AblationPoint, ABLATION_TERRAIN};
 pub use config::{EvolutionConfig, SourceRun, TrainingTerrain};
+pub use ensemble::{check_start_offset, gait_ensemble, Ensemble, ENSEMBLE_SHIFT};
 pub use episode::{steps_for, topology, Episode, GaitEpisode, Outcome, Policy};
 pub use evolution::{Evolution, Job};
 pub use finetune::source_of;
 pub use gait::PhaseGait;
 pub use run::{Best, GenerationRecord, RunFile, Timing};
+pub use trajectory::Frame;
 pub use validation::{validate, validate_on, Validation, ValidationSet};

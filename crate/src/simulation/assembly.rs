@@ -1,7 +1,8 @@
 //! Builds a robot from its voxel grid positions (SPEC 4): corner squares, welded
 //! squares merged into rigid pieces (an exact shortcut for rigid welds), the 18
 //! springs and 4 ropes of every voxel, and the placement on the ground (left edge at
-//! x = 11 m, lowest voxel bottom 1 m above the ground under it).
+//! x = 11 m, or shifted by a start offset, lowest voxel bottom 1 m above the ground
+//! under it).
 
 use std::collections::HashMap;
 
@@ -55,10 +56,11 @@ fn union(parent: &mut [usize], a: usize, b: usize) {
     }
 }
 
-/// Translation (tx, ty) that places the grid on the ground as SPEC 4 says.
-fn placement(cells: &[(usize, usize)], ground: &Ground) -> (f64, f64) {
+/// Translation (tx, ty) that places the grid on the ground as SPEC 4 says, its left
+/// edge moved right by `offset` metres before it is lowered onto the ground.
+fn placement(cells: &[(usize, usize)], ground: &Ground, offset: f64) -> (f64, f64) {
     let min_x = cells.iter().map(|c| c.0).min().unwrap_or(0) as f64;
-    let tx = PLACEMENT_LEFT_X + VOXEL_SIDE / 2.0 - VOXEL_SIDE * min_x;
+    let tx = PLACEMENT_LEFT_X + offset + VOXEL_SIDE / 2.0 - VOXEL_SIDE * min_x;
     let min_gap = cells
         .iter()
         .map(|&(x, y)| VOXEL_SIDE * y as f64 - ground.height_at(VOXEL_SIDE * x as f64 + tx))
@@ -92,9 +94,10 @@ fn merge_welds(cells: &[(usize, usize)]) -> Vec<usize> {
         .collect()
 }
 
-/// Assembles and places a robot whose voxels sit at grid `cells` (index order).
-pub fn assemble(cells: &[(usize, usize)], ground: &Ground) -> Assembly {
-    let (tx, ty) = placement(cells, ground);
+/// Assembles and places a robot whose voxels sit at grid `cells` (index order), its
+/// start shifted right by `offset` metres (0 for the reference placement).
+pub fn assemble(cells: &[(usize, usize)], ground: &Ground, offset: f64) -> Assembly {
+    let (tx, ty) = placement(cells, ground, offset);
     let piece_of = merge_welds(cells);
     let n_pieces = piece_of.iter().max().map_or(0, |m| m + 1);
     let centres: Vec<(f64, f64)> = (0..piece_of.len())

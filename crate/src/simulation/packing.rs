@@ -153,7 +153,7 @@ mod tests {
     fn biped_packs_densely() {
         let shape = Shape::parse("biped-4x3").unwrap();
         let ground = Ground::new(&[0.0, 10.0, 1990.0, 2000.0], &[100.0, 5.0, 5.0, 100.0]);
-        let asm = assemble(shape.voxels(), &ground);
+        let asm = assemble(shape.voxels(), &ground, 0.0);
         let lanes = Lanes::new(&asm.springs, &asm.pieces, asm.pieces.len() as u32);
         let used: usize = lanes.rows.len() * LANES;
         let n = asm.springs.len();

@@ -1,10 +1,14 @@
 //! `vsr evaluate --genome RUN.json --terrain T`: one episode of a run's best individual,
-//! printed as JSON (`velocity`, `distance`, ...).
+//! printed as JSON (`velocity`, `distance`, ...); `--trajectory FILE` also writes it
+//! step by step.
 
 use std::path::PathBuf;
 
-use vsr::experiment::evaluate::evaluate;
+use vsr::experiment::evaluate::controller_for;
+use vsr::experiment::{steps_for, Episode, Policy};
 use vsr::simulation::{Shape, Terrain};
+
+use crate::trajectory::Writer;
 
 /// Arguments of `vsr evaluate`.
 #[derive(clap::Args, Debug)]
@@ -24,6 +28,10 @@ pub struct Args {
     /// Seed of the sensor noise.
     #[arg(long, default_value_t = 0)]
     noise_seed: u64,
+    /// Write the run as JSON lines to FILE, one per step: t, centre, area, actuation,
+    /// squares.
+    #[arg(long, value_name = "FILE")]
+    trajectory: Option<PathBuf>,
 }
 
 /// Runs the command.
@@ -36,14 +44,13 @@ pub fn run(args: Args) -> vsr::Result<()> {
     };
     let terrain = Terrain::parse(&args.terrain)?;
     let noise = Some(args.noise_seed);
-    let outcome = evaluate(
-        &shape,
-        terrain,
-        best.controller,
-        &best.genome,
-        noise,
-        args.seconds,
-    )?;
+    let controller = controller_for(best.controller, &shape, &best.genome)?;
+    let writer = args.trajectory.as_deref().map(Writer::create).transpose()?;
+    // The episode `vsr::experiment::evaluate::evaluate` runs, stepped here so that
+    // it can be recorded.
+    let mut episode = Episode::with_policy(&shape, terrain, Policy::Brain(controller), noise);
+    crate::trajectory::run(&mut episode, steps_for(args.seconds), writer)?;
+    let outcome = episode.run(args.seconds)?;
     let body = serde_json::json!({
         "shape": shape.to_rows(),
         "controller": best.controller,

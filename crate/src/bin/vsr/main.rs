@@ -17,6 +17,8 @@ mod campaign_run;
 #[cfg(not(target_arch = "wasm32"))]
 mod cli;
 #[cfg(not(target_arch = "wasm32"))]
+mod ensemble;
+#[cfg(not(target_arch = "wasm32"))]
 mod evaluate;
 #[cfg(not(target_arch = "wasm32"))]
 mod evolve;
@@ -34,6 +36,8 @@ mod simulate;
 mod svg;
 #[cfg(not(target_arch = "wasm32"))]
 mod terrain;
+#[cfg(not(target_arch = "wasm32"))]
+mod trajectory;
 #[cfg(not(target_arch = "wasm32"))]
 mod validate;
 
