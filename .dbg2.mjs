@@ -1,0 +1,12 @@
+import { start, openPage, byTestId } from './tests/web/harness.mjs';
+const env = await start();
+const { page } = await openPage(env.browser, env.url, { width: 1400, height: 900 });
+await byTestId(page, 'pretrained').selectOption('pretrained/biped-4x3-attention-seed1.json');
+await byTestId(page, 'preset').selectOption({ label: 'comb-7x2' });
+await page.waitForTimeout(500);
+await byTestId(page, 'load-pretrained').click();
+await page.locator('#run-compare').check();
+await byTestId(page, 'finetune').click();
+await page.waitForTimeout(12000);
+await page.screenshot({ path: '/tmp/desk2.png' });
+await env.close();
