@@ -14,14 +14,11 @@ import { messageOf } from './kit.js';
 import { MessageBox, plain } from './message.js';
 import { ModuleList } from './modules.js';
 import { RunPanel } from './run-panel.js';
-import { decodeState, encodeState } from './share.js';
-import { keep, loadKept } from './storage.js';
+import { Keeper } from './keeper.js';
 import { Viewer } from './viewer.js';
 
 /** Least wall time between two switches of the viewer to a newer best (ms). */
 const FOLLOW_INTERVAL_MS = 3000;
-/** Wait after the last change before keeping the state (ms). */
-const KEEP_DELAY_MS = 300;
 
 /**
  * @typedef {object} Brain  what drives the drawn body
@@ -52,7 +49,6 @@ let edits = 0;
 /** A brain set aside by choosing another controller family, back if that family is chosen again. @type {Brain | null} */
 let shelved = null;
 let running = false;
-let keepTimer = 0;
 let follow = { last: -Infinity, timer: 0, pending: /** @type {(() => void) | null} */ (null) };
 
 const editor = new Editor(el('editor'), drawing, {
@@ -64,6 +60,12 @@ const viewer = new Viewer(document, {
   message: showMessage,
   loaded: () => messages.clear('error'),
   clicked: (pick) => editWalking(pick),
+});
+const keeper = new Keeper(defaults, el('share-link'), {
+  state: pageState,
+  apply: restore,
+  running: () => running,
+  say: (text, kind = 'error') => messages.show(text, kind),
 });
 const modules = new ModuleList(document, { loadOnto: loadModule, openOwn: openModule, message: showMessage });
 const runs = new RunPanel(document, defaults, {
@@ -136,7 +138,7 @@ function origin() {
 /** The drawing changed (a stroke, undo, a preset, typed rows, an edit of the walking robot). */
 function bodyChanged() {
   updateCheck();
-  if (!check.ok) { scheduleKeep(); return; }
+  if (!check.ok) { keeper.schedule(); return; }
   const rows = drawing.rows();
   if (brain && brain.rows !== rows) {
     const here = origin();
@@ -152,7 +154,7 @@ function bodyChanged() {
     brain = { ...brain, origin: origin() };
   }
   showBrain();
-  scheduleKeep();
+  keeper.schedule();
 }
 
 /** Sends the drawing and its brain to the viewer and says what drives it. */
@@ -185,7 +187,7 @@ function controllerChosen() {
     showBrain();
   }
   updateParams();
-  scheduleKeep();
+  keeper.schedule();
 }
 
 /** @returns {number} the run seed in the form (0 when not a number) */
@@ -233,7 +235,7 @@ function loadModule(module) {
     };
     showMessage('');
     showBrain();
-    scheduleKeep();
+    keeper.schedule();
   } catch (error) {
     showMessage(messageOf(error));
   }
@@ -274,7 +276,7 @@ function onBest(genome, fitness, settings, kind) {
       source: runs.mode === 'finetune' ? brain?.source ?? null : null,
       label: `the best so far while ${what} (${fitness.toFixed(2)} m/s in one evaluation, seed ${settings.seed})` };
     showBrain();
-    scheduleKeep();
+    keeper.schedule();
   };
   window.clearTimeout(follow.timer);
   const wait = follow.last + FOLLOW_INTERVAL_MS - performance.now();
@@ -316,7 +318,7 @@ function onFinished(run) {
   brain = { controller: best.controller, genome: new Float32Array(best.genome), rows: run.settings.shape, origin: origin(),
     module: null, source: best.controller === 'attention' ? run.runFile : null, label: `the ${what} run's result: ${result}` };
   showBrain();
-  scheduleKeep();
+  keeper.schedule();
 }
 
 /** @returns {import('./share.js').PageState} */
@@ -328,18 +330,10 @@ function pageState() {
   };
 }
 
-function scheduleKeep() {
-  window.clearTimeout(keepTimer);
-  keepTimer = window.setTimeout(() => {
-    const problem = keep(encodeState(pageState()));
-    if (problem) showMessage(problem);
-  }, KEEP_DELAY_MS);
-}
-
 /**
- * Restores a state from a link or storage; a robot that does not fit the grid is refused.
+ * Shows a state from a link or storage; a robot that does not fit the grid is refused.
  * @param {import('./share.js').PageState} state
- * @returns {Promise<string>} '' or why nothing was restored
+ * @returns {Promise<string>} '' or why nothing was shown
  */
 async function restore(state) {
   const problem = drawing.setRows(state.rows);
@@ -360,24 +354,9 @@ async function restore(state) {
       }
     }
   }
+  editor.draw();
+  bodyChanged();
   return '';
-}
-
-/** The Share button: the state in the address bar and on the clipboard. */
-async function share() {
-  const url = `${location.origin}${location.pathname}#${encodeState(pageState())}`;
-  history.replaceState(null, '', url);
-  const out = /** @type {HTMLInputElement} */ (el('share-link'));
-  out.value = url;
-  out.dataset.value = url;
-  out.hidden = false;
-  out.select();
-  try {
-    await navigator.clipboard.writeText(url);
-    messages.show('Link copied: it opens this robot, its settings and its controller.', 'note');
-  } catch {
-    messages.show('Here is the link (selected): copy it to share this robot.', 'note');
-  }
 }
 
 function wire() {
@@ -412,9 +391,9 @@ function wire() {
     bodyChanged();
   });
   controllerSelect.addEventListener('change', controllerChosen);
-  el('share').addEventListener('click', share);
-  for (const input of Object.values(runs.inputs)) input.addEventListener('change', scheduleKeep);
-  viewer.terrain.addEventListener('change', scheduleKeep);
+  el('share').addEventListener('click', () => keeper.share());
+  for (const input of Object.values(runs.inputs)) input.addEventListener('change', () => keeper.schedule());
+  viewer.terrain.addEventListener('change', () => keeper.schedule());
 }
 
 async function start() {
@@ -422,48 +401,17 @@ async function start() {
   viewer.terrain.value = defaults.viewTerrain;
   viewer.gait.frequency.value = String(defaults.gait.frequency);
   viewer.gait.phase.value = String(defaults.gait.phase);
-  const fromLink = location.hash.length > 1 ? decodeState(location.hash, defaults.controllers, defaults.grid) : null;
-  const kept = loadKept();
-  const fromStorage = kept ? decodeState(kept, defaults.controllers, defaults.grid, true) : null;
-  // A link first, else what was kept, else the first preset.
-  let refused = '';
-  let restored = false;
-  if (fromLink && 'state' in fromLink) {
-    refused = await restore(fromLink.state);
-    restored = refused === '';
-  } else if (fromLink) {
-    refused = fromLink.error;
-  }
-  if (!restored && fromStorage && 'state' in fromStorage) restored = (await restore(fromStorage.state)) === '';
-  if (!restored) {
+  if (!(await keeper.restore())) { // a link first, else what was kept, else the first preset
     drawing.setRows(defaults.presets[0].rows);
     drawing.undoStack = [];
+    editor.draw();
+    bodyChanged();
   }
-  editor.draw();
-  bodyChanged();
-  if (refused) linkRefused(refused);
   modules.listPretrained();
-  window.addEventListener('hashchange', openLink);
+  window.addEventListener('hashchange', () => keeper.openLink());
   window.addEventListener('beforeunload', (event) => {
     if (running) event.preventDefault(); // the browser asks: leaving ends the run (its best so far is kept)
   });
-}
-
-/** A link pasted into this tab (only the part after '#' changed): open it, unless a run goes on. */
-async function openLink() {
-  if (location.hash.length <= 1) return;
-  if (running) { showMessage('stop the run before opening another robot'); return; }
-  const opened = decodeState(location.hash, defaults.controllers, defaults.grid);
-  if ('error' in opened) { linkRefused(opened.error); return; }
-  const problem = await restore(opened.state);
-  if (problem) { linkRefused(problem); return; }
-  editor.draw();
-  bodyChanged();
-}
-
-/** @param {string} why */
-function linkRefused(why) {
-  showMessage(`This link could not be opened (${why}); your own robot is shown instead.`);
 }
 
 start();

@@ -1,0 +1,95 @@
+// @ts-check
+/**
+ * Keeping and sharing the page's state: kept in the browser's storage shortly after each
+ * change (drafts too), put in a link by Share (address bar and clipboard), and read back at
+ * start-up (a link first, else what was kept) or when a link is pasted into this tab. Every
+ * state read is checked in full (share.js) before anything changes; a refused link says why.
+ */
+import { decodeState, encodeState } from './share.js';
+import { keep, loadKept } from './storage.js';
+
+/** Wait after the last change before keeping the state (ms). */
+const KEEP_DELAY_MS = 300;
+
+/**
+ * @typedef {object} KeeperHooks
+ * @property {() => import('./share.js').PageState} state  the state now
+ * @property {(state: import('./share.js').PageState) => Promise<string>} apply  shows a state; '' or why not
+ * @property {() => boolean} running                          a run uses the robot
+ * @property {(text: string, kind?: import('./message.js').Kind) => void} say
+ */
+
+export class Keeper {
+  /**
+   * @param {import('./core.js').Defaults} defaults
+   * @param {HTMLInputElement} linkField where a shared link is shown
+   * @param {KeeperHooks} hooks
+   */
+  constructor(defaults, linkField, hooks) {
+    this.defaults = defaults;
+    this.linkField = linkField;
+    this.hooks = hooks;
+    this.timer = 0;
+  }
+
+  /** Keeps the state shortly (changes in a burst are kept once). */
+  schedule() {
+    window.clearTimeout(this.timer);
+    this.timer = window.setTimeout(() => {
+      const problem = keep(encodeState(this.hooks.state()));
+      if (problem) this.hooks.say(problem);
+    }, KEEP_DELAY_MS);
+  }
+
+  /**
+   * Shows the state of the link this page was opened with, else the kept one.
+   * @returns {Promise<boolean>} whether a state was shown (else the caller shows its default)
+   */
+  async restore() {
+    const { controllers, grid } = this.defaults;
+    const fromLink = location.hash.length > 1 ? decodeState(location.hash, controllers, grid) : null;
+    let refused = '';
+    let shown = false;
+    if (fromLink && 'state' in fromLink) {
+      refused = await this.hooks.apply(fromLink.state);
+      shown = refused === '';
+    } else if (fromLink) {
+      refused = fromLink.error;
+    }
+    const kept = loadKept();
+    const fromStorage = !shown && kept ? decodeState(kept, controllers, grid, true) : null;
+    if (fromStorage && 'state' in fromStorage) shown = (await this.hooks.apply(fromStorage.state)) === '';
+    if (refused) this.refuse(refused);
+    return shown;
+  }
+
+  /** A link pasted into this tab (only the part after '#' changed): open it, unless a run goes on. */
+  async openLink() {
+    if (location.hash.length <= 1) return;
+    if (this.hooks.running()) { this.hooks.say('Stop the run before opening another robot.'); return; }
+    const opened = decodeState(location.hash, this.defaults.controllers, this.defaults.grid);
+    const problem = 'error' in opened ? opened.error : await this.hooks.apply(opened.state);
+    if (problem) this.refuse(problem);
+  }
+
+  /** The Share button: the state in the address bar and on the clipboard. */
+  async share() {
+    const url = `${location.origin}${location.pathname}#${encodeState(this.hooks.state())}`;
+    history.replaceState(null, '', url);
+    this.linkField.value = url;
+    this.linkField.dataset.value = url;
+    this.linkField.hidden = false;
+    this.linkField.select();
+    try {
+      await navigator.clipboard.writeText(url);
+      this.hooks.say('Link copied: it opens this robot, its settings and its controller.', 'note');
+    } catch {
+      this.hooks.say('Here is the link (selected): copy it to share this robot.', 'note');
+    }
+  }
+
+  /** @param {string} why */
+  refuse(why) {
+    this.hooks.say(`This link could not be opened (${why}); your own robot is shown instead.`);
+  }
+}
