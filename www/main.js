@@ -7,7 +7,8 @@
  * it by grid position (the core's remap). The state is kept across reloads and can be
  * shared as a link.
  */
-import { checkShape, ready, remapGenome, runGenome, transplant, describeRun } from './core.js';
+import { bestSoFar, followEdit, ownBody, runResult, transplanted } from './brain.js';
+import { checkShape, ready } from './core.js';
 import { Drawing } from './drawing.js';
 import { Editor } from './editor.js';
 import { messageOf } from './kit.js';
@@ -20,16 +21,7 @@ import { Viewer } from './viewer.js';
 /** Least wall time between two switches of the viewer to a newer best (ms). */
 const FOLLOW_INTERVAL_MS = 3000;
 
-/**
- * @typedef {object} Brain  what drives the drawn body
- * @property {string} controller
- * @property {Float32Array} genome   for the body `rows`
- * @property {string} rows           the body the genome fits
- * @property {{left: number, bottom: number}} origin  where that body sat on the grid
- * @property {string} label          where it came from, in words
- * @property {string | null} module  the pretrained file it came from, if any
- * @property {string | null} source  the run file whose attention block it carries (fine-tuning), if any
- */
+/** @typedef {import('./brain.js').Brain} Brain */
 
 const el = (/** @type {string} */ id) => /** @type {any} */ (document.getElementById(id));
 const messages = new MessageBox(el('message'), el('message-text'), el('message-close'));
@@ -141,11 +133,8 @@ function bodyChanged() {
   if (!check.ok) { keeper.schedule(); return; }
   const rows = drawing.rows();
   if (brain && brain.rows !== rows) {
-    const here = origin();
     try {
-      const genome = remapGenome(brain.controller, brain.genome, brain.rows, rows,
-        here.left - brain.origin.left, here.bottom - brain.origin.bottom, seed(), ++edits);
-      brain = { ...brain, genome, rows, origin: here, label: brain.label.replace(/ · edited.*$/, '') + ' · edited' };
+      brain = followEdit(brain, rows, origin(), seed(), ++edits);
     } catch (error) {
       showMessage(`the controller could not follow the edit: ${messageOf(error)}`);
       brain = null;
@@ -224,15 +213,7 @@ function editWalking(pick) {
 function loadModule(module) {
   if (!check.ok) { showMessage('draw a valid robot first'); return; }
   try {
-    const rows = drawing.rows();
-    const info = describeRun(module.text);
-    const genome = transplant(module.text, rows, seed());
-    const same = info.shape === rows;
-    brain = {
-      controller: info.controller, genome, rows, origin: origin(), module: module.key.startsWith('pretrained/') ? module.key : null,
-      source: info.controller === 'attention' ? module.text : null,
-      label: same ? `${module.label}, on its own body` : `the attention block of a module evolved on ${info.shape}; downstream genes re-drawn for this body (seed ${seed()})`,
-    };
+    brain = transplanted(module, drawing.rows(), origin(), seed());
     showMessage('');
     showBrain();
     keeper.schedule();
@@ -244,14 +225,10 @@ function loadModule(module) {
 /** Replaces the drawing by the module's own body and genome. @param {import('./modules.js').Module} module */
 function openModule(module) {
   try {
-    const info = describeRun(module.text);
-    const genome = runGenome(module.text);
-    const problem = drawing.setRows(info.shape);
+    const next = ownBody(module, { left: 0, bottom: 0 }); // drawn at the bottom-left
+    const problem = drawing.setRows(next.rows);
     if (problem) { showMessage(`this module's body does not fit the grid: ${problem}`); return; }
-    brain = {
-      controller: info.controller, genome, rows: drawing.rows(), origin: origin(), label: `${module.label}, on its own body`,
-      module: module.key.startsWith('pretrained/') ? module.key : null, source: info.controller === 'attention' ? module.text : null,
-    };
+    brain = next;
     showMessage('');
     editor.draw();
     bodyChanged();
@@ -271,10 +248,7 @@ function onBest(genome, fitness, settings, kind) {
     follow.last = performance.now();
     follow.pending = null;
     if (settings.shape !== drawing.rows()) return;
-    const what = runs.mode === 'finetune' ? 'fine-tuning' : 'evolving';
-    brain = { controller: kind, genome, rows: settings.shape, origin: origin(), module: null,
-      source: runs.mode === 'finetune' ? brain?.source ?? null : null,
-      label: `the best so far while ${what} (${fitness.toFixed(2)} m/s in one evaluation, seed ${settings.seed})` };
+    brain = bestSoFar(genome, fitness, settings, kind, runs.mode === 'finetune', brain?.source ?? null, origin());
     showBrain();
     keeper.schedule();
   };
@@ -315,8 +289,7 @@ function onFinished(run) {
     messages.show(`The run ${run.stopped ? 'stopped' : 'finished'}: its result (${result}) is in the module list.`, 'note');
     return;
   }
-  brain = { controller: best.controller, genome: new Float32Array(best.genome), rows: run.settings.shape, origin: origin(),
-    module: null, source: best.controller === 'attention' ? run.runFile : null, label: `the ${what} run's result: ${result}` };
+  brain = runResult(best, run.runFile, run.settings.shape, origin(), `the ${what} run's result: ${result}`);
   showBrain();
   keeper.schedule();
 }

@@ -1,0 +1,97 @@
+// @ts-check
+/**
+ * The brain: what drives the drawn body, a controller family and its genome for that body,
+ * with where it came from. Each function here makes a new brain from what the page has (a
+ * module, a finished run, a best seen during a run, an edit of the body) with the core's
+ * operations; none keeps state. The page holds the current brain.
+ */
+import { describeRun, remapGenome, runGenome, transplant } from './core.js';
+
+/**
+ * @typedef {object} Brain
+ * @property {string} controller
+ * @property {Float32Array} genome   for the body `rows`
+ * @property {string} rows           the body the genome fits
+ * @property {{left: number, bottom: number}} origin  where that body sat on the grid
+ * @property {string} label          where it came from, in words
+ * @property {string | null} module  the pretrained file it came from, if any
+ * @property {string | null} source  the run file whose attention block it carries (fine-tuning), if any
+ */
+
+/** @typedef {{left: number, bottom: number}} Origin */
+
+/**
+ * A module put on the body `rows`: SPEC 10's transplant (throws a readable Error when the
+ * module cannot go on this body).
+ * @param {import('./modules.js').Module} module @param {string} rows @param {Origin} origin @param {number} seed
+ * @returns {Brain}
+ */
+export function transplanted(module, rows, origin, seed) {
+  const info = describeRun(module.text);
+  const genome = transplant(module.text, rows, seed);
+  return {
+    controller: info.controller, genome, rows, origin, module: pretrainedKey(module), source: attentionSource(info, module.text),
+    label: info.shape === rows ? `${module.label}, on its own body`
+      : `the attention block of a module evolved on ${info.shape}; downstream genes re-drawn for this body (seed ${seed})`,
+  };
+}
+
+/**
+ * A module on its own body (the caller draws that body, `info.shape`).
+ * @param {import('./modules.js').Module} module @param {Origin} origin
+ * @returns {Brain}
+ */
+export function ownBody(module, origin) {
+  const info = describeRun(module.text);
+  return {
+    controller: info.controller, genome: runGenome(module.text), rows: info.shape, origin, module: pretrainedKey(module),
+    source: attentionSource(info, module.text), label: `${module.label}, on its own body`,
+  };
+}
+
+/**
+ * The brain after an edit of its body, the genome following the voxels by grid position.
+ * @param {Brain} brain @param {string} rows @param {Origin} origin @param {number} seed @param {number} edit
+ * @returns {Brain}
+ */
+export function followEdit(brain, rows, origin, seed, edit) {
+  const genome = remapGenome(brain.controller, brain.genome, brain.rows, rows,
+    origin.left - brain.origin.left, origin.bottom - brain.origin.bottom, seed, edit);
+  return { ...brain, genome, rows, origin, label: `${brain.label.replace(/ · edited$/, '')} · edited` };
+}
+
+/**
+ * The best single evaluation seen during a run.
+ * @param {Float32Array} genome @param {number} fitness @param {import('./protocol.js').EvolveSettings} settings
+ * @param {string} kind @param {boolean} finetuning @param {string | null} source @param {Origin} origin
+ * @returns {Brain}
+ */
+export function bestSoFar(genome, fitness, settings, kind, finetuning, source, origin) {
+  return {
+    controller: kind, genome, rows: settings.shape, origin, module: null, source: finetuning ? source : null,
+    label: `the best so far while ${finetuning ? 'fine-tuning' : 'evolving'} (${fitness.toFixed(2)} m/s in one evaluation, seed ${settings.seed})`,
+  };
+}
+
+/**
+ * A finished run's result: its run file's best.
+ * @param {{controller: string, genome: number[]}} best @param {string} runFile @param {string} rows
+ * @param {Origin} origin @param {string} label
+ * @returns {Brain}
+ */
+export function runResult(best, runFile, rows, origin, label) {
+  return {
+    controller: best.controller, genome: new Float32Array(best.genome), rows, origin, module: null,
+    source: best.controller === 'attention' ? runFile : null, label,
+  };
+}
+
+/** @param {import('./modules.js').Module} module */
+function pretrainedKey(module) {
+  return module.key.startsWith('pretrained/') ? module.key : null;
+}
+
+/** @param {{controller: string}} info @param {string} text */
+function attentionSource(info, text) {
+  return info.controller === 'attention' ? text : null;
+}
