@@ -1,29 +1,31 @@
-//! Per-step preparation of the spring rows, four lanes at a time.
+//! Per-step preparation of the spring rows, all lanes of a batch at a time.
 //!
 //! A spring's anchor is its corner square's centre plus a small offset q (a square
 //! vertex or 0), both fixed in the piece frame. Per batch we rotate each lane's square
 //! centre once; per row we rotate only q, and the anchor is the sum. Every step then
 //! runs lane-parallel (`[f64; LANES]` loops the compiler packs into SIMD, including the
 //! square roots and divisions), builds the batch's group matrices for the sweep
-//! ([`super::lane_solve`]) and ends with the warm-start impulses.
+//! ([`super::group`]) and ends with the warm-start impulses.
 
 // Lane loops index several parallel arrays by lane on purpose.
 #![allow(clippy::needless_range_loop)]
 
-use super::body::Pieces;
-use super::constants::{CORNER_INERTIA, CORNER_MASS};
-use super::lane_solve::{apply, group_matrices};
-use super::lanes::{Batch, Lane3, Lanes, Row4, RowDef, L, LANES};
+use super::batch::{Batch, Batches, Row, RowDef};
+use super::group::group_matrices;
+use super::lanes::{Lane3, L, LANES};
+use super::sweep::apply;
+use crate::simulation::body::Pieces;
+use crate::simulation::constants::{CORNER_INERTIA, CORNER_MASS};
 
-/// The spring law's constants (see [`super::springs::Springs::prepare`]).
+/// The spring law's constants (see [`super::Springs::prepare`]).
 #[derive(Debug, Clone, Copy)]
-pub struct Law {
+pub(super) struct Law {
     /// gamma = G / m_ref.
-    pub g: f64,
+    pub(super) g: f64,
     /// bias = stretch B.
-    pub b: f64,
+    pub(super) b: f64,
     /// omega^2 (1/s^2), for the stiffness k = m_ref omega^2.
-    pub omega2: f64,
+    pub(super) omega2: f64,
 }
 
 /// One side of a batch: its lanes' piece positions, rotations and rotated square
@@ -38,6 +40,8 @@ struct Side {
 }
 
 impl Side {
+    /// A padding lane ([`super::lanes::PAD`]) reads the last piece's pose: any finite
+    /// pose would do, its rows have no effect.
     #[inline]
     fn gather(pieces: &Pieces, ids: &[u32; LANES], sx: &L, sy: &L) -> Side {
         let last = pieces.len() - 1;
@@ -119,9 +123,9 @@ fn geometry(def: &RowDef, a: &Side, b: &Side) -> Geometry {
 
 /// The solver row and the (stiffness, stretch) energy terms of one row.
 #[inline]
-fn row(g: &Geometry, target: &L, batch: &Batch, law: Law) -> (Row4, (L, L)) {
+fn row(g: &Geometry, target: &L, batch: &Batch, law: Law) -> (Row, (L, L)) {
     let [ima, iia, imb, iib] = &batch.inv;
-    let mut row = Row4::default();
+    let mut row = Row::default();
     let mut energy = ([0.0; LANES], [0.0; LANES]);
     for k in 0..LANES {
         let (nx, ny, rna, rnb) = (g.nx[k], g.ny[k], g.rna[k], g.rnb[k]);
@@ -140,9 +144,9 @@ fn row(g: &Geometry, target: &L, batch: &Batch, law: Law) -> (Row4, (L, L)) {
     (row, energy)
 }
 
-impl Lanes {
+impl Batches {
     /// Prepares every row for this step and applies the warm-start impulses.
-    pub fn prepare(&mut self, pieces: &mut Pieces, law: Law) {
+    pub(super) fn prepare(&mut self, pieces: &mut Pieces, law: Law) {
         for batch in &self.batches {
             let sq = &batch.squares;
             let a = Side::gather(pieces, &batch.a, &sq[0], &sq[1]);
