@@ -3,12 +3,9 @@
 //! A spring's anchor is its corner square's centre plus a small offset q (a square
 //! vertex or 0), both fixed in the piece frame. Per batch we rotate each lane's square
 //! centre once; per row we rotate only q, and the anchor is the sum. Every step then
-//! runs lane-parallel (`[f64; LANES]` loops the compiler packs into SIMD, including the
-//! square roots and divisions), builds the batch's group matrices for the sweep
+//! runs lane-parallel (explicit `wide::f64x4`, including the square roots and
+//! divisions, in the same operation order as one lane alone), builds the batch's group matrices for the sweep
 //! ([`super::group`]) and ends with the warm-start impulses.
-
-// Lane loops index several parallel arrays by lane on purpose.
-#![allow(clippy::needless_range_loop)]
 
 use super::batch::{Batch, Batches, Row, RowDef};
 use super::group::group_matrices;
@@ -16,6 +13,7 @@ use super::lanes::{Lane3, L, LANES};
 use super::sweep::apply;
 use crate::simulation::body::Pieces;
 use crate::simulation::constants::{CORNER_INERTIA, CORNER_MASS};
+use wide::{f64x4, CmpGt};
 
 /// The spring law's constants (see [`super::Springs::prepare`]).
 #[derive(Debug, Clone, Copy)]
@@ -31,116 +29,110 @@ pub(super) struct Law {
 /// One side of a batch: its lanes' piece positions, rotations and rotated square
 /// centres (offsets from the centre of mass, world frame).
 struct Side {
-    x: L,
-    y: L,
-    c: L,
-    s: L,
-    lx: L,
-    ly: L,
+    x: f64x4,
+    y: f64x4,
+    c: f64x4,
+    s: f64x4,
+    lx: f64x4,
+    ly: f64x4,
 }
 
 impl Side {
     /// A padding lane ([`super::lanes::PAD`]) reads the last piece's pose: any finite
     /// pose would do, its rows have no effect.
-    #[inline]
+    #[inline(always)]
     fn gather(pieces: &Pieces, ids: &[u32; LANES], sx: &L, sy: &L) -> Side {
         let last = pieces.len() - 1;
-        let mut side = Side {
-            x: [0.0; LANES],
-            y: [0.0; LANES],
-            c: [0.0; LANES],
-            s: [0.0; LANES],
-            lx: [0.0; LANES],
-            ly: [0.0; LANES],
-        };
-        for k in 0..LANES {
-            let p = (ids[k] as usize).min(last);
-            let (c, s) = (pieces.cos[p], pieces.sin[p]);
-            (side.x[k], side.y[k], side.c[k], side.s[k]) = (pieces.x[p], pieces.y[p], c, s);
-            side.lx[k] = c * sx[k] - s * sy[k];
-            side.ly[k] = s * sx[k] + c * sy[k];
+        let p = ids.map(|id| (id as usize).min(last));
+        let get = |values: &[f64]| f64x4::from(p.map(|p| values[p]));
+        let (c, s) = (get(&pieces.cos), get(&pieces.sin));
+        let (sx, sy) = (v(sx), v(sy));
+        Side {
+            x: get(&pieces.x),
+            y: get(&pieces.y),
+            c,
+            s,
+            lx: c * sx - s * sy,
+            ly: s * sx + c * sy,
         }
-        side
     }
 
     /// World-frame q and anchor offset from the centre of mass: (qx, qy, rx, ry).
-    #[inline]
-    fn anchor(&self, qx: &L, qy: &L) -> [L; 4] {
-        let mut out = [[0.0; LANES]; 4];
-        for k in 0..LANES {
-            let wx = self.c[k] * qx[k] - self.s[k] * qy[k];
-            let wy = self.s[k] * qx[k] + self.c[k] * qy[k];
-            out[0][k] = wx;
-            out[1][k] = wy;
-            out[2][k] = self.lx[k] + wx;
-            out[3][k] = self.ly[k] + wy;
-        }
-        out
+    #[inline(always)]
+    fn anchor(&self, qx: &L, qy: &L) -> [f64x4; 4] {
+        let (qx, qy) = (v(qx), v(qy));
+        let wx = self.c * qx - self.s * qy;
+        let wy = self.s * qx + self.c * qy;
+        [wx, wy, self.lx + wx, self.ly + wy]
     }
+}
+
+/// One value per lane as a vector.
+#[inline(always)]
+fn v(x: &L) -> f64x4 {
+    f64x4::from(*x)
 }
 
 /// Geometry of one row: direction, length and lever arms about the pieces (r) and
 /// about the single squares (q).
 struct Geometry {
-    nx: L,
-    ny: L,
-    length: L,
-    rna: L,
-    rnb: L,
-    qna: L,
-    qnb: L,
+    nx: f64x4,
+    ny: f64x4,
+    length: f64x4,
+    rna: f64x4,
+    rnb: f64x4,
+    qna: f64x4,
+    qnb: f64x4,
 }
 
-#[inline]
+#[inline(always)]
 fn geometry(def: &RowDef, a: &Side, b: &Side) -> Geometry {
     let [qax, qay, rax, ray] = a.anchor(&def.qax, &def.qay);
     let [qbx, qby, rbx, rby] = b.anchor(&def.qbx, &def.qby);
-    let z = [0.0; LANES];
-    let mut g = Geometry {
-        nx: z,
-        ny: z,
-        length: z,
-        rna: z,
-        rnb: z,
-        qna: z,
-        qnb: z,
-    };
-    for k in 0..LANES {
-        let dx = b.x[k] + rbx[k] - a.x[k] - rax[k];
-        let dy = b.y[k] + rby[k] - a.y[k] - ray[k];
-        let length = (dx * dx + dy * dy).sqrt();
-        let ok = length > 1e-9;
-        let nx = if ok { dx / length } else { 1.0 };
-        let ny = if ok { dy / length } else { 0.0 };
-        (g.nx[k], g.ny[k], g.length[k]) = (nx, ny, length);
-        g.rna[k] = rax[k] * ny - ray[k] * nx;
-        g.rnb[k] = rbx[k] * ny - rby[k] * nx;
-        g.qna[k] = qax[k] * ny - qay[k] * nx;
-        g.qnb[k] = qbx[k] * ny - qby[k] * nx;
+    let dx = b.x + rbx - a.x - rax;
+    let dy = b.y + rby - a.y - ray;
+    let length = (dx * dx + dy * dy).sqrt();
+    // A degenerate spring points along x (every lane divides; the blend keeps the
+    // quotient only where the length is usable).
+    let ok = length.cmp_gt(f64x4::splat(1e-9));
+    let nx = ok.blend(dx / length, f64x4::splat(1.0));
+    let ny = ok.blend(dy / length, f64x4::ZERO);
+    Geometry {
+        nx,
+        ny,
+        length,
+        rna: rax * ny - ray * nx,
+        rnb: rbx * ny - rby * nx,
+        qna: qax * ny - qay * nx,
+        qnb: qbx * ny - qby * nx,
     }
-    g
 }
 
 /// The solver row and the (stiffness, stretch) energy terms of one row.
-#[inline]
+#[inline(always)]
 fn row(g: &Geometry, target: &L, batch: &Batch, law: Law) -> (Row, (L, L)) {
-    let [ima, iia, imb, iib] = &batch.inv;
-    let mut row = Row::default();
-    let mut energy = ([0.0; LANES], [0.0; LANES]);
-    for k in 0..LANES {
-        let (nx, ny, rna, rnb) = (g.nx[k], g.ny[k], g.rna[k], g.rnb[k]);
-        let inv_ref =
-            2.0 / CORNER_MASS + (g.qna[k] * g.qna[k] + g.qnb[k] * g.qnb[k]) / CORNER_INERTIA;
-        let gamma = inv_ref * law.g;
-        let stretch = g.length[k] - target[k];
-        let inv_mass = ima[k] + iia[k] * rna * rna + imb[k] + iib[k] * rnb * rnb;
-        (row.nx[k], row.ny[k], row.rna[k], row.rnb[k]) = (nx, ny, rna, rnb);
-        row.inv_k[k] = batch.live[k] / (inv_mass + gamma);
-        row.bias[k] = stretch * law.b;
-        row.gamma[k] = gamma;
-        energy.0[k] = law.omega2 / inv_ref;
-        energy.1[k] = stretch * batch.live[k];
-    }
+    let [ima, iia, imb, iib] = batch.inv.map(f64x4::from);
+    let live = v(&batch.live);
+    let (rna, rnb) = (g.rna, g.rnb);
+    let inv_ref = f64x4::splat(2.0 / CORNER_MASS)
+        + (g.qna * g.qna + g.qnb * g.qnb) / f64x4::splat(CORNER_INERTIA);
+    let gamma = inv_ref * f64x4::splat(law.g);
+    let stretch = g.length - v(target);
+    let inv_mass = ima + iia * rna * rna + imb + iib * rnb * rnb;
+    let row = Row {
+        nx: g.nx.to_array(),
+        ny: g.ny.to_array(),
+        rna: rna.to_array(),
+        rnb: rnb.to_array(),
+        a: [[0.0; LANES]; 4],
+        inv_k: (live / (inv_mass + gamma)).to_array(),
+        bias: (stretch * f64x4::splat(law.b)).to_array(),
+        gamma: gamma.to_array(),
+    };
+    let energy = (
+        (f64x4::splat(law.omega2) / inv_ref).to_array(),
+        (stretch * live).to_array(),
+    );
     (row, energy)
 }
 
