@@ -17,7 +17,6 @@ fn stretch_trace(x0: f64, steps: usize) -> Vec<f64> {
     let mut pieces = Pieces::default();
     pieces.push(0.0, 0.0, CORNER_MASS, CORNER_INERTIA);
     pieces.push(rest + x0, 0.0, CORNER_MASS, CORNER_INERTIA);
-    pieces.vel.push(Default::default());
     let def = SpringDef {
         a: (0, 0.0, 0.0),
         b: (1, 0.0, 0.0),
@@ -26,7 +25,7 @@ fn stretch_trace(x0: f64, steps: usize) -> Vec<f64> {
         kind: SpringKind::Diagonal,
         voxel: 0,
     };
-    let mut springs = Springs::new(vec![def], &pieces, 2);
+    let mut springs = Springs::new(&[def], &pieces);
     let mut out = Vec::new();
     for _ in 0..steps {
         springs.prepare(&mut pieces);

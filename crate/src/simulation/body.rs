@@ -60,8 +60,7 @@ pub struct Pieces {
     pub cos: Vec<f64>,
     /// Cached sin(angle).
     pub sin: Vec<f64>,
-    /// Velocities. The world appends one padding slot after the real pieces for the
-    /// spring solver's empty lanes; it never moves anything.
+    /// Velocities.
     pub vel: Vec<Velocity>,
     /// 1 / mass (1/kg).
     pub inv_mass: Vec<f64>,

@@ -167,11 +167,17 @@ impl BroadPhase {
                     extent + DT * (vy.abs() + spin),
                 );
                 *b = [x - ex, x + ex, y - ey, y + ey];
+                // Compare and select, not f64::min / max (a libm call in wasm): the
+                // boxes are only ever compared, so a zero's sign cannot matter.
+                let (lo, hi) = (
+                    |u: f64, v: f64| if v < u { v } else { u },
+                    |u: f64, v: f64| if v > u { v } else { u },
+                );
                 union = [
-                    union[0].min(b[0]),
-                    union[1].max(b[1]),
-                    union[2].min(b[2]),
-                    union[3].max(b[3]),
+                    lo(union[0], b[0]),
+                    hi(union[1], b[1]),
+                    lo(union[2], b[2]),
+                    hi(union[3], b[3]),
                 ];
             }
             self.piece_boxes[p] = union;

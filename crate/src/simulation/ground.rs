@@ -86,11 +86,13 @@ impl Ground {
     }
 
     /// Highest vertex height over segments i0..=i1 (the segments' own extremes).
+    /// Compare and select rather than f64::max, which is a libm call in wasm (heights
+    /// are never NaN; a zero's sign is irrelevant to the callers' comparisons).
     #[inline]
     pub fn max_height(&self, i0: usize, i1: usize) -> f64 {
         self.ys[i0..=i1 + 1]
             .iter()
-            .fold(f64::NEG_INFINITY, |m, &y| m.max(y))
+            .fold(f64::NEG_INFINITY, |m, &y| if y > m { y } else { m })
     }
 
     /// Height of the polyline at x (clamped at the ends).

@@ -85,7 +85,8 @@ impl JavaRandom {
             let v2 = 2.0 * self.next_double() - 1.0;
             let s = v1 * v1 + v2 * v2;
             if s < 1.0 && s != 0.0 {
-                let multiplier = libm::sqrt(-2.0 * libm::log(s) / s);
+                // f64::sqrt is correctly rounded (IEEE 754), as StrictMath.sqrt.
+                let multiplier = (-2.0 * libm::log(s) / s).sqrt();
                 self.next_next_gaussian = Some(v2 * multiplier);
                 return v1 * multiplier;
             }

@@ -76,10 +76,7 @@ impl World {
         } = assemble(cells, &ground, offset);
         let hints = vec![ground.segments() / 2; squares.len()];
         let broad = BroadPhase::new(&squares, pieces.len());
-        let pad = pieces.len();
-        let mut pieces = pieces;
-        pieces.vel.push(Default::default());
-        let springs = Springs::new(springs, &pieces, pad);
+        let springs = Springs::new(&springs, &pieces);
         let mut world = World {
             pieces,
             springs,
@@ -139,8 +136,7 @@ impl World {
 
     fn apply_gravity_and_damping(&mut self) {
         let keep = (1.0 - DT * DAMPING).clamp(0.0, 1.0);
-        let n = self.pieces.len();
-        for v in &mut self.pieces.vel[..n] {
+        for v in &mut self.pieces.vel {
             v.vy += GRAVITY * DT;
             v.vx *= keep;
             v.vy *= keep;

@@ -1,14 +1,16 @@
-//! Packs springs into the four-lane batches of [`Lanes`].
+//! Packs springs into the batches of [`Batches`].
 //!
 //! Consecutive springs between the same two corner squares form a group (at most
-//! [`LANES`] springs; longer runs are cut). A batch takes up to four groups of the
-//! same length that share no piece, searching only the last few open batches so that
-//! packing stays local (nearby springs, hot velocities). Spring i of group g lands in
-//! row `batch.start + (i - group start)`, lane = the group's position in the batch.
+//! [`MAX_ROWS`] springs; longer runs are cut). A batch takes up to [`LANES`] groups of
+//! the same length that share no piece, searching only the last few open batches so
+//! that packing stays local (nearby springs, hot velocities). Spring i of group g lands
+//! in row `batch.start + (i - group start)`, lane = the group's position in the batch;
+//! lanes left empty are padding ([`PAD`]).
 
-use super::body::Pieces;
-use super::lanes::{Batch, Lanes, RowDef, LANES};
-use super::springs::SpringDef;
+use super::batch::{Batch, Batches, RowDef, MAX_ROWS};
+use super::kind::SpringDef;
+use super::lanes::{LANES, PAD};
+use crate::simulation::body::Pieces;
 
 /// A group: its springs' range and the pieces it joins.
 #[derive(Clone, Copy)]
@@ -31,7 +33,9 @@ fn groups(defs: &[SpringDef]) -> Vec<Group> {
     let mut groups: Vec<Group> = Vec::new();
     for (i, d) in defs.iter().enumerate() {
         match groups.last_mut() {
-            Some(g) if g.end - g.start < LANES && same_squares(&defs[g.start], d) => g.end = i + 1,
+            Some(g) if g.end - g.start < MAX_ROWS && same_squares(&defs[g.start], d) => {
+                g.end = i + 1
+            }
             _ => groups.push(Group {
                 a: d.a.0 as u32,
                 b: d.b.0 as u32,
@@ -43,10 +47,10 @@ fn groups(defs: &[SpringDef]) -> Vec<Group> {
     groups
 }
 
-fn new_batch(pad: u32, rows: u32) -> Batch {
+fn new_batch(rows: u32) -> Batch {
     Batch {
-        a: [pad; LANES],
-        b: [pad; LANES],
+        a: [PAD; LANES],
+        b: [PAD; LANES],
         squares: [[0.0; LANES]; 4],
         inv: [[0.0; LANES]; 4],
         live: [0.0; LANES],
@@ -56,7 +60,7 @@ fn new_batch(pad: u32, rows: u32) -> Batch {
     }
 }
 
-fn pack(groups: &[Group], pad: u32) -> Vec<Open> {
+fn pack(groups: &[Group]) -> Vec<Open> {
     let mut open: Vec<Open> = Vec::new();
     for g in groups {
         let rows = (g.end - g.start) as u32;
@@ -72,7 +76,7 @@ fn pack(groups: &[Group], pad: u32) -> Vec<Open> {
         let entry = match recent.iter_mut().find(|e| fits(e)) {
             Some(e) => e,
             None => {
-                open.push((new_batch(pad, rows), Vec::new()));
+                open.push((new_batch(rows), Vec::new()));
                 open.last_mut().expect("just pushed")
             }
         };
@@ -85,8 +89,8 @@ fn pack(groups: &[Group], pad: u32) -> Vec<Open> {
 }
 
 /// Fills lane `k` of `batch` from group `g` (masses, square offsets) and its rows.
-fn fill(lanes: &mut Lanes, k: usize, g: &Group, defs: &[SpringDef], pieces: &Pieces) {
-    let batch = lanes.batches.last_mut().expect("batch pushed");
+fn fill(packed: &mut Batches, k: usize, g: &Group, defs: &[SpringDef], pieces: &Pieces) {
+    let batch = packed.batches.last_mut().expect("batch pushed");
     let (a, b) = (&defs[g.start].a, &defs[g.start].b);
     let values = [a.1, a.2, b.1, b.2];
     for (dst, v) in batch.squares.iter_mut().zip(values) {
@@ -104,41 +108,41 @@ fn fill(lanes: &mut Lanes, k: usize, g: &Group, defs: &[SpringDef], pieces: &Pie
     batch.live[k] = 1.0;
     let start = batch.start as usize;
     for (j, i) in (g.start..g.end).enumerate() {
-        let row = &mut lanes.defs[start + j];
+        let row = &mut packed.defs[start + j];
         let d = &defs[i];
         (row.qax[k], row.qay[k]) = d.qa;
         (row.qbx[k], row.qby[k]) = d.qb;
-        lanes.slot[i] = ((start + j) as u32, k as u8);
+        packed.slot[i] = ((start + j) as u32, k as u8);
     }
 }
 
-impl Lanes {
-    /// Packs springs (in order) between `pieces`; `pad` is the padding piece index.
-    pub fn new(defs: &[SpringDef], pieces: &Pieces, pad: u32) -> Self {
-        let mut lanes = Lanes {
+impl Batches {
+    /// Packs springs (in order) between `pieces`.
+    pub(super) fn new(defs: &[SpringDef], pieces: &Pieces) -> Self {
+        let mut packed = Batches {
             slot: vec![(0, 0); defs.len()],
-            ..Lanes::default()
+            ..Batches::default()
         };
         let mut n_coupling = 0;
-        for (mut batch, members) in pack(&groups(defs), pad) {
-            batch.start = lanes.defs.len() as u32;
+        for (mut batch, members) in pack(&groups(defs)) {
+            batch.start = packed.defs.len() as u32;
             batch.coupling = n_coupling as u32;
             let n = batch.rows as usize;
             n_coupling += n * (n - 1) / 2;
-            lanes.batches.push(batch);
-            lanes
+            packed.batches.push(batch);
+            packed
                 .defs
                 .extend(std::iter::repeat(RowDef::default()).take(n));
             for (k, g) in members.iter().enumerate() {
-                fill(&mut lanes, k, g, defs, pieces);
+                fill(&mut packed, k, g, defs, pieces);
             }
         }
-        let n = lanes.defs.len();
-        lanes.rows = vec![Default::default(); n];
-        lanes.coupling = vec![[0.0; LANES]; n_coupling];
-        lanes.impulse = vec![[0.0; LANES]; n];
-        lanes.energy = vec![([0.0; LANES], [0.0; LANES]); n];
-        lanes
+        let n = packed.defs.len();
+        packed.rows = vec![Default::default(); n];
+        packed.coupling = vec![[0.0; LANES]; n_coupling];
+        packed.impulse = vec![[0.0; LANES]; n];
+        packed.energy = vec![([0.0; LANES], [0.0; LANES]); n];
+        packed
     }
 }
 
@@ -154,19 +158,19 @@ mod tests {
         let shape = Shape::parse("biped-4x3").unwrap();
         let ground = Ground::new(&[0.0, 10.0, 1990.0, 2000.0], &[100.0, 5.0, 5.0, 100.0]);
         let asm = assemble(shape.voxels(), &ground, 0.0);
-        let lanes = Lanes::new(&asm.springs, &asm.pieces, asm.pieces.len() as u32);
-        let used: usize = lanes.rows.len() * LANES;
+        let packed = Batches::new(&asm.springs, &asm.pieces);
+        let used: usize = packed.rows.len() * LANES;
         let n = asm.springs.len();
         eprintln!(
             "batches {} rows {} springs {n}",
-            lanes.batches.len(),
-            lanes.rows.len()
+            packed.batches.len(),
+            packed.rows.len()
         );
         assert!(
             n * 10 >= used * 9,
             "less than 90% of the lanes carry a spring"
         );
-        let mut seen = lanes.slot.clone();
+        let mut seen = packed.slot.clone();
         seen.sort_unstable();
         seen.dedup();
         assert_eq!(seen.len(), n, "two springs share a slot");
