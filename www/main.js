@@ -380,7 +380,7 @@ async function start() {
     editor.draw();
     bodyChanged();
   }
-  modules.listPretrained();
+  modules.listPretrained().then(() => { if (brain?.module) modules.choose(brain.module); });
   window.addEventListener('hashchange', () => keeper.openLink());
   window.addEventListener('beforeunload', (event) => {
     if (running) event.preventDefault(); // the browser asks: leaving ends the run (its best so far is kept)

@@ -67,6 +67,13 @@ export class ModuleList {
     this.describe();
   }
 
+  /** Selects the module `key` if it is listed (the one a restored robot came from). @param {string} key */
+  choose(key) {
+    if (![...this.select.options].some((o) => o.value === key)) return;
+    this.select.value = key;
+    this.describe();
+  }
+
   /** @returns {Promise<Module | null>} the selected module, read */
   async selected() {
     const key = this.select.value;
