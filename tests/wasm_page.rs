@@ -65,7 +65,7 @@ fn a_transplant_keeps_the_attention_block_and_redraws_the_rest() {
     );
     let own = transplant(ATTENTION_RUN, "biped-4x3", 1.0).expect("its own body");
     assert_eq!(own, run.best.genome);
-    let episode = Episode::from_genome("comb-7x2", "flat", "attention", &comb);
+    let episode = Episode::from_genome("comb-7x2", "flat", "attention", &comb, f64::NAN);
     assert_eq!(episode.expect("walks").voxel_count(), 11);
     assert!(transplant(MLP_RUN, "comb-7x2", 1.0).is_err());
     assert_eq!(
@@ -138,4 +138,24 @@ fn fine_tuning_never_changes_the_attention_block() {
         let fitness: Vec<f64> = (0..jobs).map(|j| j as f64).collect();
         evolution.tell(&fitness, 0.0).expect("told");
     }
+}
+
+#[wasm_bindgen_test]
+fn an_episode_can_be_placed_where_a_robot_stands() {
+    let run = RunFile::from_json(ATTENTION_RUN).expect("pretrained");
+    let genome = &run.best.genome;
+    let start = Episode::from_genome("biped-4x3", "hilly-1-10-0", "attention", genome, f64::NAN);
+    let start_left = start.expect("at the start line").left_edge();
+    assert!(
+        (start_left - 11.0).abs() < 0.5,
+        "start line left edge {start_left}"
+    );
+    let placed = Episode::from_genome("biped-4x3", "hilly-1-10-0", "attention", genome, 60.0);
+    let left = placed.expect("placed").left_edge();
+    assert!((left - 60.0).abs() < 0.5, "placed left edge {left}");
+    let off = Episode::gait_at("biped-4x3", "flat", 1.0, 1.5, 5000.0).expect("falls back");
+    assert!(
+        (off.left_edge() - start_left).abs() < 0.5,
+        "off the ground: the start line"
+    );
 }

@@ -38,6 +38,8 @@ let brain = null;
 /** The last check of the drawing. @type {import('./core.js').ShapeCheck} */
 let check = checkShape('');
 let edits = 0;
+/** The next body change is an edit of the walking robot: rebuild it where it stands. */
+let keepPlace = false;
 /** A brain set aside by choosing another controller family, back if that family is chosen again. @type {Brain | null} */
 let shelved = null;
 let running = false;
@@ -150,7 +152,8 @@ function bodyChanged() {
 function showBrain() {
   if (brain) { controllerSelect.value = brain.controller; shelved = null; }
   updateParams();
-  viewer.show(drawing.rows(), brain ? { controller: brain.controller, genome: brain.genome } : null);
+  viewer.show(drawing.rows(), brain ? { controller: brain.controller, genome: brain.genome } : null, keepPlace);
+  keepPlace = false;
   el('driver').textContent = brain
     ? `Driven by: ${brain.label} (${brain.controller}, ${brain.genome.length} genes).`
     : 'Driven by: the phase gait (no controller yet: evolve one, or load a module).';
@@ -205,6 +208,7 @@ function editWalking(pick) {
     return;
   }
   drawing.set(x, y, adding);
+  keepPlace = true;
   editor.draw();
   bodyChanged();
 }

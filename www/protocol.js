@@ -84,6 +84,8 @@ export const DT = 1 / 60;
  * @property {number} frequency  gait frequency f (Hz), used without a brain
  * @property {number} phase      gait phase phi (rad per column), used without a brain
  * @property {Brain | null} brain  the controller that drives the body, or null for the gait
+ * @property {boolean} [keepPlace] build the robot where the current one stands (an edit of the
+ *                               walking robot), not at the start line
  */
 
 /**

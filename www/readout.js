@@ -24,6 +24,8 @@ export class Readout {
     this.history = [];
     /** When the figures were last written (ms). */
     this.shownAt = -Infinity;
+    /** The latest frame received. @type {import('./protocol.js').Frame | null} */
+    this.latest = null;
   }
 
   /** Forgets the velocity history (a new episode starts). */
@@ -39,9 +41,20 @@ export class Readout {
     this.history.push({ t: frame.time, x: frame.centreX });
     while (this.history.length > 2 && frame.time - this.history[1].t >= VELOCITY_WINDOW_S) this.history.shift();
     // Text changes make the browser lay the page out again: a few times a second is enough.
+    this.latest = frame;
     const now = performance.now();
     if (now - this.shownAt < SHOW_INTERVAL_MS) return;
     this.shownAt = now;
+    this.write(frame);
+  }
+
+  /** Shows the latest frame now (the simulation stopped: its last state must be on screen). */
+  flush() {
+    if (this.latest) this.write(this.latest);
+  }
+
+  /** Writes a frame's figures. @param {import('./protocol.js').Frame} frame */
+  write(frame) {
     const first = this.history[0];
     const velocity = frame.time > first.t ? (frame.centreX - first.x) / (frame.time - first.t) : NaN;
     show(this.fields.time, frame.time, `${frame.time.toFixed(2)} s`);

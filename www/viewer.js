@@ -57,7 +57,7 @@ export class Viewer {
     buttons.restart.addEventListener('click', () => this.worker.postMessage({ type: ToWorker.RESET }));
     this.speed.addEventListener('change', () => this.worker.postMessage({ type: ToWorker.SPEED, speed: Number(this.speed.value) }));
     for (const input of [this.terrain, this.gait.frequency, this.gait.phase]) {
-      input.addEventListener('change', () => { if (this.wanted) this.show(this.wanted.shape, this.wanted.brain); });
+      input.addEventListener('change', () => { if (this.wanted) this.show(this.wanted.shape, this.wanted.brain, false); });
     }
     this.canvas.addEventListener('click', (e) => {
       const pick = this.renderer.pick(e.clientX, e.clientY);
@@ -75,12 +75,13 @@ export class Viewer {
   }
 
   /**
-   * Walks `rows` driven by `brain` (or the phase gait when null).
-   * @param {string} rows @param {import('./protocol.js').Brain | null} brain
+   * Walks `rows` driven by `brain` (or the phase gait when null), from the start line or, with
+   * `keepPlace`, where the robot stands now.
+   * @param {string} rows @param {import('./protocol.js').Brain | null} brain @param {boolean} [keepPlace]
    */
-  show(rows, brain) {
+  show(rows, brain, keepPlace = false) {
     this.wanted = {
-      shape: rows, terrain: this.terrain.value.trim(), brain,
+      shape: rows, terrain: this.terrain.value.trim(), brain, keepPlace,
       frequency: this.gait.frequency.valueAsNumber, phase: this.gait.phase.valueAsNumber,
     };
     this.worker.postMessage({ type: ToWorker.LOAD, params: this.wanted });
@@ -102,7 +103,11 @@ export class Viewer {
       case FromWorker.FRAME:
         if (frameIsConsistent(msg)) { this.renderer.setFrame(msg); this.readout.update(msg); this.attention.setFrame(msg); }
         break;
-      case FromWorker.STATE: this.running = msg.running; this.updateButtons(); break;
+      case FromWorker.STATE:
+        this.running = msg.running;
+        if (!this.running) this.readout.flush();
+        this.updateButtons();
+        break;
       case FromWorker.ERROR: this.onError(msg.message, msg.fatal); break;
       default: console.warn('unknown message from the simulation worker', msg);
     }

@@ -57,7 +57,7 @@ self.onmessage = async (event) => {
 function handle(msg) {
   switch (msg.type) {
     case ToWorker.LOAD: if (msg.params) load(msg.params); break;
-    case ToWorker.RESET: if (params) load(params); break;
+    case ToWorker.RESET: if (params) load({ ...params, keepPlace: false }); break;
     case ToWorker.START: setRunning(true); break;
     case ToWorker.PAUSE: setRunning(false); break;
     case ToWorker.SPEED: speed = Math.max(0, Number(msg.speed) || 0); restartClocks(); break;
@@ -71,9 +71,11 @@ function handle(msg) {
  * @param {import('./protocol.js').EpisodeParams} next
  */
 function load(next) {
+  // An edit of the walking robot rebuilds it where it stands (its left edge), not at the start.
+  const left = next.keepPlace && episode ? episode.leftEdge() : NaN;
   const fresh = next.brain
-    ? Episode.fromGenome(next.shape, next.terrain, next.brain.controller, next.brain.genome)
-    : new Episode(next.shape, next.terrain, next.frequency, next.phase);
+    ? Episode.fromGenome(next.shape, next.terrain, next.brain.controller, next.brain.genome, left)
+    : Episode.gaitAt(next.shape, next.terrain, next.frequency, next.phase, left);
   episode?.free();
   episode = fresh;
   params = next;

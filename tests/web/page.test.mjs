@@ -131,16 +131,24 @@ test('Hold stops the clock, Restart walk begins again, Play resumes', async () =
   assert.deepEqual(problems, []);
 });
 
-test('clicking a voxel of the walking robot removes it; the same controller keeps driving it', async () => {
+test('clicking a voxel of the walking robot removes it where it stands; the same controller keeps driving it', async () => {
   await byTestId(page, 'preset').selectOption({ label: 'biped-4x3' });
   await waitForText(page, 'status', /^10 voxels/);
+  await waitForFigure(page, 'sim-time', 'v > 0.5', 20_000);
+  const start = await figure(page, 'robot-x');
+  await page.locator('#speed').selectOption('0'); // as fast as possible, to walk away from the start
+  await waitForFigure(page, 'robot-x', `Math.abs(v - ${start}) > 4`, 60_000);
+  await page.locator('#speed').selectOption('1');
   await page.locator('#sim-hold').click();
   await page.waitForFunction(() => document.body.dataset.running === 'false');
   await page.waitForTimeout(300);
+  const before = await figure(page, 'robot-x');
   const centre = await robotCentre();
   await byTestId(page, 'viewer').click({ position: centre });
   await waitForText(page, 'status', /^9 voxels/);
   assert.notEqual(await page.locator('#rows').inputValue(), '1111-1111-1001');
+  const after = await figure(page, 'robot-x');
+  assert.ok(Math.abs(after - before) < 2, `rebuilt where it stood: x ${before} before, ${after} after (start ${start})`);
   await page.locator('#sim-play').click();
   await screenshot(page, 'page.png');
   assert.deepEqual(problems, []);

@@ -6,7 +6,7 @@
 use super::episode::{Episode, Policy};
 use super::gait::PhaseGait;
 use crate::error::{Error, Result};
-use crate::simulation::constants::VOXEL_SIDE;
+use crate::simulation::constants::{PLACEMENT_LEFT_X, VOXEL_SIDE};
 use crate::simulation::{Shape, Terrain};
 
 /// Shift between consecutive starts of an ensemble (m), as in the reference study.
@@ -44,7 +44,7 @@ impl Ensemble {
 }
 
 /// Checks that a robot of `shape` started `offset` metres right of the reference
-/// placement (left edge at 11 m) stands on the terrain between its walls.
+/// placement (left edge at `PLACEMENT_LEFT_X`, 11 m) stands on the terrain between its walls.
 pub fn check_start_offset(shape: &Shape, terrain: &Terrain, offset: f64) -> Result<()> {
     if !offset.is_finite() {
         return Err(Error::Input(format!(
@@ -53,7 +53,7 @@ pub fn check_start_offset(shape: &Shape, terrain: &Terrain, offset: f64) -> Resu
     }
     let xs = terrain.xs();
     let (low, high) = (xs[1], xs[xs.len() - 2]);
-    let left = 11.0 + offset;
+    let left = PLACEMENT_LEFT_X + offset;
     let right = left + VOXEL_SIDE * shape.width() as f64;
     if left >= low && right <= high {
         return Ok(());
@@ -61,8 +61,8 @@ pub fn check_start_offset(shape: &Shape, terrain: &Terrain, offset: f64) -> Resu
     Err(Error::Input(format!(
         "start offset {offset} m puts the robot at x = {left} .. {right} m, outside the \
          ground between the walls ({low} .. {high} m): use an offset from {} to {}",
-        low - 11.0,
-        high - 11.0 - VOXEL_SIDE * shape.width() as f64
+        low - PLACEMENT_LEFT_X,
+        high - PLACEMENT_LEFT_X - VOXEL_SIDE * shape.width() as f64
     )))
 }
 

@@ -5,11 +5,25 @@
 use js_sys::{Float32Array, Object, Reflect};
 use wasm_bindgen::prelude::{wasm_bindgen, JsError, JsValue};
 
+use super::episode::GAIT_NAME;
 use super::Episode;
 use crate::controllers::ControllerKind;
 use crate::experiment::evaluate::{controller_for, replay};
+use crate::experiment::{check_start_offset, PhaseGait};
 use crate::experiment::{Episode as CoreEpisode, Policy, RunFile};
+use crate::simulation::constants::PLACEMENT_LEFT_X;
 use crate::simulation::{Shape, Terrain};
+
+/// The start offset that puts the robot's left edge at `left` (m): 0 (the start line) for
+/// NaN or for a place off the ground between the walls.
+fn placement_offset(shape: &Shape, terrain: &Terrain, left: f64) -> f64 {
+    let offset = left - PLACEMENT_LEFT_X;
+    if check_start_offset(shape, terrain, offset).is_ok() {
+        offset
+    } else {
+        0.0
+    }
+}
 
 /// Seed of the sensor noise in episodes built from run files (as `vsr evaluate` defaults).
 pub const NOISE_SEED: u64 = 0;
@@ -38,25 +52,59 @@ impl Episode {
 
     /// Builds the episode of a genome on a drawn body: a `controller` (`attention`, `mlp`,
     /// `mlp-comm`) with parameters `genome` drives the body `rows` on `terrain`, with sensor
-    /// noise seed 0. A genome that does not fit the body throws an `Error` saying so.
+    /// noise seed 0, its left edge placed at `left` metres (NaN: the start line; a place
+    /// off the ground between the walls also falls back to the start line). A genome that
+    /// does not fit the body throws an `Error` saying so.
     #[wasm_bindgen(js_name = fromGenome)]
     pub fn from_genome(
         rows: &str,
         terrain: &str,
         controller: &str,
         genome: &[f32],
+        left: f64,
     ) -> Result<Episode, JsError> {
         let kind: ControllerKind = controller.parse()?;
         let shape = Shape::parse(rows)?;
-        let brain = controller_for(kind, &shape, genome)?;
+        let brain = Policy::Brain(controller_for(kind, &shape, genome)?);
         let terrain = Terrain::parse(terrain)?;
+        let offset = placement_offset(&shape, &terrain, left);
         let inner =
-            CoreEpisode::with_policy(&shape, terrain, Policy::Brain(brain), Some(NOISE_SEED));
+            CoreEpisode::with_start_offset(&shape, terrain, brain, Some(NOISE_SEED), offset);
         Ok(Episode {
             inner,
             shape,
             controller: kind.to_string(),
         })
+    }
+
+    /// The phase-gait episode of `new`, its left edge placed at `left` metres (NaN: the start
+    /// line, as `new`; off the ground: the start line too).
+    #[wasm_bindgen(js_name = gaitAt)]
+    pub fn gait_at(
+        rows: &str,
+        terrain: &str,
+        frequency: f64,
+        phase: f64,
+        left: f64,
+    ) -> Result<Episode, JsError> {
+        let shape = Shape::parse(rows)?;
+        let terrain = Terrain::parse(terrain)?;
+        let offset = placement_offset(&shape, &terrain, left);
+        let gait = Policy::Gait(PhaseGait::new(frequency, phase)?);
+        let inner = CoreEpisode::with_start_offset(&shape, terrain, gait, None, offset);
+        Ok(Episode {
+            inner,
+            shape,
+            controller: GAIT_NAME.to_string(),
+        })
+    }
+
+    /// The left edge of the robot now: the smallest x of its voxels' outer corners (m).
+    #[wasm_bindgen(js_name = leftEdge)]
+    pub fn left_edge(&self) -> f64 {
+        let corners = self.corners();
+        let xs = corners.iter().step_by(2).map(|&x| f64::from(x));
+        xs.fold(f64::INFINITY, f64::min)
     }
 
     /// Each voxel's current attention matrix, length 16n: for voxel i at `16i`, 4 rows of

@@ -9,7 +9,7 @@ use crate::experiment::{Episode as CoreEpisode, PhaseGait};
 use crate::simulation::{Shape, Terrain};
 
 /// Name reported by [`Episode::controller`] for the phase gait.
-const GAIT_NAME: &str = "phase gait";
+pub(super) const GAIT_NAME: &str = "phase gait";
 
 /// One robot on one terrain, driven by the phase gait u(t) = sin(2 pi f t + phi x) or by a
 /// run file's controller.
