@@ -3,6 +3,7 @@
 //! resolved relative to the campaign file, or under `--out-dir`.
 
 use std::fs;
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use vsr::experiment::campaign::{merge, plan, Campaign, Job, Results};
@@ -96,10 +97,17 @@ fn print_plan(args: PlanArgs) -> Result<()> {
         return Err(Error::Input("--threads must be at least 1".into()));
     }
     let (campaign, out) = args.target.load()?;
+    let mut stdout = std::io::stdout().lock();
     for job in plan(&campaign, &out) {
         let stage_ok = args.stage.map_or(true, |s| s == job.stage);
         if stage_ok && !(args.pending && job.out.exists()) {
-            println!("{}", job.command_line(&args.program, args.threads));
+            let line = job.command_line(&args.program, args.threads);
+            match writeln!(stdout, "{line}") {
+                Ok(()) => {}
+                // The reader stopped (`| head`): nothing more to say.
+                Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => return Ok(()),
+                Err(e) => return Err(Error::Io(format!("cannot print the plan: {e}"))),
+            }
         }
     }
     Ok(())

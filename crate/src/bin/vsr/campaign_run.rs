@@ -128,7 +128,9 @@ impl Runner<'_> {
         }
     }
 
-    /// The first waiting job whose inputs all exist (jobs whose input failed are skipped).
+    /// The first waiting job whose inputs all exist (jobs whose input failed are skipped),
+    /// assessments (validations, ablations: seconds each) before runs (minutes each), so a
+    /// campaign stopped half-way has every finished run assessed.
     fn next_job(&self, states: &[State]) -> Option<usize> {
         let ready = |i: usize| {
             let need_state = |p: &PathBuf| {
@@ -142,7 +144,13 @@ impl Runner<'_> {
                 .iter()
                 .all(|p| need_state(p) == Some(State::Done) || p.exists())
         };
-        (0..self.jobs.len()).find(|&i| states[i] == State::Waiting && ready(i))
+        let waiting = |i: &usize| states[*i] == State::Waiting && ready(*i);
+        let mut candidates = (0..self.jobs.len()).filter(waiting);
+        let first = candidates.next()?;
+        if !self.jobs[first].threaded {
+            return Some(first);
+        }
+        candidates.find(|&i| !self.jobs[i].threaded).or(Some(first))
     }
 
     /// Runs one job as a child process, its output and errors into its log file.
