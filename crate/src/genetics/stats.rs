@@ -1,5 +1,6 @@
 //! Summary statistics of a surviving population's fitness, reported after each `tell`.
 
+use crate::statistics::quantile;
 use serde::{Deserialize, Serialize};
 
 /// Fitness summary of the population that survived one generation. Quartiles use linear
@@ -38,22 +39,6 @@ impl GenerationStats {
             worst: quantile(&sorted, 0.0),
         }
     }
-}
-
-/// Quantile `q` in [0, 1] of ascending `sorted` by linear interpolation (the lower order
-/// statistic next to an infinite one); NaN when empty.
-fn quantile(sorted: &[f64], q: f64) -> f64 {
-    let Some(last) = sorted.len().checked_sub(1) else {
-        return f64::NAN;
-    };
-    let pos = q * last as f64;
-    let lo = pos.floor() as usize;
-    let hi = pos.ceil() as usize;
-    // Interpolating towards an infinite value would give NaN: keep the lower one.
-    if lo == hi || !(sorted[lo].is_finite() && sorted[hi].is_finite()) {
-        return sorted[lo];
-    }
-    sorted[lo] + (pos - lo as f64) * (sorted[hi] - sorted[lo])
 }
 
 #[cfg(test)]

@@ -51,14 +51,18 @@ impl Summary {
     }
 }
 
-/// Quantile `q` in [0, 1] of an ascending `sorted` sample, linear between order statistics;
-/// NaN when empty.
+/// Quantile `q` in [0, 1] of an ascending `sorted` sample, linear between order statistics
+/// (the lower one next to an infinite one: interpolating towards it would give NaN); NaN
+/// when empty.
 pub fn quantile(sorted: &[f64], q: f64) -> f64 {
     let Some(last) = sorted.len().checked_sub(1) else {
         return f64::NAN;
     };
     let h = q.clamp(0.0, 1.0) * last as f64;
     let (lo, hi) = (h.floor() as usize, h.ceil() as usize);
+    if lo == hi || !(sorted[lo].is_finite() && sorted[hi].is_finite()) {
+        return sorted[lo];
+    }
     sorted[lo] + (h - lo as f64) * (sorted[hi] - sorted[lo])
 }
 

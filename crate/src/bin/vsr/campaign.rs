@@ -34,8 +34,9 @@ impl Target {
         let out = match &self.out_dir {
             Some(dir) => dir.clone(),
             None => {
+                // `campaigns/../study` printed as `study` (lexically: no symlinks resolved).
                 let base = self.file.parent().unwrap_or(Path::new(""));
-                base.join(&campaign.output)
+                path_clean::clean(base.join(&campaign.output))
             }
         };
         Ok((campaign, out))
