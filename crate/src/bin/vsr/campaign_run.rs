@@ -120,10 +120,23 @@ impl Runner<'_> {
             };
             states[i] = State::Running;
             drop(states);
+            let started = std::time::Instant::now();
             let ok = self.execute(&self.jobs[i]);
             let mut states = lock.lock().unwrap_or_else(|e| e.into_inner());
             states[i] = if ok { State::Done } else { State::Failed };
             self.bar.inc(1);
+            if self.bar.is_hidden() {
+                // No terminal (nohup, a log file): one line per finished job instead.
+                let finished = states.iter().filter(|&&s| s == State::Done).count();
+                eprintln!(
+                    "{} {}/{} {} ({:.0} s)",
+                    if ok { "done" } else { "FAILED" },
+                    finished,
+                    states.len(),
+                    self.jobs[i].out.display(),
+                    started.elapsed().as_secs_f64()
+                );
+            }
             wake.notify_all();
         }
     }
