@@ -2,6 +2,8 @@
 //! Physics invariants of the simulator (issue 2, items 7 and 9). Each test states what
 //! it protects; tolerances are in the assertion messages.
 
+mod common;
+use common::mechanical_energy;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use vsr::simulation::constants::{CORNER_MASS, DAMPING, DT, GRAVITY};
@@ -98,14 +100,6 @@ fn free_fall_matches_gravity_with_damping() {
         fallen < undamped && fallen > 0.98 * undamped,
         "fell {fallen} m, undamped {undamped}"
     );
-}
-
-fn mechanical_energy(w: &World) -> f64 {
-    let p = w.pieces();
-    let potential: f64 = (0..p.len())
-        .map(|i| -GRAVITY * p.y[i] / p.inv_mass[i])
-        .sum();
-    p.kinetic_energy() + potential + w.spring_energy()
 }
 
 #[test]

@@ -6,6 +6,8 @@
 //! side by side or corner to corner, at most 1.2 sqrt 2 m apart, and stay rigid).
 //! Before self-collision every robot below passed through itself by about a metre.
 
+mod common;
+use common::mechanical_energy;
 use vsr::experiment::{GaitEpisode, PhaseGait};
 use vsr::simulation::constants::{CORNER_MASS, CORNER_SIDE, GRAVITY, LINEAR_SLOP};
 use vsr::simulation::{Shape, Terrain, World};
@@ -114,14 +116,6 @@ fn arms_of_a_u_bent_toward_each_other_stop_at_contact() {
         late <= LINEAR_SLOP,
         "held closed, the arms still overlap by {late} m in the last 3 s (limit: the slop)"
     );
-}
-
-fn mechanical_energy(w: &World) -> f64 {
-    let p = w.pieces();
-    let potential: f64 = (0..p.len())
-        .map(|i| -GRAVITY * p.y[i] / p.inv_mass[i])
-        .sum();
-    p.kinetic_energy() + potential + w.spring_energy()
 }
 
 #[test]

@@ -2,6 +2,7 @@
 //! `<text>` (plotters without its `ttf` / `ab_glyph` features lays text out by estimate and
 //! needs no font file), so the viewer's sans-serif font renders it.
 
+use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use vsr::experiment::campaign::figures::{Band, BoxData, Figure, Plot};
 use vsr::{Error, Result};
@@ -43,6 +44,24 @@ fn range(values: impl Iterator<Item = f64>) -> std::ops::Range<f64> {
 
 type Area<'a> = DrawingArea<SVGBackend<'a>, plotters::coord::Shift>;
 
+type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// The figure's frame: its title, margins and axis areas around the ranges `xs` x `ys`.
+fn chart<'a, 'b>(
+    root: &'a Area<'b>,
+    figure: &Figure,
+    xs: std::ops::Range<f64>,
+    ys: std::ops::Range<f64>,
+) -> Result<Chart<'a, 'b>> {
+    ChartBuilder::on(root)
+        .caption(&figure.title, ("sans-serif", 20))
+        .margin(15)
+        .x_label_area_size(45)
+        .y_label_area_size(60)
+        .build_cartesian_2d(xs, ys)
+        .map_err(plot_error)
+}
+
 fn lines(root: &Area, figure: &Figure, bands: &[Band]) -> Result<()> {
     let xs = range(bands.iter().flat_map(|b| b.x.iter().copied()));
     let ys = range(
@@ -50,13 +69,7 @@ fn lines(root: &Area, figure: &Figure, bands: &[Band]) -> Result<()> {
             .iter()
             .flat_map(|b| b.q1.iter().chain(&b.q3).chain(&b.median).copied()),
     );
-    let mut chart = ChartBuilder::on(root)
-        .caption(&figure.title, ("sans-serif", 20))
-        .margin(15)
-        .x_label_area_size(45)
-        .y_label_area_size(60)
-        .build_cartesian_2d(xs, ys)
-        .map_err(plot_error)?;
+    let mut chart = chart(root, figure, xs, ys)?;
     chart
         .configure_mesh()
         .x_desc(&figure.x_label)
@@ -94,13 +107,7 @@ fn boxes_plot(root: &Area, figure: &Figure, boxes: &[BoxData]) -> Result<()> {
     let ys = range(boxes.iter().flat_map(|b| b.values.iter().copied()));
     let labels: Vec<&str> = boxes.iter().map(|b| b.label.as_str()).collect();
     let xs = -0.5..boxes.len() as f64 - 0.5;
-    let mut chart = ChartBuilder::on(root)
-        .caption(&figure.title, ("sans-serif", 20))
-        .margin(15)
-        .x_label_area_size(45)
-        .y_label_area_size(60)
-        .build_cartesian_2d(xs, ys)
-        .map_err(plot_error)?;
+    let mut chart = chart(root, figure, xs, ys)?;
     let name = |x: &f64| {
         let i = x.round();
         let at_box = (x - i).abs() < 1e-6 && i >= 0.0;
