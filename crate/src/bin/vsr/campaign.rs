@@ -1,4 +1,4 @@
-//! `vsr campaign plan|run|merge FILE`: a campaign file's job list, run on local cores, and its
+//! `vsr campaign plan|run|merge|export FILE`: a campaign file's job list, run on local cores, and its
 //! run files collected into one CSV. Outputs go under the campaign's `output` folder,
 //! resolved relative to the campaign file, or under `--out-dir`.
 
@@ -52,6 +52,8 @@ pub enum Command {
     Run(crate::campaign_run::Args),
     /// Collect the run files and validations into one CSV (OUT/campaign.csv by default).
     Merge(MergeArgs),
+    /// Copy the best module of each shape, controller and source into the pretrained folder.
+    Export(crate::campaign_export::Args),
 }
 
 /// Arguments of `vsr campaign plan`.
@@ -90,6 +92,7 @@ pub fn run(command: Command) -> Result<()> {
         Command::Plan(args) => print_plan(args),
         Command::Run(args) => crate::campaign_run::run(args),
         Command::Merge(args) => write_merge(args),
+        Command::Export(args) => crate::campaign_export::run(args),
     }
 }
 

@@ -13,6 +13,8 @@ mod bench_evolution;
 #[cfg(not(target_arch = "wasm32"))]
 mod campaign;
 #[cfg(not(target_arch = "wasm32"))]
+mod campaign_export;
+#[cfg(not(target_arch = "wasm32"))]
 mod campaign_run;
 #[cfg(not(target_arch = "wasm32"))]
 mod cli;

@@ -3,6 +3,7 @@
 //! commands (`plan`), and the campaign's outputs turned into a table (`merge`) and a report
 //! (`report`, with `figures`). The command line reads and writes the files and runs the jobs.
 
+pub mod export;
 pub mod figures;
 pub mod file;
 pub mod merge;

@@ -1,0 +1,144 @@
+//! `vsr campaign export FILE [--to DIR]`: a campaign's best modules into the pretrained
+//! folder (run files named by category, `manifest.json` with their provenance and the
+//! figures a replay must reproduce, and a README table). A category without a finished,
+//! validated run keeps what the previous export gave it (nothing is lost by exporting a
+//! campaign that has barely started); other files the previous manifest listed are removed.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+
+use vsr::controllers::ControllerKind;
+use vsr::experiment::campaign::export::{choose, entry, file_name, Entry, Manifest};
+use vsr::experiment::campaign::plan;
+use vsr::{Error, Result};
+
+use crate::campaign::{load_results, Target};
+
+/// Arguments of `vsr campaign export`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    target: Target,
+    /// The pretrained folder written.
+    #[arg(long, default_value = "pretrained")]
+    to: PathBuf,
+    /// Controller families exported (default: those the page runs), comma-separated.
+    #[arg(long, value_delimiter = ',', default_value = "attention,mlp,mlp-comm")]
+    controllers: Vec<ControllerKind>,
+}
+
+/// Runs the command.
+pub fn run(args: Args) -> Result<()> {
+    let (campaign, out) = args.target.load()?;
+    let jobs = plan(&campaign, &out);
+    let results = load_results(campaign, &out)?;
+    let version = code_version();
+    let campaign_file = args.target.file.display().to_string();
+    fs::create_dir_all(&args.to)
+        .map_err(|e| Error::Io(format!("cannot create {}: {e}", args.to.display())))?;
+    let previous = previous_entries(&args.to);
+    let mut modules = Vec::new();
+    for (category, choice) in choose(&results, &args.controllers) {
+        let name = file_name(&category);
+        let Some(choice) = choice else {
+            match previous
+                .iter()
+                .find(|e| e.file == name && args.to.join(&name).exists())
+            {
+                Some(kept) => {
+                    println!("{name}: no finished run yet, the previous export kept");
+                    modules.push(kept.clone());
+                }
+                None => println!("{name}: not yet (no finished run validated on both sets)"),
+            }
+            continue;
+        };
+        let run_path = choice.spec.run_path(&out);
+        let job = jobs.iter().find(|j| j.out == run_path);
+        let entry = job.and_then(|job| entry(&choice, job, &campaign_file, &version));
+        let Some(entry) = entry else { continue };
+        let text = fs::read(&run_path)
+            .map_err(|e| Error::Io(format!("cannot read {}: {e}", run_path.display())))?;
+        crate::atomic::write(&args.to.join(&name), &text, "module")?;
+        println!(
+            "{name}: seed {} of {} runs, training {:.2} m/s",
+            entry.seed, entry.chosen_from, entry.training_best
+        );
+        modules.push(entry);
+    }
+    let manifest = Manifest::new(modules);
+    remove_unlisted(&args.to, &manifest)?;
+    let json = serde_json::to_string_pretty(&manifest)
+        .map_err(|e| Error::Io(format!("cannot encode the manifest: {e}")))?;
+    crate::atomic::write(
+        &args.to.join("manifest.json"),
+        (json + "\n").as_bytes(),
+        "manifest",
+    )?;
+    let readme = readme(&manifest, &campaign_file, &args.to);
+    crate::atomic::write(&args.to.join("README.md"), readme.as_bytes(), "README")?;
+    println!(
+        "{} modules in {}",
+        manifest.modules.len(),
+        args.to.join("manifest.json").display()
+    );
+    Ok(())
+}
+
+/// The entries of the folder's previous manifest in this format (none if there is none).
+fn previous_entries(dir: &Path) -> Vec<Entry> {
+    let text = fs::read_to_string(dir.join("manifest.json")).unwrap_or_default();
+    serde_json::from_str::<Manifest>(&text).map_or(Vec::new(), |m| m.modules)
+}
+
+/// Removes the module files the folder's previous manifest listed and this one does not.
+fn remove_unlisted(dir: &Path, manifest: &Manifest) -> Result<()> {
+    let Ok(text) = fs::read_to_string(dir.join("manifest.json")) else {
+        return Ok(()); // no previous manifest
+    };
+    let previous: serde_json::Value = serde_json::from_str(&text).unwrap_or_default();
+    let listed = previous["modules"].as_array().cloned().unwrap_or_default();
+    for file in listed.iter().filter_map(|m| m["file"].as_str()) {
+        let kept = manifest.modules.iter().any(|m| m.file == file);
+        let path = dir.join(file);
+        if !kept && !file.contains('/') && path.exists() {
+            fs::remove_file(&path)
+                .map_err(|e| Error::Io(format!("cannot remove {}: {e}", path.display())))?;
+            println!("removed {file} (no longer chosen)");
+        }
+    }
+    Ok(())
+}
+
+/// The version of the code exporting (and replaying) the modules: the crate version and,
+/// in a git checkout, the commit (`-dirty` with uncommitted changes).
+fn code_version() -> String {
+    let git = std::process::Command::new("git")
+        .args(["describe", "--always", "--dirty", "--abbrev=12"])
+        .output()
+        .ok()
+        .filter(|o| o.status.success())
+        .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_string());
+    let version = env!("CARGO_PKG_VERSION");
+    match git {
+        Some(commit) if !commit.is_empty() => format!("vsr {version} (git {commit})"),
+        _ => format!("vsr {version}"),
+    }
+}
+
+/// The folder's README: what the files are, how they were made, the table.
+fn readme(manifest: &Manifest, campaign: &str, dir: &Path) -> String {
+    format!(
+        "# Pretrained controllers\n\n\
+         Written by `vsr campaign export {campaign} --to {dir}` (do not edit by hand). \
+         Choice: {selection}. Each file is the run file `vsr evolve` or `vsr finetune` wrote; \
+         `manifest.json` records the exact command, seed, budget, the campaign, the code \
+         version, the training fitness and the velocities `vsr validate` gives on both \
+         validation sets (`paper`: hilly-1-10-0..9, also in the training pool; `unseen`: \
+         hilly-1-10-10000..10009). `tests/pretrained.rs` replays every module to exactly \
+         those velocities. The page lists them (Modules).\n\n{table}",
+        dir = dir.display(),
+        selection = manifest.selection,
+        table = manifest.table()
+    )
+}
