@@ -239,7 +239,7 @@ fn trajectory_writes_one_documented_frame_per_step() {
 #[test]
 fn evaluate_writes_the_trajectory_of_the_episode_it_reports() {
     let run = format!(
-        "{}/pretrained/biped-4x3-mlp-seed1.json",
+        "{}/pretrained/biped-4x3-mlp.json",
         env!("CARGO_MANIFEST_DIR")
     );
     let base = [

@@ -1,56 +1,67 @@
 #![cfg(not(target_arch = "wasm32"))]
-//! Every module in pretrained/ replays: its run file loads, matches the configuration
-//! its manifest entry records, and its best individual re-validates on the 10 unseen
-//! terrains to exactly the velocities the manifest recorded when `vsr validate` ran.
+//! Every module in pretrained/ replays: the manifest (written by `vsr campaign export`)
+//! lists every run file of the folder, each loads, matches what its entry records, and its
+//! best individual re-validates on both validation sets to exactly the velocities recorded
+//! when the campaign validated it.
 
-use serde_json::Value;
+use vsr::experiment::campaign::export::{Manifest, FORMAT, VERSION};
 use vsr::experiment::run::RunFile;
-use vsr::experiment::validation::validate;
+use vsr::experiment::validation::validate_on;
 
 fn pretrained(path: &str) -> String {
     let full = format!("{}/pretrained/{path}", env!("CARGO_MANIFEST_DIR"));
     std::fs::read_to_string(&full).unwrap_or_else(|e| panic!("{full}: {e}"))
 }
 
+fn manifest() -> Manifest {
+    serde_json::from_str(&pretrained("manifest.json")).expect("a manifest")
+}
+
 #[test]
-fn every_pretrained_module_replays_to_its_recorded_fitness() {
-    let manifest: Value = serde_json::from_str(&pretrained("manifest.json")).expect("JSON");
-    assert_eq!(manifest["format"], "vsr-pretrained");
-    let modules = manifest["modules"].as_array().expect("modules");
-    assert!(!modules.is_empty(), "the manifest lists no module");
-    for m in modules {
-        let file = m["file"].as_str().expect("file");
+fn every_pretrained_module_replays_to_its_recorded_figures() {
+    let manifest = manifest();
+    assert_eq!(
+        (manifest.format.as_str(), manifest.version),
+        (FORMAT, VERSION)
+    );
+    assert!(!manifest.modules.is_empty(), "the manifest lists no module");
+    for m in &manifest.modules {
+        let file = &m.file;
         let run = RunFile::from_json(&pretrained(file)).expect("a valid run file");
-        assert_eq!(
-            run.config.seed,
-            m["seed"].as_u64().expect("seed"),
-            "{file}: seed"
-        );
-        assert_eq!(
-            run.best.controller.to_string(),
-            m["controller"],
-            "{file}: controller"
-        );
-        assert_eq!(run.best.shape.to_rows(), m["shape"], "{file}: shape");
-        assert_eq!(
-            Some(run.best.fitness),
-            m["training_best"].as_f64(),
-            "{file}: best fitness"
-        );
-        let v = validate(&run.best, run.config.seconds).expect("validates");
-        let recorded: Vec<f64> = m["validation"]
-            .as_array()
-            .expect("validation velocities")
-            .iter()
-            .map(|x| x.as_f64().expect("number"))
-            .collect();
-        let replayed: Vec<f64> = v.terrains.iter().map(|t| t.velocity).collect();
-        assert_eq!(replayed, recorded, "{file}: validation velocities");
-        assert_eq!(
-            Some(v.median),
-            m["validation_median"].as_f64(),
-            "{file}: median"
-        );
+        assert_eq!(run.config.seed, m.seed, "{file}: seed");
+        assert_eq!(run.best.controller, m.controller, "{file}: controller");
+        assert_eq!(run.best.shape.to_rows(), m.rows, "{file}: shape");
+        assert_eq!(run.best.fitness, m.training_best, "{file}: best fitness");
+        let last = run.generations.last().map(|g| g.evaluations);
+        assert_eq!(last, Some(m.evaluations), "{file}: evaluations");
+        assert!(m.command.contains(&format!("--seed {}", m.seed)), "{file}");
+        assert_eq!(m.validation.len(), 2, "{file}: both validation sets");
+        for (&set, recorded) in &m.validation {
+            let v = validate_on(&run.best, set, run.config.seconds).expect("validates");
+            let replayed: Vec<f64> = v.terrains.iter().map(|t| t.velocity).collect();
+            assert_eq!(replayed, recorded.velocities, "{file}: {set} velocities");
+            assert_eq!(
+                (v.median, v.mean),
+                (recorded.median, recorded.mean),
+                "{file}: {set}"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_manifest_lists_every_module_file_of_the_folder() {
+    let listed: Vec<String> = manifest().modules.into_iter().map(|m| m.file).collect();
+    let dir = format!("{}/pretrained", env!("CARGO_MANIFEST_DIR"));
+    for entry in std::fs::read_dir(dir).expect("pretrained/") {
+        let name = entry
+            .expect("entry")
+            .file_name()
+            .to_string_lossy()
+            .into_owned();
+        if name.ends_with(".json") && name != "manifest.json" {
+            assert!(listed.contains(&name), "{name} is not in the manifest");
+        }
     }
 }
 
@@ -58,7 +69,7 @@ fn every_pretrained_module_replays_to_its_recorded_fitness() {
 fn replay_is_the_episode_vsr_evaluate_runs_and_refuses_another_shape() {
     use vsr::experiment::evaluate::{evaluate, replay};
     use vsr::simulation::{Shape, Terrain};
-    let run = RunFile::from_json(&pretrained("biped-4x3-attention-seed1.json")).expect("valid");
+    let run = RunFile::from_json(&pretrained("biped-4x3-attention.json")).expect("valid");
     let terrain = || Terrain::parse("hilly-1-10-0").expect("terrain");
     let best = &run.best;
     let mut episode = replay(best, None, terrain(), Some(0)).expect("its own shape");

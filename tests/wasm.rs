@@ -107,8 +107,8 @@ fn bench_episode_runs_and_reports_a_finite_displacement() {
     assert!(bench_episode("", "flat", 1.0, 1.5, 60).is_err());
 }
 
-const ATTENTION_RUN: &str = include_str!("../pretrained/biped-4x3-attention-seed1.json");
-const MLP_RUN: &str = include_str!("../pretrained/biped-4x3-mlp-seed1.json");
+const ATTENTION_RUN: &str = include_str!("../pretrained/biped-4x3-attention.json");
+const MLP_RUN: &str = include_str!("../pretrained/biped-4x3-mlp.json");
 
 #[wasm_bindgen_test]
 fn pretrained_attention_biped_walks_and_has_16_attention_floats_per_voxel() {

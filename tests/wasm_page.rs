@@ -10,8 +10,8 @@ use vsr::wasm::{check_shape, defaults, describe_run, remap, transplant, Episode,
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::wasm_bindgen_test;
 
-const ATTENTION_RUN: &str = include_str!("../pretrained/biped-4x3-attention-seed1.json");
-const MLP_RUN: &str = include_str!("../pretrained/biped-4x3-mlp-seed1.json");
+const ATTENTION_RUN: &str = include_str!("../pretrained/biped-4x3-attention.json");
+const MLP_RUN: &str = include_str!("../pretrained/biped-4x3-mlp.json");
 
 fn json(value: JsValue) -> serde_json::Value {
     serde_wasm_bindgen::from_value(value).expect("plain data")

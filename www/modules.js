@@ -42,7 +42,8 @@ export class ModuleList {
     try {
       const manifest = await fetchOk(`${PRETRAINED_DIR}manifest.json`).then((r) => r.json());
       for (const m of manifest.modules ?? []) {
-        const median = Number(m.validation_median);
+        // Manifest written by `vsr campaign export`: the median on the unseen validation set.
+        const median = Number(m.validation?.unseen?.median);
         const speed = Number.isFinite(median) ? `, ${median.toFixed(2)} m/s on unseen terrain` : '';
         const from = m.finetuned_from ? ` fine-tuned from ${m.finetuned_from}` : '';
         const label = `${m.controller} on ${m.shape}${from} (${m.evaluations} evals${speed})`;

@@ -14,7 +14,7 @@ import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
 import { byTestId, clickCells, figure, openPage, screenshot, start, tapCells, waitForText } from './harness.mjs';
 
-const ATTENTION = 'pretrained/biped-4x3-attention-seed1.json';
+const ATTENTION = 'pretrained/biped-4x3-attention.json';
 
 /** @type {Awaited<ReturnType<typeof start>>} */ let env;
 

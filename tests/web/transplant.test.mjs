@@ -15,8 +15,8 @@ import path from 'node:path';
 import { after, before, test } from 'node:test';
 import { BIN, ROOT, byTestId, clickCells, figure, openPage, screenshot, start, waitForFigure, waitForText } from './harness.mjs';
 
-const ATTENTION = 'pretrained/biped-4x3-attention-seed1.json';
-const MLP = 'pretrained/biped-4x3-mlp-seed1.json';
+const ATTENTION = 'pretrained/biped-4x3-attention.json';
+const MLP = 'pretrained/biped-4x3-mlp.json';
 
 /** @type {Awaited<ReturnType<typeof start>>} */ let env;
 /** @type {import('playwright-core').Page} */ let page;

@@ -38,6 +38,7 @@ pub fn run(args: Args) -> Result<()> {
         .map_err(|e| Error::Io(format!("cannot create {}: {e}", args.to.display())))?;
     let previous = previous_entries(&args.to);
     let mut modules = Vec::new();
+    let mut pending = Vec::new();
     for (category, choice) in choose(&results, &args.controllers) {
         let name = file_name(&category);
         let Some(choice) = choice else {
@@ -49,7 +50,10 @@ pub fn run(args: Args) -> Result<()> {
                     println!("{name}: no finished run yet, the previous export kept");
                     modules.push(kept.clone());
                 }
-                None => println!("{name}: not yet (no finished run validated on both sets)"),
+                None => {
+                    println!("{name}: not yet (no finished run validated on both sets)");
+                    pending.push(name);
+                }
             }
             continue;
         };
@@ -75,7 +79,7 @@ pub fn run(args: Args) -> Result<()> {
         (json + "\n").as_bytes(),
         "manifest",
     )?;
-    let readme = readme(&manifest, &campaign_file, &args.to);
+    let readme = readme(&manifest, &pending, &campaign_file, &args.to);
     crate::atomic::write(&args.to.join("README.md"), readme.as_bytes(), "README")?;
     println!(
         "{} modules in {}",
@@ -127,7 +131,14 @@ fn code_version() -> String {
 }
 
 /// The folder's README: what the files are, how they were made, the table.
-fn readme(manifest: &Manifest, campaign: &str, dir: &Path) -> String {
+fn readme(manifest: &Manifest, pending: &[String], campaign: &str, dir: &Path) -> String {
+    let not_yet = match pending {
+        [] => String::new(),
+        names => format!(
+            "\nNot yet (no run of the campaign finished and validated): {}.\n",
+            names.join(", ")
+        ),
+    };
     format!(
         "# Pretrained controllers\n\n\
          Written by `vsr campaign export {campaign} --to {dir}` (do not edit by hand). \
@@ -136,7 +147,7 @@ fn readme(manifest: &Manifest, campaign: &str, dir: &Path) -> String {
          version, the training fitness and the velocities `vsr validate` gives on both \
          validation sets (`paper`: hilly-1-10-0..9, also in the training pool; `unseen`: \
          hilly-1-10-10000..10009). `tests/pretrained.rs` replays every module to exactly \
-         those velocities. The page lists them (Modules).\n\n{table}",
+         those velocities. The page lists them (Modules).\n\n{table}{not_yet}",
         dir = dir.display(),
         selection = manifest.selection,
         table = manifest.table()
