@@ -5,9 +5,8 @@
 
 use super::body::{Pieces, Velocity};
 use super::collide::Contact;
-use super::constants::{
-    BAUMGARTE, DT, FRICTION, LINEAR_SLOP, MAX_LINEAR_CORRECTION, RESTITUTION, RESTITUTION_VELOCITY,
-};
+use super::constants::FRICTION;
+use super::contact_law::{bounce, correction, cross, resolved, Impulses, WarmStart};
 
 /// A contact prepared for one step.
 #[derive(Debug, Clone, Copy, Default)]
@@ -19,11 +18,9 @@ struct Row {
     r: (f64, f64),
     normal_mass: f64,
     tangent_mass: f64,
-    /// Target normal velocity: restitution's bounce, or for a speculative contact
-    /// (still apart) the (negative) speed that just closes the gap in one step.
+    /// Target normal velocity ([`bounce`]).
     bounce: f64,
-    normal_impulse: f64,
-    tangent_impulse: f64,
+    impulses: Impulses,
 }
 
 /// The contact solver's state: this step's rows and last step's impulses by key.
@@ -33,7 +30,7 @@ pub struct ContactSolver {
     pub friction: f64,
     rows: Vec<Row>,
     keys: Vec<u64>,
-    previous: Vec<(u64, f64, f64)>,
+    warm: WarmStart,
 }
 
 impl Default for ContactSolver {
@@ -42,28 +39,20 @@ impl Default for ContactSolver {
             friction: FRICTION,
             rows: Vec::new(),
             keys: Vec::new(),
-            previous: Vec::new(),
+            warm: WarmStart::default(),
         }
     }
-}
-
-#[inline]
-fn cross(r: (f64, f64), n: (f64, f64)) -> f64 {
-    r.0 * n.1 - r.1 * n.0
 }
 
 impl ContactSolver {
     /// Prepares the rows for `contacts` and applies warm-start impulses of contacts
     /// that persist from the previous step.
     pub fn prepare(&mut self, contacts: &[Contact], pieces: &mut Pieces) {
-        self.previous.clear();
-        for (row, key) in self.rows.iter().zip(&self.keys) {
-            self.previous
-                .push((*key, row.normal_impulse, row.tangent_impulse));
-        }
+        let last = self.keys.iter().zip(&self.rows);
+        self.warm
+            .remember(last.map(|(&key, row)| (key, row.impulses)));
         self.rows.clear();
         self.keys.clear();
-        let mut k = 0;
         for c in contacts {
             let (n, r, separation) = c.evaluate(pieces);
             let p = c.piece;
@@ -72,28 +61,17 @@ impl ContactSolver {
             let (rn, rt) = (cross(r, n), cross(r, t));
             let (vx, vy) = pieces.point_velocity(p, r.0, r.1);
             let vn = vx * n.0 + vy * n.1;
-            while k < self.previous.len() && self.previous[k].0 < c.key {
-                k += 1;
-            }
-            let (ni, ti) = match self.previous.get(k) {
-                Some(&(key, ni, ti)) if key == c.key => (ni, ti),
-                _ => (0.0, 0.0),
-            };
+            // A new contact applies zero impulses (as the reference does).
+            let impulses = self.warm.take(c.key).unwrap_or_default();
+            let (ni, ti) = (impulses.normal, impulses.tangent);
             let row = Row {
                 piece: p,
                 n,
                 r,
                 normal_mass: 1.0 / (im + ii * rn * rn),
                 tangent_mass: 1.0 / (im + ii * rt * rt),
-                bounce: if separation > 0.0 {
-                    -separation / DT
-                } else if vn < -RESTITUTION_VELOCITY {
-                    -RESTITUTION * vn
-                } else {
-                    0.0
-                },
-                normal_impulse: ni,
-                tangent_impulse: ti,
+                bounce: bounce(separation, vn),
+                impulses,
             };
             apply(pieces, &row, ni * n.0 + ti * t.0, ni * n.1 + ti * t.1);
             self.rows.push(row);
@@ -108,17 +86,12 @@ impl ContactSolver {
             let t = (row.n.1, -row.n.0);
             let (vx, vy) = pieces.point_velocity(row.piece, row.r.0, row.r.1);
             let vt = vx * t.0 + vy * t.1;
-            let max = friction * row.normal_impulse;
-            let old = row.tangent_impulse;
-            row.tangent_impulse = (old - vt * row.tangent_mass).clamp(-max, max);
-            let d = row.tangent_impulse - old;
+            let d = row.impulses.friction(vt, row.tangent_mass, friction);
             apply(pieces, row, d * t.0, d * t.1);
 
             let (vx, vy) = pieces.point_velocity(row.piece, row.r.0, row.r.1);
             let vn = vx * row.n.0 + vy * row.n.1;
-            let old = row.normal_impulse;
-            row.normal_impulse = (old - (vn - row.bounce) * row.normal_mass).max(0.0);
-            let d = row.normal_impulse - old;
+            let d = row.impulses.normal(vn, row.bounce, row.normal_mass);
             apply(pieces, row, d * row.n.0, d * row.n.1);
         }
     }
@@ -130,8 +103,7 @@ impl ContactSolver {
         for c in contacts {
             let (n, r, separation) = c.evaluate(pieces);
             min_separation = min_separation.min(separation);
-            let correction =
-                (BAUMGARTE * (separation + LINEAR_SLOP)).clamp(-MAX_LINEAR_CORRECTION, 0.0);
+            let correction = correction(separation);
             if correction == 0.0 {
                 continue;
             }
@@ -141,7 +113,7 @@ impl ContactSolver {
             let impulse = -correction / k;
             pieces.push_position(p, impulse * n.0, impulse * n.1, r.0, r.1);
         }
-        min_separation >= -3.0 * LINEAR_SLOP
+        resolved(min_separation)
     }
 
     /// Number of contact rows this step.

@@ -9,6 +9,7 @@ pub mod broad_phase;
 pub mod collide;
 pub mod constants;
 pub mod contact;
+mod contact_law;
 pub mod ground;
 pub mod java_random;
 pub mod joint;

@@ -6,10 +6,8 @@
 //! correction that pushes both pieces apart.
 
 use super::body::Pieces;
-use super::constants::{
-    BAUMGARTE, DT, LINEAR_SLOP, MAX_LINEAR_CORRECTION, RESTITUTION, RESTITUTION_VELOCITY,
-    SELF_FRICTION,
-};
+use super::constants::SELF_FRICTION;
+use super::contact_law::{bounce, correction, cross, resolved, Impulses, WarmStart};
 use super::self_collide::{PairContact, PairGeometry};
 
 /// A two-piece contact prepared for one step.
@@ -24,10 +22,9 @@ struct Row {
     rb: (f64, f64),
     normal_mass: f64,
     tangent_mass: f64,
-    /// Target relative normal velocity (see `contact.rs`).
+    /// Target relative normal velocity ([`bounce`]).
     bounce: f64,
-    normal_impulse: f64,
-    tangent_impulse: f64,
+    impulses: Impulses,
 }
 
 /// The self-contact solver's state: this step's rows and last step's impulses by key.
@@ -35,12 +32,7 @@ struct Row {
 pub struct SelfContactSolver {
     rows: Vec<Row>,
     keys: Vec<u64>,
-    previous: Vec<(u64, f64, f64)>,
-}
-
-#[inline]
-fn cross(r: (f64, f64), n: (f64, f64)) -> f64 {
-    r.0 * n.1 - r.1 * n.0
+    warm: WarmStart,
 }
 
 /// Inverse effective mass of the two pieces along direction d at the contact.
@@ -77,14 +69,11 @@ impl SelfContactSolver {
     /// Prepares the rows for `contacts` (sorted by key) and applies the warm-start
     /// impulses of contacts that persist from the previous step.
     pub fn prepare(&mut self, contacts: &[PairContact], pieces: &mut Pieces) {
-        self.previous.clear();
-        for (row, key) in self.rows.iter().zip(&self.keys) {
-            self.previous
-                .push((*key, row.normal_impulse, row.tangent_impulse));
-        }
+        let last = self.keys.iter().zip(&self.rows);
+        self.warm
+            .remember(last.map(|(&key, row)| (key, row.impulses)));
         self.rows.clear();
         self.keys.clear();
-        let mut k = 0;
         for c in contacts {
             let PairGeometry {
                 n,
@@ -105,21 +94,12 @@ impl SelfContactSolver {
             row.tangent_mass = 1.0 / inverse_mass(pieces, &row, t);
             let (vx, vy) = relative_velocity(pieces, &row);
             let vn = vx * n.0 + vy * n.1;
-            row.bounce = if separation > 0.0 {
-                -separation / DT
-            } else if vn < -RESTITUTION_VELOCITY {
-                -RESTITUTION * vn
-            } else {
-                0.0
-            };
-            while k < self.previous.len() && self.previous[k].0 < c.key {
-                k += 1;
-            }
-            if let Some(&(key, ni, ti)) = self.previous.get(k) {
-                if key == c.key {
-                    (row.normal_impulse, row.tangent_impulse) = (ni, ti);
-                    apply(pieces, &row, ni * n.0 + ti * t.0, ni * n.1 + ti * t.1);
-                }
+            row.bounce = bounce(separation, vn);
+            // Unlike the ground's, a new self-contact applies nothing.
+            if let Some(impulses) = self.warm.take(c.key) {
+                row.impulses = impulses;
+                let (ni, ti) = (impulses.normal, impulses.tangent);
+                apply(pieces, &row, ni * n.0 + ti * t.0, ni * n.1 + ti * t.1);
             }
             self.rows.push(row);
             self.keys.push(c.key);
@@ -132,17 +112,12 @@ impl SelfContactSolver {
             let t = (row.n.1, -row.n.0);
             let (vx, vy) = relative_velocity(pieces, row);
             let vt = vx * t.0 + vy * t.1;
-            let max = SELF_FRICTION * row.normal_impulse;
-            let old = row.tangent_impulse;
-            row.tangent_impulse = (old - vt * row.tangent_mass).clamp(-max, max);
-            let d = row.tangent_impulse - old;
+            let d = row.impulses.friction(vt, row.tangent_mass, SELF_FRICTION);
             apply(pieces, row, d * t.0, d * t.1);
 
             let (vx, vy) = relative_velocity(pieces, row);
             let vn = vx * row.n.0 + vy * row.n.1;
-            let old = row.normal_impulse;
-            row.normal_impulse = (old - (vn - row.bounce) * row.normal_mass).max(0.0);
-            let d = row.normal_impulse - old;
+            let d = row.impulses.normal(vn, row.bounce, row.normal_mass);
             apply(pieces, row, d * row.n.0, d * row.n.1);
         }
     }
@@ -159,8 +134,7 @@ impl SelfContactSolver {
                 separation,
             } = c.evaluate(pieces);
             min_separation = min_separation.min(separation);
-            let correction =
-                (BAUMGARTE * (separation + LINEAR_SLOP)).clamp(-MAX_LINEAR_CORRECTION, 0.0);
+            let correction = correction(separation);
             if correction == 0.0 {
                 continue;
             }
@@ -176,7 +150,7 @@ impl SelfContactSolver {
             pieces.push_position(c.a, -px, -py, ra.0, ra.1);
             pieces.push_position(c.b, px, py, rb.0, rb.1);
         }
-        min_separation >= -3.0 * LINEAR_SLOP
+        resolved(min_separation)
     }
 
     /// Number of contact rows this step.

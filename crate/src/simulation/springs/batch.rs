@@ -27,7 +27,8 @@ pub(super) struct Row {
     pub(super) rnb: L,
     /// Row j of A = T diag(-inv_k) J (see [`super`]), over u = (vb - va, wa, wb).
     pub(super) a: [L; 4],
-    pub(super) inv_k: L,
+    /// -inv_k, as the sweep uses it (0 - inv_k: computed once per step, not per sweep).
+    pub(super) neg_inv_k: L,
     pub(super) bias: L,
     pub(super) gamma: L,
 }
@@ -74,7 +75,9 @@ pub(super) struct Batches {
     pub(super) coupling: Vec<L>,
     /// Accumulated impulse per row (warm start).
     pub(super) impulse: Vec<L>,
-    /// Stiffness (N/m) and stretch (m) of the last prepared step, per row.
+    /// Per row, for the potential energy of the last prepared step: 1 / m_ref (1/kg,
+    /// the stiffness is k = m_ref omega^2, divided out only when the energy is asked
+    /// for) and the stretch (m, zero in padding lanes).
     pub(super) energy: Vec<(L, L)>,
     /// Slot of spring i: (row index, lane).
     pub(super) slot: Vec<(u32, u8)>,
@@ -88,11 +91,13 @@ impl Batches {
         self.defs[r as usize].target[k as usize] = target;
     }
 
-    /// Potential energy of the last prepared step: sum of k x^2 / 2.
-    pub(super) fn potential_energy(&self) -> f64 {
+    /// Potential energy of the last prepared step: sum of k x^2 / 2, with
+    /// k = m_ref `omega2`.
+    pub(super) fn potential_energy(&self, omega2: f64) -> f64 {
         let mut sum = 0.0;
-        for (k, x) in &self.energy {
-            for (k, x) in k.iter().zip(x) {
+        for (inv_ref, x) in &self.energy {
+            for (inv_ref, x) in inv_ref.iter().zip(x) {
+                let k = omega2 / inv_ref;
                 sum += 0.5 * k * x * x;
             }
         }

@@ -22,7 +22,7 @@ fn coupling(rows: &[Row], inv: &[L; 4]) -> [L; MAX_COUPLING] {
                 let kji = (ima[k] + imb[k]) * nn
                     + iia[k] * rj.rna[k] * ri.rna[k]
                     + iib[k] * rj.rnb[k] * ri.rnb[k];
-                m[idx][k] = -rj.inv_k[k] * kji;
+                m[idx][k] = rj.neg_inv_k[k] * kji;
             }
             idx += 1;
         }
@@ -52,9 +52,9 @@ pub(super) fn group_matrices(rows: &mut [Row], inv: &[L; 4], t: &mut [L]) {
             let r = &rows[i];
             for k in 0..LANES {
                 let w = if i == j {
-                    -r.inv_k[k]
+                    r.neg_inv_k[k]
                 } else {
-                    -r.inv_k[k] * t[at(j, i)][k]
+                    r.neg_inv_k[k] * t[at(j, i)][k]
                 };
                 let ji = [r.nx[k], r.ny[k], -r.rna[k], r.rnb[k]];
                 for (dst, v) in a.iter_mut().zip(ji) {

@@ -127,19 +127,8 @@ impl Springs {
     }
 
     /// Prepares every row for this step and applies the warm-start impulses.
-    ///
-    /// With k = m_ref w^2 and c = 2 m_ref zeta w, the soft-constraint terms simplify:
-    /// gamma = 1 / (dt (c + dt k)) = (1 / m_ref) G and bias = stretch dt k gamma =
-    /// stretch B, with G and B constants of the spring law.
     pub fn prepare(&mut self, pieces: &mut Pieces) {
-        let omega = 2.0 * std::f64::consts::PI * SPRING_FREQUENCY;
-        let g = 1.0 / (DT * (2.0 * SPRING_DAMPING_RATIO * omega + DT * omega * omega));
-        let law = Law {
-            g,
-            b: DT * omega * omega * g,
-            omega2: omega * omega,
-        };
-        self.batches.prepare(pieces, law);
+        self.batches.prepare(pieces, law());
     }
 
     /// One sequential-impulse sweep over every spring.
@@ -151,6 +140,19 @@ impl Springs {
     /// Potential energy stored in the springs (J): sum of k x^2 / 2 with the stiffness
     /// and stretch of the last prepared step.
     pub fn potential_energy(&self) -> f64 {
-        self.batches.potential_energy()
+        self.batches.potential_energy(law().omega2)
+    }
+}
+
+/// The spring law's constants. With k = m_ref w^2 and c = 2 m_ref zeta w, the
+/// soft-constraint terms simplify: gamma = 1 / (dt (c + dt k)) = (1 / m_ref) G and
+/// bias = stretch dt k gamma = stretch B, with G and B constants of the spring law.
+fn law() -> Law {
+    let omega = 2.0 * std::f64::consts::PI * SPRING_FREQUENCY;
+    let g = 1.0 / (DT * (2.0 * SPRING_DAMPING_RATIO * omega + DT * omega * omega));
+    Law {
+        g,
+        b: DT * omega * omega * g,
+        omega2: omega * omega,
     }
 }

@@ -108,7 +108,7 @@ fn geometry(def: &RowDef, a: &Side, b: &Side) -> Geometry {
     }
 }
 
-/// The solver row and the (stiffness, stretch) energy terms of one row.
+/// The solver row and the (1 / m_ref, stretch) energy terms of one row.
 #[inline(always)]
 fn row(g: &Geometry, target: &L, batch: &Batch, law: Law) -> (Row, (L, L)) {
     let [ima, iia, imb, iib] = batch.inv.map(f64x4::from);
@@ -125,14 +125,11 @@ fn row(g: &Geometry, target: &L, batch: &Batch, law: Law) -> (Row, (L, L)) {
         rna: rna.to_array(),
         rnb: rnb.to_array(),
         a: [[0.0; LANES]; 4],
-        inv_k: (live / (inv_mass + gamma)).to_array(),
+        neg_inv_k: (f64x4::ZERO - live / (inv_mass + gamma)).to_array(),
         bias: (stretch * f64x4::splat(law.b)).to_array(),
         gamma: gamma.to_array(),
     };
-    let energy = (
-        (f64x4::splat(law.omega2) / inv_ref).to_array(),
-        (stretch * live).to_array(),
-    );
+    let energy = (inv_ref.to_array(), (stretch * live).to_array());
     (row, energy)
 }
 

@@ -45,11 +45,9 @@ fn solve_batch<const R: usize>(
     let acc: &mut [L; R] = (&mut acc[..R]).try_into().expect("R rows");
     let t = &t[..R * (R - 1) / 2];
     let v = |x: &L| f64x4::from(*x);
-    // `wide` negates as 0 - x; spelled out, the zero is a constant (in wasm its
-    // `Default` is an out-of-line call that zeroes memory).
     let c: [f64x4; R] = std::array::from_fn(|j| {
         let r = &rows[j];
-        (f64x4::ZERO - v(&r.inv_k)) * (v(&r.bias) + v(&r.gamma) * v(&acc[j]))
+        v(&r.neg_inv_k) * (v(&r.bias) + v(&r.gamma) * v(&acc[j]))
     });
     let mut lambda = c;
     let mut idx = 0;
