@@ -14,6 +14,7 @@ use super::run::Best;
 use super::seeds::{evaluation_seed, Purpose, TERRAIN_SEEDS};
 use crate::error::{Error, Result};
 use crate::simulation::Terrain;
+use crate::statistics::median;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 use std::str::FromStr;
@@ -150,28 +151,9 @@ pub fn validate_on(best: &Best, set: ValidationSet, seconds: f64) -> Result<Vali
     })
 }
 
-/// Median of finite values (mean of the middle two for an even count); NaN when empty.
-pub fn median(values: &[f64]) -> f64 {
-    let mut sorted = values.to_vec();
-    sorted.sort_by(f64::total_cmp);
-    let n = sorted.len();
-    match n {
-        0 => f64::NAN,
-        _ if n % 2 == 1 => sorted[n / 2],
-        _ => 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]),
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn median_of_odd_and_even_counts() {
-        assert_eq!(median(&[3.0, 1.0, 2.0]), 2.0);
-        assert_eq!(median(&[4.0, 1.0, 3.0, 2.0]), 2.5);
-        assert!(median(&[]).is_nan());
-    }
 
     #[test]
     fn validation_terrains_are_the_papers_unseen_ones() {

@@ -6,4 +6,4 @@ mod mann_whitney;
 mod summary;
 
 pub use mann_whitney::{mann_whitney, Method, UTest};
-pub use summary::{quantile, Summary};
+pub use summary::{median, quantile, Summary};

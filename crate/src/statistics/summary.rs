@@ -42,12 +42,26 @@ impl Summary {
             n,
             min: quantile(&sorted, 0.0),
             q1: quantile(&sorted, 0.25),
-            median: quantile(&sorted, 0.5),
+            median: median(&sorted),
             q3: quantile(&sorted, 0.75),
             max: quantile(&sorted, 1.0),
             mean,
             sd,
         }
+    }
+}
+
+/// Median of `values` (any order; the mean of the middle two for an even count, computed as
+/// 0.5 (a + b)); NaN when empty. Validation medians (recorded in run and manifest files) and
+/// the reports' medians are this one function.
+pub fn median(values: &[f64]) -> f64 {
+    let mut sorted = values.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    let n = sorted.len();
+    match n {
+        0 => f64::NAN,
+        _ if n % 2 == 1 => sorted[n / 2],
+        _ => 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]),
     }
 }
 
@@ -76,6 +90,9 @@ mod tests {
         assert_eq!((s.n, s.min, s.q1, s.median), (5, 1.0, 2.0, 3.0));
         assert_eq!((s.q3, s.max, s.mean), (4.0, 5.0, 3.0));
         assert!((s.sd - 2.5f64.sqrt()).abs() < 1e-12);
+        assert_eq!(median(&[3.0, 1.0, 2.0]), 2.0);
+        assert_eq!(median(&[4.0, 1.0, 3.0, 2.0]), 2.5);
+        assert!(median(&[]).is_nan());
         // numpy.quantile([1, 2, 3, 4], 0.25) = 1.75
         assert_eq!(quantile(&[1.0, 2.0, 3.0, 4.0], 0.25), 1.75);
     }
