@@ -280,6 +280,22 @@ fn export_chooses_by_the_paper_set_and_replaces_what_is_no_longer_chosen() {
     );
     assert_eq!(fs::read(pre.join("manifest.json")).unwrap(), before);
     assert_eq!(files_in(&pre).len(), 4 + 2, "modules, manifest, README");
+    // Exporting one family leaves the others' modules alone.
+    let mlp = vsr(&[
+        "campaign",
+        "export",
+        &file,
+        "--to",
+        to,
+        "--controllers",
+        "mlp",
+    ]);
+    assert!(mlp.status.success(), "{}", text(&mlp));
+    assert!(!text(&mlp).contains("removed"), "{}", text(&mlp));
+    let after: serde_json::Value =
+        serde_json::from_slice(&fs::read(pre.join("manifest.json")).unwrap()).unwrap();
+    assert_eq!(after["modules"].as_array().unwrap().len(), 4);
+    assert_eq!(files_in(&pre).len(), 4 + 2);
     let readme = fs::read_to_string(pre.join("README.md")).unwrap();
     assert!(readme.contains(
         "| worm-3x1-attention-to-worm-4x1.json | worm-4x1 | attention fine-tuned from worm-3x1 |"

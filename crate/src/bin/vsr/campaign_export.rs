@@ -60,7 +60,13 @@ pub fn run(args: Args) -> Result<()> {
         let run_path = choice.spec.run_path(&out);
         let job = jobs.iter().find(|j| j.out == run_path);
         let entry = job.and_then(|job| entry(&choice, job, &campaign_file, &version));
-        let Some(entry) = entry else { continue };
+        let Some(entry) = entry else {
+            eprintln!(
+                "vsr: {name}: its run is not in the campaign's plan; the previous export kept"
+            );
+            modules.extend(previous.iter().find(|e| e.file == name).cloned());
+            continue;
+        };
         let text = fs::read(&run_path)
             .map_err(|e| Error::Io(format!("cannot read {}: {e}", run_path.display())))?;
         crate::atomic::write(&args.to.join(&name), &text, "module")?;
@@ -70,6 +76,11 @@ pub fn run(args: Args) -> Result<()> {
         );
         modules.push(entry);
     }
+    // Modules of controllers this export was not asked about stay as they are.
+    let others = previous
+        .iter()
+        .filter(|e| !args.controllers.contains(&e.controller));
+    modules.extend(others.filter(|e| args.to.join(&e.file).exists()).cloned());
     let manifest = Manifest::new(modules);
     remove_unlisted(&args.to, &manifest)?;
     let json = serde_json::to_string_pretty(&manifest)

@@ -127,7 +127,10 @@ impl Runner<'_> {
             self.bar.inc(1);
             if self.bar.is_hidden() {
                 // No terminal (nohup, a log file): one line per finished job instead.
-                let finished = states.iter().filter(|&&s| s == State::Done).count();
+                let finished = states
+                    .iter()
+                    .filter(|&&s| s == State::Done || s == State::Failed)
+                    .count();
                 eprintln!(
                     "{} {}/{} {} ({:.0} s)",
                     if ok { "done" } else { "FAILED" },

@@ -146,7 +146,15 @@ pub fn choose(
         if !complete {
             continue;
         }
-        let score = |d: &RunData| d.validation[&ValidationSet::Paper].median;
+        // A NaN median (a run that fell apart) never wins.
+        let score = |d: &RunData| {
+            let m = d.validation[&ValidationSet::Paper].median;
+            if m.is_nan() {
+                f64::NEG_INFINITY
+            } else {
+                m
+            }
+        };
         let slot = &mut out[at].1;
         let candidates = slot.as_ref().map_or(0, |c| c.candidates) + 1;
         let better = slot.as_ref().map_or(true, |c| score(data) > score(&c.data));
