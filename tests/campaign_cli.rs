@@ -185,6 +185,16 @@ fn bad_campaign_files_exit_with_code_2() {
     assert!(text(&out).contains("seeds"), "{}", text(&out));
     let missing = vsr(&["campaign", "run", "/no/such/campaign.toml"]);
     assert_eq!(missing.status.code(), Some(2));
+    let (smoke_dir, smoke_file) = smoke("only");
+    let nothing = vsr(&["campaign", "run", &smoke_file, "--only", "no-such-run"]);
+    assert_eq!(nothing.status.code(), Some(2), "{}", text(&nothing));
+    assert!(text(&nothing).contains("no job's output name contains no-such-run"));
+    let part = vsr(&["campaign", "plan", &smoke_file, "--only", "to-worm-4x1"]);
+    let lines = text(&part);
+    assert!(lines.lines().all(|l| l.starts_with("vsr ")), "{lines}");
+    assert!(lines.lines().any(|l| l.contains("--out ") && l.contains("finetune")), "{lines}");
+    assert!(!lines.contains("worm-3x1-mlp"), "{lines}");
+    let _ = fs::remove_dir_all(smoke_dir);
     let _ = fs::remove_dir_all(dir);
 }
 
@@ -201,17 +211,25 @@ fn export_chooses_by_the_paper_set_and_replaces_what_is_no_longer_chosen() {
         "{}",
         text(&empty)
     );
-    // A module of an older manifest, to be replaced.
+    // A module of an older (v1) manifest, to be replaced; a name outside the folder, never
+    // to be removed.
     fs::write(pre.join("old.json"), "{}").unwrap();
+    fs::write(dir.join("outside.json"), "{}").unwrap();
     fs::write(
         pre.join("manifest.json"),
-        r#"{"modules": [{"file": "old.json"}]}"#,
+        r#"{"modules": [{"file": "old.json"}, {"file": "../outside.json"}]}"#,
     )
     .unwrap();
     assert!(vsr(&["campaign", "run", &file]).status.success());
     let export = vsr(&["campaign", "export", &file, "--to", to]);
     assert!(export.status.success(), "{}", text(&export));
     assert!(!pre.join("old.json").exists(), "{}", text(&export));
+    assert!(dir.join("outside.json").exists(), "{}", text(&export));
+    assert!(
+        text(&export).contains("is not a manifest of this format"),
+        "an unreadable previous manifest is reported: {}",
+        text(&export)
+    );
 
     let manifest: serde_json::Value =
         serde_json::from_slice(&fs::read(pre.join("manifest.json")).unwrap()).unwrap();

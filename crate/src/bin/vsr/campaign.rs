@@ -68,12 +68,37 @@ pub struct PlanArgs {
     /// Only the jobs whose output does not exist yet.
     #[arg(long)]
     pending: bool,
+    #[command(flatten)]
+    only: Only,
     /// --threads of each evolution job.
     #[arg(long, default_value_t = 1)]
     threads: usize,
     /// The program name printed at the start of each line.
     #[arg(long, default_value = "vsr")]
     program: String,
+}
+
+/// A part of a campaign: the jobs whose output names contain a text, and what they need.
+#[derive(clap::Args, Debug, Clone)]
+pub struct Only {
+    /// Only the jobs whose output file name contains TEXT (repeatable, e.g. `--only comb-14x2`,
+    /// `--only to-comb-7x2`), with every job they need.
+    #[arg(long, value_name = "TEXT")]
+    only: Vec<String>,
+}
+
+impl Only {
+    /// The plan of `campaign`, cut down to this part; an error when nothing matches.
+    pub fn plan(&self, campaign: &Campaign, out: &Path) -> Result<Vec<Job>> {
+        let jobs = vsr::experiment::campaign::select(plan(campaign, out), &self.only);
+        if jobs.is_empty() {
+            return Err(Error::Input(format!(
+                "no job's output name contains {} (see `vsr campaign plan` for the names)",
+                self.only.join(" or ")
+            )));
+        }
+        Ok(jobs)
+    }
 }
 
 /// Arguments of `vsr campaign merge`.
@@ -102,7 +127,7 @@ fn print_plan(args: PlanArgs) -> Result<()> {
     }
     let (campaign, out) = args.target.load()?;
     let mut stdout = std::io::stdout().lock();
-    for job in plan(&campaign, &out) {
+    for job in args.only.plan(&campaign, &out)? {
         let stage_ok = args.stage.map_or(true, |s| s == job.stage);
         if stage_ok && !(args.pending && job.out.exists()) {
             let line = job.command_line(&args.program, args.threads);

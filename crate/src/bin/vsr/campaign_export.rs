@@ -71,7 +71,7 @@ pub fn run(args: Args) -> Result<()> {
             .map_err(|e| Error::Io(format!("cannot read {}: {e}", run_path.display())))?;
         crate::atomic::write(&args.to.join(&name), &text, "module")?;
         println!(
-            "{name}: seed {} of {} runs, training {:.2} m/s",
+            "{name}: seed {} of {} validated runs, training {:.2} m/s",
             entry.seed, entry.chosen_from, entry.training_best
         );
         modules.push(entry);
@@ -100,10 +100,24 @@ pub fn run(args: Args) -> Result<()> {
     Ok(())
 }
 
-/// The entries of the folder's previous manifest in this format (none if there is none).
+/// The entries of the folder's previous manifest in this format (none if there is none;
+/// a manifest that cannot be read as this format is reported and its entries not kept).
 fn previous_entries(dir: &Path) -> Vec<Entry> {
-    let text = fs::read_to_string(dir.join("manifest.json")).unwrap_or_default();
-    serde_json::from_str::<Manifest>(&text).map_or(Vec::new(), |m| m.modules)
+    let path = dir.join("manifest.json");
+    let Ok(text) = fs::read_to_string(&path) else {
+        return Vec::new();
+    };
+    match serde_json::from_str::<Manifest>(&text) {
+        Ok(manifest) => manifest.modules,
+        Err(e) => {
+            eprintln!(
+                "vsr: warning: {} is not a manifest of this format ({e}); \
+                 its modules are not kept unless this campaign chooses them again",
+                path.display()
+            );
+            Vec::new()
+        }
+    }
 }
 
 /// Removes the module files the folder's previous manifest listed and this one does not.
@@ -116,7 +130,7 @@ fn remove_unlisted(dir: &Path, manifest: &Manifest) -> Result<()> {
     for file in listed.iter().filter_map(|m| m["file"].as_str()) {
         let kept = manifest.modules.iter().any(|m| m.file == file);
         let path = dir.join(file);
-        if !kept && !file.contains('/') && path.exists() {
+        if !kept && is_plain_file_name(file) && path.exists() {
             fs::remove_file(&path)
                 .map_err(|e| Error::Io(format!("cannot remove {}: {e}", path.display())))?;
             println!("removed {file} (no longer chosen)");
@@ -125,19 +139,20 @@ fn remove_unlisted(dir: &Path, manifest: &Manifest) -> Result<()> {
     Ok(())
 }
 
-/// The version of the code exporting (and replaying) the modules: the crate version and,
-/// in a git checkout, the commit (`-dirty` with uncommitted changes).
+/// Whether `name` names a file inside the folder (no separators, not `.` or `..`): the
+/// previous manifest is not trusted to point elsewhere.
+fn is_plain_file_name(name: &str) -> bool {
+    Path::new(name).file_name().and_then(|n| n.to_str()) == Some(name) && !name.contains('\\')
+}
+
+/// The version of the code exporting (and replaying) the modules: the crate version and
+/// the git commit this binary was built from (`-dirty` with uncommitted changes; see
+/// `crate/build.rs`).
 fn code_version() -> String {
-    let git = std::process::Command::new("git")
-        .args(["describe", "--always", "--dirty", "--abbrev=12"])
-        .output()
-        .ok()
-        .filter(|o| o.status.success())
-        .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_string());
     let version = env!("CARGO_PKG_VERSION");
-    match git {
-        Some(commit) if !commit.is_empty() => format!("vsr {version} (git {commit})"),
-        _ => format!("vsr {version}"),
+    match option_env!("VSR_GIT") {
+        Some(commit) => format!("vsr {version} (git {commit})"),
+        None => format!("vsr {version}"),
     }
 }
 

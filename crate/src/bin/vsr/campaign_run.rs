@@ -1,4 +1,5 @@
-//! `vsr campaign run FILE [--jobs N] [--threads T]`: runs a campaign's jobs on this machine.
+//! `vsr campaign run FILE [--jobs N] [--threads T] [--only TEXT]`: runs a campaign's jobs
+//! (or the part `--only` names) on this machine.
 //!
 //! Each job is the `vsr` command `campaign plan` prints, run as a child process of this very
 //! binary with its output in `OUT/logs/STEM.log`. Jobs whose output file exists are skipped,
@@ -15,10 +16,10 @@ use std::process::{Command, Stdio};
 use std::sync::{Condvar, Mutex};
 
 use indicatif::{ProgressBar, ProgressStyle};
-use vsr::experiment::campaign::{plan, Job};
+use vsr::experiment::campaign::Job;
 use vsr::{Error, Result};
 
-use crate::campaign::{create_folders, Target};
+use crate::campaign::{create_folders, Only, Target};
 
 /// Arguments of `vsr campaign run`.
 #[derive(clap::Args, Debug)]
@@ -31,6 +32,8 @@ pub struct Args {
     /// --threads of each evolution job.
     #[arg(long, default_value_t = 1)]
     threads: usize,
+    #[command(flatten)]
+    only: Only,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -57,7 +60,7 @@ pub fn run(args: Args) -> Result<()> {
             args.threads
         );
     }
-    let jobs = plan(&campaign, &out);
+    let jobs = args.only.plan(&campaign, &out)?;
     create_folders(&out, &jobs)?;
     let program = std::env::current_exe()
         .map_err(|e| Error::Io(format!("cannot find the vsr binary: {e}")))?;

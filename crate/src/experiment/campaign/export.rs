@@ -65,7 +65,7 @@ pub struct Entry {
     pub training_best: f64,
     /// Its validation figures, by set.
     pub validation: BTreeMap<ValidationSet, SetFigures>,
-    /// Runs of its category it was chosen from.
+    /// Runs of its category it was chosen from (finished and validated on both sets).
     pub chosen_from: usize,
     /// The command that made the run file (from the campaign's plan).
     pub command: String,
@@ -216,7 +216,7 @@ impl Manifest {
     pub fn table(&self) -> String {
         let mut md = String::from(
             "| file | shape | controller | seed | evaluations | training best | paper median | \
-             unseen median | chosen from |\n|---|---|---|---|---|---|---|---|---|\n",
+             unseen median | chosen from (validated runs) |\n|---|---|---|---|---|---|---|---|---|\n",
         );
         for m in &self.modules {
             let median = |set| m.validation.get(&set).map_or(f64::NAN, |f| f.median);

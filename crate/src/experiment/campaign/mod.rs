@@ -12,6 +12,6 @@ pub mod report;
 pub mod results;
 
 pub use file::Campaign;
-pub use plan::{plan, runs, Job, RunSpec};
+pub use plan::{plan, runs, select, Job, RunSpec};
 pub use report::{report, Report};
 pub use results::{Results, RunData};

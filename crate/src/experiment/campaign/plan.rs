@@ -189,6 +189,35 @@ fn ablated(c: &Campaign, r: &RunSpec) -> bool {
         })
 }
 
+/// The jobs of `jobs` (a plan, in dependency order) whose output file name contains one of
+/// `patterns`, with every job they need, in the same order; all of them when `patterns` is
+/// empty. `--only to-comb-7x2` selects the fine-tunings onto comb-7x2, their source runs
+/// and their validations.
+pub fn select(jobs: Vec<Job>, patterns: &[String]) -> Vec<Job> {
+    if patterns.is_empty() {
+        return jobs;
+    }
+    let named = |j: &Job| {
+        let name = j.out.file_name().map_or(String::new(), |n| n.to_string_lossy().into_owned());
+        patterns.iter().any(|p| name.contains(p.as_str()))
+    };
+    let mut keep: Vec<bool> = jobs.iter().map(named).collect();
+    // Needs come earlier in a plan: one backward pass closes the selection over them.
+    for i in (0..jobs.len()).rev() {
+        if keep[i] {
+            for need in &jobs[i].needs {
+                if let Some(k) = jobs[..i].iter().position(|j| &j.out == need) {
+                    keep[k] = true;
+                }
+            }
+        }
+    }
+    jobs.into_iter()
+        .zip(keep)
+        .filter_map(|(j, k)| k.then_some(j))
+        .collect()
+}
+
 /// The job list of campaign `c` with outputs under `out`, in dependency order.
 pub fn plan(c: &Campaign, out: &Path) -> Vec<Job> {
     let mut jobs = Vec::new();
@@ -299,6 +328,27 @@ source_evals = 200
 evals = 100
 scratch_evals = 300
 "#;
+
+    #[test]
+    fn a_selection_brings_the_jobs_it_needs() {
+        let c = Campaign::parse(CAMPAIGN).unwrap();
+        let all = plan(&c, Path::new("o"));
+        assert_eq!(select(all.clone(), &[]), all);
+        let only = select(all.clone(), &["to-biped-4x3-100-s2.paper".to_string()]);
+        let names: Vec<String> = only
+            .iter()
+            .map(|j| j.out.file_name().unwrap().to_string_lossy().into_owned())
+            .collect();
+        assert_eq!(
+            names,
+            [
+                "comb-7x2-attention-200-s2.json",
+                "comb-7x2-attention-200-to-biped-4x3-100-s2.json",
+                "comb-7x2-attention-200-to-biped-4x3-100-s2.paper.json",
+            ]
+        );
+        assert!(select(all, &["no-such-run".to_string()]).is_empty());
+    }
 
     #[test]
     fn every_job_comes_after_the_jobs_it_needs_and_runs_are_not_repeated() {
