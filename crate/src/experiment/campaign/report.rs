@@ -6,7 +6,9 @@
 //! 10 terrains of a validation set (the paper's re-assessment figure). Every pair the paper
 //! compares is tested with the two-sided Mann-Whitney U test (exact for small samples without
 //! ties) and Vargha-Delaney A12 (`statistics`): the controllers of each shape and budget
-//! pairwise (RQ1), and fine-tuning against from scratch on each target shape (RQ2).
+//! pairwise (RQ1), and fine-tuning against from scratch on each target shape (RQ2), both at
+//! the end and after the fine-tuning budget (the paper's claim is that fine-tuning converges
+//! faster).
 //!
 //! Figures (file names): `fig3-GROUP-SHAPE-EVALS.svg` best fitness against evaluations;
 //! `fig4-GROUP-SHAPE-EVALS-SET.svg` validation boxes; `fig6-GROUP-SHAPE-EVALS.svg`
@@ -312,6 +314,62 @@ fn slow_part(samples: &[Sample], id: &str, shape: &str, r: &mut Report) {
     );
 }
 
+/// The paper's RQ2 claim is about speed ("fine-tuning reaches from-scratch quality in far
+/// fewer evaluations"): the best after the same number of evaluations on the target shape
+/// (the fine-tuning budget), tested; and when the fine-tuned runs' median best first reaches
+/// the from-scratch runs' final median.
+fn convergence_part(tuned: &Sample, scratch: &Sample, md: &mut String) {
+    let Some(budget) = tuned.runs.iter().filter_map(RunData::evaluations).max() else {
+        return;
+    };
+    let x: Vec<f64> = tuned.runs.iter().filter_map(RunData::final_best).collect();
+    let y: Vec<f64> = scratch.runs.iter().filter_map(|d| d.best_at(budget)).collect();
+    let finals: Vec<f64> = scratch.runs.iter().filter_map(RunData::final_best).collect();
+    if y.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        md,
+        "Convergence: best fitness after {budget} evaluations on the target shape \
+         (fine-tuned: its whole budget; from scratch: its first {budget}):\n"
+    );
+    let t = mann_whitney(&x, &y);
+    let _ = writeln!(
+        md,
+        "| A | B | median A | median B | U | p | A12 | method |\n|---|---|---|---|---|---|---|---|\n\
+         | {} | {} (first {budget}) | {:.3} | {:.3} | {} | {:.4} | {:.2} | {:?} |\n",
+        tuned.label,
+        scratch.label,
+        Summary::of(&x).median,
+        Summary::of(&y).median,
+        t.u1,
+        t.p,
+        t.a12,
+        t.method
+    );
+    let target = Summary::of(&finals).median;
+    let reached = tuned.runs.iter().find_map(|d| {
+        let generations = &d.run.as_ref()?.generations;
+        generations.iter().map(|g| g.evaluations).find(|&e| {
+            let at: Vec<f64> = tuned.runs.iter().filter_map(|r| r.best_at(e)).collect();
+            at.len() == x.len() && Summary::of(&at).median >= target
+        })
+    });
+    let _ = match reached {
+        Some(e) => writeln!(
+            md,
+            "The fine-tuned runs' median best reaches the from-scratch runs' final median \
+             ({target:.3} m/s, after {} evaluations) after {e} evaluations.\n",
+            scratch.runs.iter().filter_map(RunData::evaluations).max().unwrap_or(0)
+        ),
+        None => writeln!(
+            md,
+            "The fine-tuned runs' median best does not reach the from-scratch runs' final \
+             median ({target:.3} m/s) within {budget} evaluations.\n"
+        ),
+    };
+}
+
 fn finetune_section(results: &Results, g: &FinetuneGroup, pair: &[String; 2], r: &mut Report) {
     let seeds = g.seeds.as_ref().unwrap_or(&results.campaign.seeds);
     let [from, to] = pair;
@@ -338,6 +396,9 @@ fn finetune_section(results: &Results, g: &FinetuneGroup, pair: &[String; 2], r:
     let sets = &results.campaign.validate;
     summary_table(&samples, sets, &mut r.markdown);
     comparisons(&samples, sets, &mut r.markdown);
+    if let [tuned, scratch] = &samples[..] {
+        convergence_part(tuned, scratch, &mut r.markdown);
+    }
     let offset = g.source_evals as f64;
     let mut bands: Vec<_> = samples[1..]
         .iter()

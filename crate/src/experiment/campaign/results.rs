@@ -29,6 +29,21 @@ impl RunData {
     pub fn final_best(&self) -> Option<f64> {
         self.run.as_ref()?.generations.last().map(|g| g.best)
     }
+
+    /// The best fitness found within the first `evals` evaluations (the highest generation
+    /// best among the generations done by then), if the run exists and had done any.
+    pub fn best_at(&self, evals: u64) -> Option<f64> {
+        let done = self.run.as_ref()?.generations.iter();
+        done.take_while(|g| g.evaluations <= evals)
+            .map(|g| g.best)
+            .filter(|b| !b.is_nan())
+            .reduce(f64::max)
+    }
+
+    /// Evaluations done by the last generation, if the run exists.
+    pub fn evaluations(&self) -> Option<u64> {
+        self.run.as_ref()?.generations.last().map(|g| g.evaluations)
+    }
 }
 
 /// Every run's data, and the expected files that do not exist.
