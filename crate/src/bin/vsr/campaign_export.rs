@@ -71,7 +71,7 @@ pub fn run(args: Args) -> Result<()> {
             .map_err(|e| Error::Io(format!("cannot read {}: {e}", run_path.display())))?;
         crate::atomic::write(&args.to.join(&name), &text, "module")?;
         println!(
-            "{name}: seed {} of {} validated runs, training {:.2} m/s",
+            "{name}: seed {} of {} validated run(s), training {:.2} m/s",
             entry.seed, entry.chosen_from, entry.training_best
         );
         modules.push(entry);

@@ -225,7 +225,7 @@ impl Manifest {
                 Some(from) => format!("{} fine-tuned from {from}", m.controller),
             };
             md += &format!(
-                "| {} | {} | {} | {} | {} | {:.2} | {:.2} | {:.2} | {} runs |\n",
+                "| {} | {} | {} | {} | {} | {:.2} | {:.2} | {:.2} | {} |\n",
                 m.file,
                 m.shape,
                 controller,
@@ -234,7 +234,10 @@ impl Manifest {
                 m.training_best,
                 median(ValidationSet::Paper),
                 median(ValidationSet::Unseen),
-                m.chosen_from
+                match m.chosen_from {
+                    1 => "1 run".to_string(),
+                    n => format!("{n} runs"),
+                }
             );
         }
         md
