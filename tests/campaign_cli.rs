@@ -107,7 +107,7 @@ fn plan_run_merge_report_and_resume() {
         .into_iter()
         .filter(|p| p.extension().is_some_and(|e| e == "svg"))
         .collect();
-    assert_eq!(svgs.len(), 6, "{svgs:?}");
+    assert_eq!(svgs.len(), 7, "{svgs:?}");
     for svg in &svgs {
         let body = fs::read_to_string(svg).unwrap();
         assert!(

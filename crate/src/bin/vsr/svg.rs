@@ -74,6 +74,8 @@ fn lines(root: &Area, figure: &Figure, bands: &[Band]) -> Result<()> {
         .configure_mesh()
         .x_desc(&figure.x_label)
         .y_desc(&figure.y_label)
+        // `5000`, not plotters' default `5000.0`.
+        .x_label_formatter(&|x| format!("{x}"))
         .draw()
         .map_err(plot_error)?;
     for (i, b) in bands.iter().enumerate() {
