@@ -1,7 +1,8 @@
-//! Embeds the git commit the code is built from (`VSR_GIT`, with `-dirty` for uncommitted
-//! changes), so the provenance `vsr campaign export` writes names the code that ran, not
-//! whatever checkout the command happens to be run in. Outside a git checkout nothing is
-//! embedded.
+//! Embeds the version of the code being built as `VSR_VERSION`: the crate version and the git
+//! commit (`-dirty` with uncommitted changes), e.g. `0.1.0 (git 5436b58c1a2b)`; outside a git
+//! checkout just the crate version. `vsr --version` prints it and `vsr campaign export`
+//! records it, so provenance names the code that ran, not whatever checkout the command
+//! happens to be run in.
 
 use std::process::Command;
 
@@ -18,7 +19,10 @@ fn main() {
         .ok()
         .filter(|o| o.status.success())
         .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_string());
-    if let Some(commit) = described.filter(|c| !c.is_empty()) {
-        println!("cargo:rustc-env=VSR_GIT={commit}");
-    }
+    let crate_version = std::env::var("CARGO_PKG_VERSION").unwrap_or_default();
+    let version = match described.filter(|c| !c.is_empty()) {
+        Some(commit) => format!("{crate_version} (git {commit})"),
+        None => crate_version,
+    };
+    println!("cargo:rustc-env=VSR_VERSION={version}");
 }

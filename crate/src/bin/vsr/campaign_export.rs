@@ -145,15 +145,10 @@ fn is_plain_file_name(name: &str) -> bool {
     Path::new(name).file_name().and_then(|n| n.to_str()) == Some(name) && !name.contains('\\')
 }
 
-/// The version of the code exporting (and replaying) the modules: the crate version and
-/// the git commit this binary was built from (`-dirty` with uncommitted changes; see
-/// `crate/build.rs`).
+/// The version of the code exporting (and replaying) the modules: the crate version and the
+/// git commit this binary was built from (see `crate/build.rs`).
 fn code_version() -> String {
-    let version = env!("CARGO_PKG_VERSION");
-    match option_env!("VSR_GIT") {
-        Some(commit) => format!("vsr {version} (git {commit})"),
-        None => format!("vsr {version}"),
-    }
+    format!("vsr {}", env!("VSR_VERSION"))
 }
 
 /// The folder's README: what the files are, how they were made, the table.

@@ -4,7 +4,7 @@ use clap::{Parser, Subcommand};
 
 /// VSR Playground: simulate and evolve voxel-based soft robots.
 #[derive(Parser, Debug)]
-#[command(name = "vsr", version, about)]
+#[command(name = "vsr", version = env!("VSR_VERSION"), about)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
