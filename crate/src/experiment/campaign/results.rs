@@ -30,14 +30,12 @@ impl RunData {
         self.run.as_ref()?.generations.last().map(|g| g.best)
     }
 
-    /// The best fitness found within the first `evals` evaluations (the highest generation
-    /// best among the generations done by then), if the run exists and had done any.
+    /// The best fitness of the last generation done within the first `evals` evaluations
+    /// (the measure `final_best` gives at the end: the curve of Fig. 3 and 7 read at
+    /// `evals`), if the run exists and had done a generation by then.
     pub fn best_at(&self, evals: u64) -> Option<f64> {
         let done = self.run.as_ref()?.generations.iter();
-        done.take_while(|g| g.evaluations <= evals)
-            .map(|g| g.best)
-            .filter(|b| !b.is_nan())
-            .reduce(f64::max)
+        done.take_while(|g| g.evaluations <= evals).last().map(|g| g.best)
     }
 
     /// Evaluations done by the last generation, if the run exists.
