@@ -100,8 +100,14 @@ fn plan_run_merge_report_and_resume() {
     assert!(md.contains("| attention | mlp | best |"), "{md}");
     assert!(md.contains("| fine-tuned from worm-3x1 (8 + 4) | from scratch (12) | unseen mean |"));
     // RQ2's speed claim: both after the fine-tuning budget, and when fine-tuning catches up.
-    assert!(md.contains("Convergence: best fitness after the same number"), "{md}");
-    assert!(md.contains("| evaluations | median fine-tuned | median from scratch |"), "{md}");
+    assert!(
+        md.contains("Convergence: best fitness after the same number"),
+        "{md}"
+    );
+    assert!(
+        md.contains("| evaluations | median fine-tuned | median from scratch |"),
+        "{md}"
+    );
     assert!(md.contains("the from-scratch runs' final median"), "{md}");
     let svgs: Vec<PathBuf> = files_in(&out.join("report"))
         .into_iter()
@@ -196,7 +202,12 @@ fn bad_campaign_files_exit_with_code_2() {
     let part = vsr(&["campaign", "plan", &smoke_file, "--only", "to-worm-4x1"]);
     let lines = text(&part);
     assert!(lines.lines().all(|l| l.starts_with("vsr ")), "{lines}");
-    assert!(lines.lines().any(|l| l.contains("--out ") && l.contains("finetune")), "{lines}");
+    assert!(
+        lines
+            .lines()
+            .any(|l| l.contains("--out ") && l.contains("finetune")),
+        "{lines}"
+    );
     assert!(!lines.contains("worm-3x1-mlp"), "{lines}");
     let _ = fs::remove_dir_all(smoke_dir);
     let _ = fs::remove_dir_all(dir);

@@ -198,7 +198,10 @@ pub fn select(jobs: Vec<Job>, patterns: &[String]) -> Vec<Job> {
         return jobs;
     }
     let named = |j: &Job| {
-        let name = j.out.file_name().map_or(String::new(), |n| n.to_string_lossy().into_owned());
+        let name = j
+            .out
+            .file_name()
+            .map_or(String::new(), |n| n.to_string_lossy().into_owned());
         patterns.iter().any(|p| name.contains(p.as_str()))
     };
     let mut keep: Vec<bool> = jobs.iter().map(named).collect();

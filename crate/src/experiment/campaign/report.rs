@@ -361,7 +361,11 @@ fn convergence_part(tuned: &Sample, scratch: &Sample, md: &mut String) {
         );
     }
     md.push('\n');
-    let finals: Vec<f64> = scratch.runs.iter().filter_map(RunData::final_best).collect();
+    let finals: Vec<f64> = scratch
+        .runs
+        .iter()
+        .filter_map(RunData::final_best)
+        .collect();
     let Some(scratch_budget) = scratch.runs.iter().filter_map(RunData::evaluations).max() else {
         return;
     };
@@ -420,7 +424,11 @@ fn finetune_section(results: &Results, g: &FinetuneGroup, pair: &[String; 2], r:
     // evaluation); and the whole cost, fine-tuning drawn after its source's evaluations.
     let views = [
         ("", 0.0, "evaluations on the target shape"),
-        ("-total", g.source_evals as f64, "evaluations (fine-tuning: after its source's)"),
+        (
+            "-total",
+            g.source_evals as f64,
+            "evaluations (fine-tuning: after its source's)",
+        ),
     ];
     for (suffix, offset, x_label) in views {
         let mut bands: Vec<_> = samples[1..]

@@ -35,7 +35,9 @@ impl RunData {
     /// `evals`), if the run exists and had done a generation by then.
     pub fn best_at(&self, evals: u64) -> Option<f64> {
         let done = self.run.as_ref()?.generations.iter();
-        done.take_while(|g| g.evaluations <= evals).last().map(|g| g.best)
+        done.take_while(|g| g.evaluations <= evals)
+            .last()
+            .map(|g| g.best)
     }
 
     /// Evaluations done by the last generation, if the run exists.
