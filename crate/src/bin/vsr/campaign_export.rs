@@ -33,6 +33,12 @@ pub fn run(args: Args) -> Result<()> {
     let jobs = plan(&campaign, &out);
     let results = load_results(campaign, &out)?;
     let version = code_version();
+    if version.ends_with("-dirty)") {
+        eprintln!(
+            "vsr: warning: this vsr was built from a tree with uncommitted changes ({version}); \
+             for a clean provenance commit, rebuild and export again"
+        );
+    }
     let campaign_file = args.target.file.display().to_string();
     fs::create_dir_all(&args.to)
         .map_err(|e| Error::Io(format!("cannot create {}: {e}", args.to.display())))?;
