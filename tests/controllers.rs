@@ -23,7 +23,7 @@ fn expected_count(kind: ControllerKind, n: usize) -> usize {
     match kind {
         ControllerKind::Attention => 32 + 4 * n + 1,
         ControllerKind::Mlp => 4 * n + 1,
-        ControllerKind::MlpComm => (8 * n + 1) * 5,
+        ControllerKind::MlpComm | ControllerKind::MlpCommLatched => (8 * n + 1) * 5,
         ControllerKind::SlowAttention => 32 + 4 * n + 1 + 2,
     }
 }
@@ -277,4 +277,34 @@ fn slow_attention_with_alpha_one_eta_zero_is_attention() {
         assert_eq!(u1, u2);
         assert_eq!(plain.attention(), slow.attention());
     }
+}
+
+/// MLP-Comm's two paces differ only in when messages travel: with every message row at zero
+/// (no message is ever sent) they walk identically; with messages they do not. (Without
+/// sensor noise: the every-step MLP-Comm reads, so draws, noise at every step.)
+#[test]
+fn mlp_comm_latched_differs_from_every_step_only_through_its_messages() {
+    use vsr::experiment::evaluate::evaluate;
+    use vsr::simulation::{Shape, Terrain};
+    let shape = Shape::parse("biped-4x3").unwrap();
+    let n = shape.voxel_count();
+    let row = 8 * n + 1;
+    let mut rng = ChaCha8Rng::seed_from_u64(7);
+    let genome = random_vec(&mut rng, MlpComm::param_count_for(n), 1.0);
+    let mut silent = genome.clone();
+    silent[row..].fill(0.0);
+    let velocity = |kind: ControllerKind, g: &[f32]| {
+        let terrain = Terrain::parse("flat").unwrap();
+        evaluate(&shape, terrain, kind, g, None, 5.0)
+            .unwrap()
+            .velocity
+    };
+    assert_eq!(
+        velocity(ControllerKind::MlpComm, &silent),
+        velocity(ControllerKind::MlpCommLatched, &silent)
+    );
+    assert_ne!(
+        velocity(ControllerKind::MlpComm, &genome),
+        velocity(ControllerKind::MlpCommLatched, &genome)
+    );
 }

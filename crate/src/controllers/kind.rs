@@ -8,7 +8,7 @@ use std::fmt;
 use std::str::FromStr;
 
 /// A controller family, named in run files and on the command line
-/// (`attention`, `mlp`, `mlp-comm`, `slow-attention`).
+/// (`attention`, `mlp`, `mlp-comm`, `slow-attention`, `mlp-comm-latched`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum ControllerKind {
@@ -20,15 +20,19 @@ pub enum ControllerKind {
     MlpComm,
     /// Attention with a slowly updated matrix: 32 + 4n + 1 + 2 parameters.
     SlowAttention,
+    /// MLP-Comm exchanging messages only when the actuation is latched (every 20 steps), as
+    /// the original code does; same genome as `MlpComm`.
+    MlpCommLatched,
 }
 
 impl ControllerKind {
     /// Every kind, in the order used for help texts.
-    pub const ALL: [ControllerKind; 4] = [
+    pub const ALL: [ControllerKind; 5] = [
         ControllerKind::Attention,
         ControllerKind::Mlp,
         ControllerKind::MlpComm,
         ControllerKind::SlowAttention,
+        ControllerKind::MlpCommLatched,
     ];
 
     /// The name accepted by `FromStr` and printed by `Display`.
@@ -38,6 +42,7 @@ impl ControllerKind {
             ControllerKind::Mlp => "mlp",
             ControllerKind::MlpComm => "mlp-comm",
             ControllerKind::SlowAttention => "slow-attention",
+            ControllerKind::MlpCommLatched => "mlp-comm-latched",
         }
     }
 
@@ -46,7 +51,9 @@ impl ControllerKind {
         match self {
             ControllerKind::Attention => Attention::param_count_for(n_voxels),
             ControllerKind::Mlp => Mlp::param_count_for(n_voxels),
-            ControllerKind::MlpComm => MlpComm::param_count_for(n_voxels),
+            ControllerKind::MlpComm | ControllerKind::MlpCommLatched => {
+                MlpComm::param_count_for(n_voxels)
+            }
             ControllerKind::SlowAttention => SlowAttention::param_count_for(n_voxels),
         }
     }
@@ -104,6 +111,7 @@ pub fn build(kind: ControllerKind, topology: &Topology) -> Box<dyn Controller> {
         ControllerKind::Mlp => Box::new(Mlp::new(n)),
         ControllerKind::MlpComm => Box::new(MlpComm::new(topology.clone())),
         ControllerKind::SlowAttention => Box::new(SlowAttention::new(n)),
+        ControllerKind::MlpCommLatched => Box::new(MlpComm::latched(topology.clone())),
     }
 }
 
@@ -144,10 +152,16 @@ mod tests {
                 (c.needs_every_step(), c.attention().is_some())
             })
             .collect();
-        // attention, mlp, mlp-comm, slow-attention
+        // attention, mlp, mlp-comm, slow-attention, mlp-comm-latched
         assert_eq!(
             flags,
-            [(false, true), (false, false), (true, false), (true, true)]
+            [
+                (false, true),
+                (false, false),
+                (true, false),
+                (true, true),
+                (false, false)
+            ]
         );
     }
 }

@@ -32,7 +32,7 @@ impl GenomeLayout {
             ControllerKind::Attention => (ATTENTION_PARAMS, 4, 1, 0, 1),
             ControllerKind::SlowAttention => (ATTENTION_PARAMS, 4, 1, 0, 1 + SLOW_GENES),
             ControllerKind::Mlp => (0, 1, 4, 0, 1),
-            ControllerKind::MlpComm => (0, 5, 8, 1, 0),
+            ControllerKind::MlpComm | ControllerKind::MlpCommLatched => (0, 5, 8, 1, 0),
         };
         GenomeLayout {
             prefix,

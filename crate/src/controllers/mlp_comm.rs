@@ -1,6 +1,13 @@
 //! Message-passing MLP baseline (SPEC 7): each voxel reads its 4 sensors plus the 4 messages
 //! its neighbours sent at the PREVIOUS control call, and emits an actuation plus 4 messages.
 //!
+//! When is it called? [`MlpComm::new`] (`mlp-comm`) is called at every simulation step, as
+//! SPEC 7 words it ("the messages received ... at the previous step"), so a message crosses
+//! one voxel per 1/60 s. [`MlpComm::latched`] (`mlp-comm-latched`) is called only when the
+//! actuation is latched (every k_act = 20 steps), as the original code does (2D-VSR-Sim's
+//! `StepController` calls its inner controller, messages included, once per 0.33 s), so a
+//! message crosses one voxel per 0.33 s. docs/RESULTS.md measures what the difference does.
+//!
 //! Input of voxel `i` (8 values, tanh applied as in the MLP baseline): `[area, vx, vy, touch,
 //! from_up, from_right, from_down, from_left]`, where `from_d` is the message that the
 //! neighbour in direction `d` addressed to `i` (0 where there is no neighbour, and at the first
@@ -29,10 +36,13 @@ pub struct MlpComm {
     sent: Vec<[f32; 4]>,
     /// Scratch for the messages being sent at this call.
     sending: Vec<[f32; 4]>,
+    /// Called only when the actuation is latched (messages at the actuation's pace).
+    latched: bool,
 }
 
 impl MlpComm {
-    /// An MLP-Comm for `topology` with every parameter at zero and no messages in flight.
+    /// An MLP-Comm for `topology`, called at every step, with every parameter at zero and no
+    /// messages in flight.
     pub fn new(topology: Topology) -> Self {
         let n = topology.voxel_count();
         Self {
@@ -40,6 +50,15 @@ impl MlpComm {
             params: Params::zeros(Self::param_count_for(n)),
             sent: vec![[0.0; 4]; n],
             sending: vec![[0.0; 4]; n],
+            latched: false,
+        }
+    }
+
+    /// The same controller, called only when the actuation is latched (the original's pace).
+    pub fn latched(topology: Topology) -> Self {
+        Self {
+            latched: true,
+            ..Self::new(topology)
         }
     }
 
@@ -110,7 +129,7 @@ impl Controller for MlpComm {
     }
 
     fn needs_every_step(&self) -> bool {
-        true
+        !self.latched
     }
 
     fn attention(&self) -> Option<&[f32]> {

@@ -11,7 +11,8 @@ pub struct RobotArgs {
     /// top first, e.g. 1111-1111-1001.
     #[arg(long)]
     shape: String,
-    /// Controller: attention, mlp, mlp-comm or slow-attention.
+    /// Controller: attention, mlp, mlp-comm, slow-attention or mlp-comm-latched (MLP-Comm
+    /// exchanging messages only every 20 steps, as the original code).
     #[arg(long)]
     controller: String,
 }
