@@ -272,3 +272,17 @@ fn fine_tuning_needs_attention() {
     let err = Evolution::new(config).unwrap_err().to_string();
     assert!(err.contains("attention"), "{err}");
 }
+
+/// A run's draws derive from (seed, generation, index, purpose), never from its budget: a
+/// shorter run is the first generations of a longer one with the same seed, bit for bit
+/// (`vsr report` relies on it when a campaign's from-scratch runs have not finished).
+#[test]
+fn a_shorter_budget_is_a_prefix_of_a_longer_run() {
+    let short = run_on(tiny(ControllerKind::Attention, 3), 2);
+    let mut long_config = tiny(ControllerKind::Attention, 3);
+    long_config.ga.budget_evals = 180;
+    let long = run_on(long_config, 2);
+    assert_eq!(short.generations.len(), 3);
+    assert_eq!(long.generations.len(), 5);
+    assert_eq!(short.generations[..], long.generations[..3]);
+}

@@ -83,6 +83,7 @@ fn missing_section(results: &Results, md: &mut String) {
 }
 
 /// A labelled sample of runs.
+#[derive(Clone)]
 struct Sample {
     label: String,
     runs: Vec<RunData>,
@@ -391,6 +392,39 @@ fn convergence_part(tuned: &Sample, scratch: &Sample, md: &mut String) {
     };
 }
 
+/// The from-scratch runs for the convergence table. While none has finished, the target
+/// shape's source runs stand in when they exist: a run's draws derive from (seed, generation,
+/// index, purpose), never from its budget, so a `source_evals` run with seed s is the first
+/// generations of the `scratch_evals` run with seed s, bit for bit (`tests/evolution.rs`).
+fn prefix_stand_in(
+    results: &Results,
+    g: &FinetuneGroup,
+    to: &str,
+    seeds: &[u64],
+    scratch: &Sample,
+    r: &mut Report,
+) -> Sample {
+    if scratch.runs.iter().any(|d| d.run.is_some()) {
+        return scratch.clone();
+    }
+    let spec = RunSpec::scratch(to, g.controller, g.source_evals, 0);
+    let runs = results.seeds_of(&spec, seeds);
+    if runs.iter().any(|d| d.run.is_some()) {
+        let _ = writeln!(
+            r.markdown,
+            "No from-scratch run of {} evaluations has finished: the convergence table uses \
+             the {to} runs of {} evaluations with the same seeds, which are their first \
+             generations bit for bit.\n",
+            g.scratch_evals.unwrap_or(0),
+            g.source_evals
+        );
+    }
+    Sample {
+        label: scratch.label.clone(),
+        runs,
+    }
+}
+
 fn finetune_section(results: &Results, g: &FinetuneGroup, pair: &[String; 2], r: &mut Report) {
     let seeds = g.seeds.as_ref().unwrap_or(&results.campaign.seeds);
     let [from, to] = pair;
@@ -418,7 +452,11 @@ fn finetune_section(results: &Results, g: &FinetuneGroup, pair: &[String; 2], r:
     summary_table(&samples, sets, &mut r.markdown);
     comparisons(&samples, sets, &mut r.markdown);
     if let [tuned, scratch] = &samples[..] {
-        convergence_part(tuned, scratch, &mut r.markdown);
+        convergence_part(
+            tuned,
+            &prefix_stand_in(results, g, to, seeds, scratch, r),
+            &mut r.markdown,
+        );
     }
     // The paper's view: evaluations on the target shape (fine-tuning from its first
     // evaluation); and the whole cost, fine-tuning drawn after its source's evaluations.
