@@ -392,7 +392,7 @@ fn convergence_part(tuned: &Sample, scratch: &Sample, md: &mut String) {
     };
 }
 
-/// The from-scratch runs for the convergence table. While none has finished, the target
+/// The from-scratch runs for the convergence table and Fig. 7. While none has finished, the target
 /// shape's source runs stand in when they exist: a run's draws derive from (seed, generation,
 /// index, purpose), never from its budget, so a `source_evals` run with seed s is the first
 /// generations of the `scratch_evals` run with seed s, bit for bit (`tests/evolution.rs`).
@@ -409,18 +409,23 @@ fn prefix_stand_in(
     }
     let spec = RunSpec::scratch(to, g.controller, g.source_evals, 0);
     let runs = results.seeds_of(&spec, seeds);
-    if runs.iter().any(|d| d.run.is_some()) {
-        let _ = writeln!(
-            r.markdown,
-            "No from-scratch run of {} evaluations has finished: the convergence table uses \
-             the {to} runs of {} evaluations with the same seeds, which are their first \
-             generations bit for bit.\n",
-            g.scratch_evals.unwrap_or(0),
-            g.source_evals
-        );
+    if runs.iter().all(|d| d.run.is_none()) {
+        return scratch.clone();
     }
+    let _ = writeln!(
+        r.markdown,
+        "No from-scratch run of {} evaluations has finished: the convergence table and the \
+         figure use the {to} runs of {} evaluations with the same seeds, which are their first \
+         generations bit for bit.\n",
+        g.scratch_evals.unwrap_or(0),
+        g.source_evals
+    );
     Sample {
-        label: scratch.label.clone(),
+        label: format!(
+            "from scratch (first {} of {})",
+            g.source_evals,
+            g.scratch_evals.unwrap_or(0)
+        ),
         runs,
     }
 }
@@ -451,12 +456,11 @@ fn finetune_section(results: &Results, g: &FinetuneGroup, pair: &[String; 2], r:
     let sets = &results.campaign.validate;
     summary_table(&samples, sets, &mut r.markdown);
     comparisons(&samples, sets, &mut r.markdown);
+    if let [_, scratch] = &mut samples[..] {
+        *scratch = prefix_stand_in(results, g, to, seeds, scratch, r);
+    }
     if let [tuned, scratch] = &samples[..] {
-        convergence_part(
-            tuned,
-            &prefix_stand_in(results, g, to, seeds, scratch, r),
-            &mut r.markdown,
-        );
+        convergence_part(tuned, scratch, &mut r.markdown);
     }
     // The paper's view: evaluations on the target shape (fine-tuning from its first
     // evaluation); and the whole cost, fine-tuning drawn after its source's evaluations.
