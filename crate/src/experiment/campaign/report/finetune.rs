@@ -92,7 +92,7 @@ fn convergence_part(tuned: &Sample, scratch: &Sample, md: &mut String) {
 fn prefix_stand_in(
     results: &Results,
     g: &FinetuneGroup,
-    to: &str,
+    (to, scratch_evals): (&str, u64),
     seeds: &[u64],
     scratch: &Sample,
     r: &mut Report,
@@ -110,15 +110,10 @@ fn prefix_stand_in(
         "No from-scratch run of {} evaluations has finished: the convergence table and the \
          figure use the {to} runs of {} evaluations with the same seeds, which are their first \
          generations bit for bit.\n",
-        g.scratch_evals.unwrap_or(0),
-        g.source_evals
+        scratch_evals, g.source_evals
     );
     Sample {
-        label: format!(
-            "from scratch (first {} of {})",
-            g.source_evals,
-            g.scratch_evals.unwrap_or(0)
-        ),
+        label: format!("from scratch (first {} of {scratch_evals})", g.source_evals),
         runs,
     }
 }
@@ -154,8 +149,8 @@ pub(super) fn finetune_section(
     let sets = &results.campaign.validate;
     summary_table(&samples, sets, &mut r.markdown);
     comparisons(&samples, sets, &mut r.markdown);
-    if let [_, scratch] = &mut samples[..] {
-        *scratch = prefix_stand_in(results, g, to, seeds, scratch, r);
+    if let (Some(evals), [_, scratch]) = (g.scratch_evals, &mut samples[..]) {
+        *scratch = prefix_stand_in(results, g, (to, evals), seeds, scratch, r);
     }
     if let [tuned, scratch] = &samples[..] {
         convergence_part(tuned, scratch, &mut r.markdown);
