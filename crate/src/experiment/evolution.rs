@@ -17,7 +17,7 @@ use super::run::{Best, GenerationRecord, RunFile, Timing};
 use super::seeds::{evaluation_seed, Purpose};
 use crate::controllers::ControllerKind;
 use crate::error::{Error, Result};
-use crate::genetics::{Candidate, Ga};
+use crate::genetics::{Candidate, Ga, GaState};
 use crate::simulation::{Shape, Terrain};
 use serde::{Deserialize, Serialize};
 
@@ -85,6 +85,28 @@ impl Evolution {
             ga,
             history: Vec::new(),
         })
+    }
+
+    /// A run continued from a GA state and the records of the generations before it (see
+    /// `checkpoint`). The configuration is the one the state was taken from.
+    pub(super) fn from_parts(
+        config: EvolutionConfig,
+        state: &GaState,
+        history: Vec<GenerationRecord>,
+    ) -> Result<Evolution> {
+        config.validate()?;
+        let ga_seed = evaluation_seed(config.seed, 0, 0, Purpose::Genetics);
+        let ga = Ga::from_state(config.ga.clone(), config.genome_len(), ga_seed, state)?;
+        Ok(Evolution {
+            config,
+            ga,
+            history,
+        })
+    }
+
+    /// The GA's exact state between generations (see `checkpoint`).
+    pub(super) fn ga_state(&self) -> Option<GaState> {
+        self.ga.state()
     }
 
     /// The jobs of the pending generation (the same until told); empty once the budget is spent.

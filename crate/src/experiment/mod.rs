@@ -3,6 +3,7 @@
 
 pub mod ablation;
 pub mod campaign;
+pub mod checkpoint;
 pub mod config;
 pub mod ensemble;
 pub mod episode;
@@ -16,6 +17,7 @@ pub mod trajectory;
 pub mod validation;
 
 pub use ablation::{ablate, AblationPoint, ABLATION_TERRAIN};
+pub use checkpoint::Checkpoint;
 pub use config::{EvolutionConfig, SourceRun, TrainingTerrain};
 pub use ensemble::{check_start_offset, gait_ensemble, Ensemble, ENSEMBLE_SHIFT};
 pub use episode::{steps_for, topology, Episode, GaitEpisode, Outcome, Policy};

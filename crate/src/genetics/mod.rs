@@ -12,5 +12,5 @@ pub mod operators;
 mod stats;
 
 pub use config::GaConfig;
-pub use ga::{Candidate, Ga};
+pub use ga::{Candidate, Ga, GaState};
 pub use stats::GenerationStats;

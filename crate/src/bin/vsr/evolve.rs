@@ -1,14 +1,16 @@
 //! `vsr evolve`: an evolutionary run from scratch, evaluated in parallel with rayon, written to
-//! a run file at the end. Also the runner shared with `vsr finetune`.
+//! a run file at the end. Also the runner shared with `vsr finetune`. While it runs it keeps a
+//! checkpoint next to the run file (`checkpoint`), so a run that is stopped continues where it
+//! was when the same command is given again.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
-use vsr::experiment::{
-    Evolution, EvolutionConfig, GenerationRecord, Job, RunFile, Timing, TrainingTerrain,
-};
+use vsr::experiment::{EvolutionConfig, GenerationRecord, Job, RunFile, Timing, TrainingTerrain};
+
+use crate::checkpoint::Checkpointer;
 use vsr::{Error, Result};
 
 /// Options shared by `vsr evolve` and `vsr finetune`.
@@ -36,6 +38,10 @@ pub struct RunOptions {
     /// Where to write the run file (written once, at the end, atomically).
     #[arg(long)]
     out: PathBuf,
+    /// Seconds between checkpoints (OUT.checkpoint, deleted at the end; the same command
+    /// continues a stopped run from it, bit for bit). 0: never write one.
+    #[arg(long, default_value_t = 60.0)]
+    checkpoint_every: f64,
 }
 
 /// Arguments of `vsr evolve`.
@@ -60,12 +66,16 @@ pub fn execute(mut config: EvolutionConfig, options: &RunOptions) -> Result<()> 
     config.seconds = options.seconds;
     config.terrain = TrainingTerrain::parse(&options.terrain)?;
     config.ga.population = options.population;
-    let mut evolution = Evolution::new(config)?;
     crate::runfile::check_writable(&options.out)?;
+    let mut checkpointer = Checkpointer::new(&options.out, options.checkpoint_every)?;
+    let mut evolution = checkpointer.start(config)?;
     let pool = thread_pool(options.threads)?;
     let threads = pool.current_num_threads();
     let start = Instant::now();
+    let earlier = evolution.history().last().map_or(0.0, |g| g.wall_seconds);
+    let clock = || earlier + start.elapsed().as_secs_f64();
     let bar = progress_bar(evolution.planned_evaluations());
+    bar.set_position(evolution.evaluations());
     let evaluate = |jobs: &[Job]| -> Vec<f64> {
         let fitness = |job: &Job| {
             let f = job.fitness();
@@ -74,15 +84,23 @@ pub fn execute(mut config: EvolutionConfig, options: &RunOptions) -> Result<()> 
         };
         pool.install(|| jobs.par_iter().map(fitness).collect())
     };
-    let report = |r: &GenerationRecord| bar.set_message(summary(r));
-    evolution.run(evaluate, report, || start.elapsed().as_secs_f64())?;
+    loop {
+        let jobs = evolution.next_batch();
+        if jobs.is_empty() {
+            break;
+        }
+        let fitness = evaluate(&jobs);
+        let record = evolution.tell(&fitness, clock())?;
+        bar.set_message(summary(&record));
+        checkpointer.after_generation(&evolution)?;
+    }
     bar.finish_and_clear();
-    let wall_seconds = start.elapsed().as_secs_f64();
     let run = evolution.run_file(Some(Timing {
         threads,
-        wall_seconds,
+        wall_seconds: clock(),
     }))?;
     crate::runfile::save(&options.out, &run)?;
+    checkpointer.finish()?;
     print_summary(&run, &options.out);
     Ok(())
 }

@@ -17,6 +17,8 @@ mod campaign_export;
 #[cfg(not(target_arch = "wasm32"))]
 mod campaign_run;
 #[cfg(not(target_arch = "wasm32"))]
+mod checkpoint;
+#[cfg(not(target_arch = "wasm32"))]
 mod cli;
 #[cfg(not(target_arch = "wasm32"))]
 mod ensemble;

@@ -1,0 +1,126 @@
+//! Checkpoints: an evolutionary run stopped between two generations, kept so that it can go on
+//! later exactly as if it had never stopped (the same run file, bit for bit, apart from the
+//! wall times). `vsr evolve` and `vsr finetune` write one next to their output while they run
+//! and delete it when the run file is written; a campaign interrupted mid-run resumes there.
+//!
+//! Top level: `format` ("vsr-checkpoint"), `version` (1), `config` (the run's
+//! [`EvolutionConfig`]), `generations` (the records so far) and `ga` ([`GaState`]: survivors,
+//! their fitness and the GA's position in its random stream, as bit patterns). Every evaluation
+//! seed derives from (run seed, generation, index), so nothing else is needed to continue.
+
+use super::config::EvolutionConfig;
+use super::evolution::Evolution;
+use super::run::GenerationRecord;
+use crate::error::{Error, Result};
+use crate::genetics::GaState;
+use serde::{Deserialize, Serialize};
+
+/// The value of the `format` field.
+pub const CHECKPOINT_FORMAT: &str = "vsr-checkpoint";
+/// The checkpoint version this code writes and reads.
+pub const CHECKPOINT_VERSION: u32 = 1;
+
+/// A run stopped between two generations; see the module doc.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Checkpoint {
+    /// Always [`CHECKPOINT_FORMAT`].
+    pub format: String,
+    /// Always [`CHECKPOINT_VERSION`].
+    pub version: u32,
+    /// The run's configuration.
+    pub config: EvolutionConfig,
+    /// Per-generation records so far, generation 0 first.
+    pub generations: Vec<GenerationRecord>,
+    /// The GA's exact state.
+    pub ga: GaState,
+}
+
+impl Checkpoint {
+    /// One line of JSON, ending with a newline.
+    pub fn to_json(&self) -> String {
+        let mut text = serde_json::to_string(self).unwrap_or_default();
+        text.push('\n');
+        text
+    }
+
+    /// Parses a checkpoint, checking its format, version and configuration.
+    pub fn from_json(text: &str) -> Result<Checkpoint> {
+        let value: serde_json::Value = serde_json::from_str(text)
+            .map_err(|e| Error::Input(format!("the checkpoint is not valid JSON: {e}")))?;
+        let format = value.get("format").and_then(|f| f.as_str());
+        if format != Some(CHECKPOINT_FORMAT) {
+            return Err(Error::Input(format!(
+                "this is not a vsr checkpoint: its \"format\" is not \"{CHECKPOINT_FORMAT}\""
+            )));
+        }
+        let version = value.get("version").and_then(|v| v.as_u64());
+        if version != Some(u64::from(CHECKPOINT_VERSION)) {
+            return Err(Error::Input(format!(
+                "checkpoint version {version:?} is not supported: this vsr reads version \
+                 {CHECKPOINT_VERSION}"
+            )));
+        }
+        let checkpoint: Checkpoint = serde_json::from_value(value)
+            .map_err(|e| Error::Input(format!("the checkpoint is malformed: {e}")))?;
+        checkpoint.config.validate()?;
+        if checkpoint.generations.len() != checkpoint.ga.generation as usize {
+            return Err(Error::Input(format!(
+                "the checkpoint is inconsistent: {} generation records for generation {}",
+                checkpoint.generations.len(),
+                checkpoint.ga.generation
+            )));
+        }
+        Ok(checkpoint)
+    }
+
+    /// Wall seconds the run had taken when the checkpoint was written.
+    pub fn wall_seconds(&self) -> f64 {
+        self.generations.last().map_or(0.0, |g| g.wall_seconds)
+    }
+}
+
+impl Evolution {
+    /// The checkpoint of the run so far; `None` before generation 0 is told or while a batch
+    /// is pending.
+    pub fn checkpoint(&self) -> Option<Checkpoint> {
+        Some(Checkpoint {
+            format: CHECKPOINT_FORMAT.to_string(),
+            version: CHECKPOINT_VERSION,
+            config: self.config().clone(),
+            generations: self.history().to_vec(),
+            ga: self.ga_state()?,
+        })
+    }
+
+    /// Continues the run `config` from `checkpoint`. Fails, with a message saying how they
+    /// differ, if the checkpoint belongs to another run.
+    pub fn resume(config: EvolutionConfig, checkpoint: Checkpoint) -> Result<Evolution> {
+        if checkpoint.config != config {
+            return Err(Error::Input(format!(
+                "the checkpoint belongs to another run ({}); this run is {}",
+                describe(&checkpoint.config),
+                describe(&config)
+            )));
+        }
+        Evolution::from_parts(config, &checkpoint.ga, checkpoint.generations)
+    }
+}
+
+/// A configuration in a few words, for messages.
+fn describe(c: &EvolutionConfig) -> String {
+    format!(
+        "{} on {}, terrain {}, seed {}, {} evaluations, population {}, {} s episodes{}",
+        c.controller,
+        c.shape.to_rows(),
+        String::from(c.terrain.clone()),
+        c.seed,
+        c.ga.budget_evals,
+        c.ga.population,
+        c.seconds,
+        if c.source.is_some() {
+            ", fine-tuning"
+        } else {
+            ""
+        }
+    )
+}

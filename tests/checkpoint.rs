@@ -1,0 +1,174 @@
+#![cfg(not(target_arch = "wasm32"))]
+//! Checkpoints: a run stopped after any generation, written to JSON, read back and continued
+//! gives the uninterrupted run's file bit for bit; `vsr evolve` continues from OUT.checkpoint
+//! and deletes it; a checkpoint of another run or a damaged one is refused with a message.
+
+use std::process::Command;
+
+use serde_json::{json, Value};
+use vsr::controllers::ControllerKind;
+use vsr::experiment::{Checkpoint, Evolution, EvolutionConfig, Job, RunFile};
+use vsr::simulation::Shape;
+
+/// Population 10, 50 evaluations (generation 0 and 2 more), 2-s episodes on hilly terrains.
+fn tiny(kind: ControllerKind, seed: u64) -> EvolutionConfig {
+    let mut config = EvolutionConfig::paper(Shape::parse("biped-4x3").unwrap(), kind, 50, seed);
+    config.ga.population = 10;
+    config.seconds = 2.0;
+    config
+}
+
+fn step(evolution: &mut Evolution) -> bool {
+    let jobs = evolution.next_batch();
+    if jobs.is_empty() {
+        return false;
+    }
+    let fitness: Vec<f64> = jobs.iter().map(Job::fitness).collect();
+    evolution.tell(&fitness, 0.0).unwrap();
+    true
+}
+
+/// The run of `config`, stopped after `stop_after` generations, checkpointed through JSON and
+/// continued (`None`: never stopped).
+fn run(config: EvolutionConfig, stop_after: Option<usize>) -> RunFile {
+    let mut evolution = Evolution::new(config.clone()).unwrap();
+    let mut told = 0;
+    while step(&mut evolution) {
+        told += 1;
+        if Some(told) == stop_after {
+            let text = evolution.checkpoint().unwrap().to_json();
+            let checkpoint = Checkpoint::from_json(&text).unwrap();
+            evolution = Evolution::resume(config.clone(), checkpoint).unwrap();
+        }
+    }
+    evolution.run_file(None).unwrap()
+}
+
+#[test]
+fn a_run_continued_from_any_checkpoint_is_the_uninterrupted_run() {
+    for kind in [ControllerKind::Attention, ControllerKind::SlowAttention] {
+        let whole = run(tiny(kind, 7), None);
+        assert_eq!(whole.generations.len(), 3);
+        for stop in 1..=2 {
+            assert_eq!(
+                run(tiny(kind, 7), Some(stop)),
+                whole,
+                "{kind} stopped after {stop}"
+            );
+        }
+    }
+}
+
+#[test]
+fn there_is_no_checkpoint_before_generation_0_is_told() {
+    let mut evolution = Evolution::new(tiny(ControllerKind::Mlp, 1)).unwrap();
+    assert!(evolution.checkpoint().is_none());
+    evolution.next_batch();
+    assert!(evolution.checkpoint().is_none(), "a batch is pending");
+}
+
+#[test]
+fn a_checkpoint_of_another_run_or_a_damaged_one_is_refused() {
+    let mut evolution = Evolution::new(tiny(ControllerKind::Mlp, 1)).unwrap();
+    step(&mut evolution);
+    let checkpoint = evolution.checkpoint().unwrap();
+    let err = Evolution::resume(tiny(ControllerKind::Mlp, 2), checkpoint.clone())
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("another run") && err.contains("seed 1"),
+        "{err}"
+    );
+
+    let edited = |edit: &Edit| {
+        let mut v: Value = serde_json::to_value(&checkpoint).unwrap();
+        edit(&mut v);
+        let text = v.to_string();
+        Checkpoint::from_json(&text)
+            .and_then(|c| Evolution::resume(tiny(ControllerKind::Mlp, 1), c))
+            .unwrap_err()
+            .to_string()
+    };
+    let cases: [(&Edit, &str); 4] = [
+        (&|v| v["format"] = json!("vsr-run"), "not a vsr checkpoint"),
+        (&|v| v["version"] = json!(9), "version"),
+        (
+            &|v| v["ga"]["genomes"].as_array_mut().unwrap().truncate(3),
+            "population of 10",
+        ),
+        (&|v| v["generations"] = json!([]), "inconsistent"),
+    ];
+    for (edit, expected) in cases {
+        let err = edited(edit);
+        assert!(err.contains(expected), "{expected}: {err}");
+    }
+    let err = edited(&|v| v["ga"]["genomes"][0][0] = json!(f32::NAN.to_bits()));
+    assert!(err.contains("non-finite"), "{err}");
+}
+
+/// An edit of a checkpoint's JSON.
+type Edit = dyn Fn(&mut Value);
+
+fn scratch(name: &str) -> String {
+    let dir = std::env::temp_dir().join(format!("vsr-checkpoint-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name).to_str().unwrap().to_string()
+}
+
+fn evolve(out: &str, seed: u64) -> std::process::Output {
+    let line = format!(
+        "evolve --shape biped-4x3 --controller attention --evals 50 --seed {seed} \
+         --population 10 --seconds 2 --threads 2 --out {out}"
+    );
+    Command::new(env!("CARGO_BIN_EXE_vsr"))
+        .args(line.split_whitespace())
+        .output()
+        .unwrap()
+}
+
+fn comparable(path: &str) -> Value {
+    let mut v: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    v["timing"] = Value::Null;
+    for g in v["generations"].as_array_mut().unwrap() {
+        g["wall_seconds"] = json!(0);
+    }
+    v
+}
+
+#[test]
+fn vsr_evolve_continues_from_its_checkpoint_and_deletes_it() {
+    let (whole, resumed) = (scratch("whole.json"), scratch("resumed.json"));
+    assert!(evolve(&whole, 5).status.success());
+
+    let mut evolution = Evolution::new(tiny(ControllerKind::Attention, 5)).unwrap();
+    step(&mut evolution);
+    let checkpoint_path = format!("{resumed}.checkpoint");
+    let text = evolution.checkpoint().unwrap().to_json();
+    std::fs::write(&checkpoint_path, text).unwrap();
+    let out = evolve(&resumed, 5);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    assert!(
+        stderr.contains("resuming from") && stderr.contains("generation 1"),
+        "{stderr}"
+    );
+    assert_eq!(comparable(&resumed), comparable(&whole));
+    assert!(!std::path::Path::new(&checkpoint_path).exists());
+
+    // Another run's checkpoint: exit 2, nothing written, the checkpoint kept.
+    let other = scratch("other.json");
+    std::fs::write(
+        format!("{other}.checkpoint"),
+        evolution.checkpoint().unwrap().to_json(),
+    )
+    .unwrap();
+    let out = evolve(&other, 6);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("another run") && stderr.contains("delete it"),
+        "{stderr}"
+    );
+    assert!(!std::path::Path::new(&other).exists());
+    assert!(std::path::Path::new(&format!("{other}.checkpoint")).exists());
+}
