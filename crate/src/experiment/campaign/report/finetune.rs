@@ -85,10 +85,11 @@ fn convergence_part(tuned: &Sample, scratch: &Sample, md: &mut String) {
     };
 }
 
-/// The from-scratch runs for the convergence table and Fig. 7. While none has finished, the target
-/// shape's source runs stand in when they exist: a run's draws derive from (seed, generation,
-/// index, purpose), never from its budget, so a `source_evals` run with seed s is the first
-/// generations of the `scratch_evals` run with seed s, bit for bit (`tests/evolution.rs`).
+/// The from-scratch runs for the convergence table and Fig. 7. While fewer of them have
+/// finished than of the target shape's source runs, the source runs stand in: a run's draws
+/// derive from (seed, generation, index, purpose), never from its budget, so a `source_evals`
+/// run with seed s is the first generations of the `scratch_evals` run with seed s, bit for bit
+/// (`tests/evolution.rs`). More seeds up to the source budget beat fewer seeds to the end.
 fn prefix_stand_in(
     results: &Results,
     g: &FinetuneGroup,
@@ -97,20 +98,20 @@ fn prefix_stand_in(
     scratch: &Sample,
     r: &mut Report,
 ) -> Sample {
-    if scratch.runs.iter().any(|d| d.run.is_some()) {
-        return scratch.clone();
-    }
     let spec = RunSpec::scratch(to, g.controller, g.source_evals, 0);
     let runs = results.seeds_of(&spec, seeds);
-    if runs.iter().all(|d| d.run.is_none()) {
+    let finished = scratch.runs.len();
+    if finished >= runs.len() {
         return scratch.clone();
     }
     let _ = writeln!(
         r.markdown,
-        "No from-scratch run of {} evaluations has finished: the convergence table and the \
-         figure use the {to} runs of {} evaluations with the same seeds, which are their first \
-         generations bit for bit.\n",
-        scratch_evals, g.source_evals
+        "{finished} of {} from-scratch runs of {scratch_evals} evaluations have finished: the \
+         convergence table and the figure use the {} {to} runs of {} evaluations with the same \
+         seeds instead, which are their first generations bit for bit.\n",
+        seeds.len(),
+        runs.len(),
+        g.source_evals
     );
     Sample {
         label: format!("from scratch (first {} of {scratch_evals})", g.source_evals),
