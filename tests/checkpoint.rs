@@ -7,7 +7,7 @@ use std::process::Command;
 
 use serde_json::{json, Value};
 use vsr::controllers::ControllerKind;
-use vsr::experiment::{Checkpoint, Evolution, EvolutionConfig, Job, RunFile};
+use vsr::experiment::{Checkpoint, Evolution, EvolutionConfig, Job, RunFile, SourceRun};
 use vsr::simulation::Shape;
 
 /// Population 10, 50 evaluations (generation 0 and 2 more), 2-s episodes on hilly terrains.
@@ -36,7 +36,7 @@ fn run(config: EvolutionConfig, stop_after: Option<usize>) -> RunFile {
     while step(&mut evolution) {
         told += 1;
         if Some(told) == stop_after {
-            let text = evolution.checkpoint().unwrap().to_json();
+            let text = evolution.checkpoint(None).unwrap().to_json().unwrap();
             let checkpoint = Checkpoint::from_json(&text).unwrap();
             evolution = Evolution::resume(config.clone(), checkpoint).unwrap();
         }
@@ -44,17 +44,40 @@ fn run(config: EvolutionConfig, stop_after: Option<usize>) -> RunFile {
     evolution.run_file(None).unwrap()
 }
 
+/// SPEC 10's fine-tuning of a fixed biped-4x3 attention genome on a small comb (1111-1010), sized as
+/// `tiny`.
+fn tiny_finetune(seed: u64) -> EvolutionConfig {
+    let genome = (0..73)
+        .map(|i| ((i * 37 % 101) as f32 / 50.0) - 1.0)
+        .collect();
+    let source = SourceRun {
+        shape: Shape::parse("biped-4x3").unwrap(),
+        controller: ControllerKind::Attention,
+        seed: 1,
+        budget_evals: 100,
+        fitness: 1.0,
+        genome,
+    };
+    let comb = Shape::parse("1111-1010").unwrap();
+    let mut config = EvolutionConfig::finetune(source, comb, 50, seed);
+    config.ga.population = 10;
+    config.seconds = 2.0;
+    config
+}
+
 #[test]
 fn a_run_continued_from_any_checkpoint_is_the_uninterrupted_run() {
-    for kind in [ControllerKind::Attention, ControllerKind::SlowAttention] {
-        let whole = run(tiny(kind, 7), None);
+    let configs = [
+        tiny(ControllerKind::Attention, 7),
+        tiny(ControllerKind::SlowAttention, 7),
+        tiny_finetune(7),
+    ];
+    for config in configs {
+        let whole = run(config.clone(), None);
         assert_eq!(whole.generations.len(), 3);
         for stop in 1..=2 {
-            assert_eq!(
-                run(tiny(kind, 7), Some(stop)),
-                whole,
-                "{kind} stopped after {stop}"
-            );
+            let what = format!("{} stopped after {stop}", config.controller);
+            assert_eq!(run(config.clone(), Some(stop)), whole, "{what}");
         }
     }
 }
@@ -62,16 +85,16 @@ fn a_run_continued_from_any_checkpoint_is_the_uninterrupted_run() {
 #[test]
 fn there_is_no_checkpoint_before_generation_0_is_told() {
     let mut evolution = Evolution::new(tiny(ControllerKind::Mlp, 1)).unwrap();
-    assert!(evolution.checkpoint().is_none());
+    assert!(evolution.checkpoint(None).is_none());
     evolution.next_batch();
-    assert!(evolution.checkpoint().is_none(), "a batch is pending");
+    assert!(evolution.checkpoint(None).is_none(), "a batch is pending");
 }
 
 #[test]
 fn a_checkpoint_of_another_run_or_a_damaged_one_is_refused() {
     let mut evolution = Evolution::new(tiny(ControllerKind::Mlp, 1)).unwrap();
     step(&mut evolution);
-    let checkpoint = evolution.checkpoint().unwrap();
+    let checkpoint = evolution.checkpoint(None).unwrap();
     let err = Evolution::resume(tiny(ControllerKind::Mlp, 2), checkpoint.clone())
         .unwrap_err()
         .to_string();
@@ -143,7 +166,7 @@ fn vsr_evolve_continues_from_its_checkpoint_and_deletes_it() {
     let mut evolution = Evolution::new(tiny(ControllerKind::Attention, 5)).unwrap();
     step(&mut evolution);
     let checkpoint_path = format!("{resumed}.checkpoint");
-    let text = evolution.checkpoint().unwrap().to_json();
+    let text = evolution.checkpoint(None).unwrap().to_json().unwrap();
     std::fs::write(&checkpoint_path, text).unwrap();
     let out = evolve(&resumed, 5);
     let stderr = String::from_utf8_lossy(&out.stderr);
@@ -159,7 +182,7 @@ fn vsr_evolve_continues_from_its_checkpoint_and_deletes_it() {
     let other = scratch("other.json");
     std::fs::write(
         format!("{other}.checkpoint"),
-        evolution.checkpoint().unwrap().to_json(),
+        evolution.checkpoint(None).unwrap().to_json().unwrap(),
     )
     .unwrap();
     let out = evolve(&other, 6);
@@ -171,4 +194,55 @@ fn vsr_evolve_continues_from_its_checkpoint_and_deletes_it() {
     );
     assert!(!std::path::Path::new(&other).exists());
     assert!(std::path::Path::new(&format!("{other}.checkpoint")).exists());
+}
+
+/// A real stop: `vsr evolve` killed once its first checkpoint is on disk, then given again.
+#[test]
+fn a_killed_vsr_evolve_continues_to_the_uninterrupted_run_file() {
+    let (whole, resumed) = (scratch("whole-long.json"), scratch("killed.json"));
+    let line = |out: &str, every: &str| {
+        format!(
+            "evolve --shape biped-4x3 --controller mlp --evals 2000 --seed 9 --population 10 \
+             --seconds 3 --threads 1 --checkpoint-every {every} --out {out}"
+        )
+    };
+    let vsr = || Command::new(env!("CARGO_BIN_EXE_vsr"));
+    let mut child = vsr()
+        .args(line(&resumed, "0.000001").split_whitespace())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let checkpoint = std::path::PathBuf::from(format!("{resumed}.checkpoint"));
+    let start = std::time::Instant::now();
+    while !checkpoint.exists() {
+        assert!(
+            child.try_wait().unwrap().is_none(),
+            "the run ended before a checkpoint"
+        );
+        assert!(start.elapsed().as_secs() < 60, "no checkpoint after 60 s");
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+    child.kill().unwrap();
+    child.wait().unwrap();
+    assert!(
+        !std::path::Path::new(&resumed).exists(),
+        "killed before its run file"
+    );
+
+    let out = vsr()
+        .args(line(&resumed, "60").split_whitespace())
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        out.status.success() && stderr.contains("resuming from"),
+        "{stderr}"
+    );
+    let out = vsr()
+        .args(line(&whole, "0").split_whitespace())
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    assert_eq!(comparable(&resumed), comparable(&whole));
+    assert!(!checkpoint.exists());
 }

@@ -33,7 +33,7 @@ fn run_on(config: EvolutionConfig, threads: usize) -> RunFile {
     let start = std::time::Instant::now();
     let evaluate = |jobs: &[Job]| jobs.par_iter().map(Job::fitness).collect();
     let clock = || start.elapsed().as_secs_f64();
-    pool.install(|| evolution.run(evaluate, |_| {}, clock))
+    pool.install(|| evolution.run(evaluate, |_| Ok(()), clock))
         .unwrap();
     let mut run = evolution.run_file(None).unwrap();
     run.generations

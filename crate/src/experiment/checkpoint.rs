@@ -27,6 +27,11 @@ pub struct Checkpoint {
     pub format: String,
     /// Always [`CHECKPOINT_VERSION`].
     pub version: u32,
+    /// The code that wrote it (`vsr --version`), when the writer knows: a run continued by
+    /// other code is bit-identical to an uninterrupted one only if nothing that shapes a run
+    /// changed between the two.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub code: Option<String>,
     /// The run's configuration.
     pub config: EvolutionConfig,
     /// Per-generation records so far, generation 0 first.
@@ -37,10 +42,11 @@ pub struct Checkpoint {
 
 impl Checkpoint {
     /// One line of JSON, ending with a newline.
-    pub fn to_json(&self) -> String {
-        let mut text = serde_json::to_string(self).unwrap_or_default();
+    pub fn to_json(&self) -> Result<String> {
+        let mut text = serde_json::to_string(self)
+            .map_err(|e| Error::Input(format!("cannot encode the checkpoint: {e}")))?;
         text.push('\n');
-        text
+        Ok(text)
     }
 
     /// Parses a checkpoint, checking its format, version and configuration.
@@ -72,20 +78,16 @@ impl Checkpoint {
         }
         Ok(checkpoint)
     }
-
-    /// Wall seconds the run had taken when the checkpoint was written.
-    pub fn wall_seconds(&self) -> f64 {
-        self.generations.last().map_or(0.0, |g| g.wall_seconds)
-    }
 }
 
 impl Evolution {
-    /// The checkpoint of the run so far; `None` before generation 0 is told or while a batch
-    /// is pending.
-    pub fn checkpoint(&self) -> Option<Checkpoint> {
+    /// The checkpoint of the run so far, written by `code`; `None` before generation 0 is
+    /// told or while a batch is pending.
+    pub fn checkpoint(&self, code: Option<&str>) -> Option<Checkpoint> {
         Some(Checkpoint {
             format: CHECKPOINT_FORMAT.to_string(),
             version: CHECKPOINT_VERSION,
+            code: code.map(str::to_string),
             config: self.config().clone(),
             generations: self.history().to_vec(),
             ga: self.ga_state()?,

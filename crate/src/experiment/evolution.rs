@@ -21,6 +21,11 @@ use crate::genetics::{Candidate, Ga, GaState};
 use crate::simulation::{Shape, Terrain};
 use serde::{Deserialize, Serialize};
 
+/// The seed of a run's GA stream.
+fn ga_seed(config: &EvolutionConfig) -> u64 {
+    evaluation_seed(config.seed, 0, 0, Purpose::Genetics)
+}
+
 /// One evaluation to perform, self-contained.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Job {
@@ -72,7 +77,7 @@ impl Evolution {
     /// (SPEC 10, see [`initial_population`]). Fails on an invalid configuration.
     pub fn new(config: EvolutionConfig) -> Result<Evolution> {
         config.validate()?;
-        let ga_seed = evaluation_seed(config.seed, 0, 0, Purpose::Genetics);
+        let ga_seed = ga_seed(&config);
         let ga = match &config.source {
             None => Ga::new(config.ga.clone(), config.genome_len(), ga_seed)?,
             Some(source) => {
@@ -95,8 +100,12 @@ impl Evolution {
         history: Vec<GenerationRecord>,
     ) -> Result<Evolution> {
         config.validate()?;
-        let ga_seed = evaluation_seed(config.seed, 0, 0, Purpose::Genetics);
-        let ga = Ga::from_state(config.ga.clone(), config.genome_len(), ga_seed, state)?;
+        let ga = Ga::from_state(
+            config.ga.clone(),
+            config.genome_len(),
+            ga_seed(&config),
+            state,
+        )?;
         Ok(Evolution {
             config,
             ga,
@@ -142,12 +151,13 @@ impl Evolution {
     }
 
     /// Runs to the end of the budget: `evaluate_batch` returns one fitness per job, in order;
-    /// `on_generation` sees each generation's record; `clock` gives the wall seconds since
-    /// the start (return 0.0 where there is no clock).
+    /// `on_generation` sees the run after each generation (its record is the last of
+    /// `history()`; a caller may checkpoint it there) and may stop the run with an error;
+    /// `clock` gives the wall seconds since the start (return 0.0 where there is no clock).
     pub fn run(
         &mut self,
         mut evaluate_batch: impl FnMut(&[Job]) -> Vec<f64>,
-        mut on_generation: impl FnMut(&GenerationRecord),
+        mut on_generation: impl FnMut(&Evolution) -> Result<()>,
         mut clock: impl FnMut() -> f64,
     ) -> Result<()> {
         loop {
@@ -156,8 +166,8 @@ impl Evolution {
                 return Ok(());
             }
             let fitness = evaluate_batch(&jobs);
-            let record = self.tell(&fitness, clock())?;
-            on_generation(&record);
+            self.tell(&fitness, clock())?;
+            on_generation(self)?;
         }
     }
 

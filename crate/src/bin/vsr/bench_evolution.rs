@@ -42,7 +42,7 @@ fn time_evolution(
     pool.install(|| {
         evolution.run(
             |jobs| jobs.par_iter().map(|j| j.fitness()).collect(),
-            |_| {},
+            |_| Ok(()),
             || 0.0,
         )
     })?;

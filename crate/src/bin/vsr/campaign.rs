@@ -82,7 +82,8 @@ pub struct PlanArgs {
 #[derive(clap::Args, Debug, Clone)]
 pub struct Only {
     /// Only the jobs whose output file name contains TEXT (repeatable, e.g. `--only comb-14x2`,
-    /// `--only to-comb-7x2`), with every job they need.
+    /// `--only to-comb-7x2`), with every job they need. A plain substring: `mlp-comm` also
+    /// matches `mlp-comm-latched`.
     #[arg(long, value_name = "TEXT")]
     only: Vec<String>,
 }

@@ -10,6 +10,9 @@ use std::time::Instant;
 use vsr::experiment::{Checkpoint, Evolution, EvolutionConfig};
 use vsr::{Error, Result};
 
+/// The code writing and reading checkpoints, as `vsr --version` prints it.
+const CODE: &str = env!("VSR_VERSION");
+
 /// Writes a run's checkpoints and cleans up after it.
 pub struct Checkpointer {
     path: PathBuf,
@@ -49,10 +52,10 @@ impl Checkpointer {
             }
         };
         let resumed = Checkpoint::from_json(&text).and_then(|c| {
-            let at = (c.ga.generation, c.ga.evaluations);
+            let at = (c.ga.generation, c.ga.evaluations, c.code.clone());
             Evolution::resume(config, c).map(|e| (e, at))
         });
-        let (evolution, (generation, evaluations)) = resumed.map_err(|e| {
+        let (evolution, (generation, evaluations, code)) = resumed.map_err(|e| {
             Error::Input(format!(
                 "{}: {e}; delete it to start the run afresh",
                 self.path.display()
@@ -62,19 +65,34 @@ impl Checkpointer {
             "resuming from {} (generation {generation}, {evaluations} evaluations done)",
             self.path.display()
         );
+        if code.as_deref() != Some(CODE) {
+            eprintln!(
+                "vsr: note: the checkpoint was written by vsr {}, this is vsr {CODE}: the run \
+                 is the uninterrupted run bit for bit only if nothing that shapes a run \
+                 (simulator, controllers, GA) changed in between",
+                code.as_deref().unwrap_or("(unknown version)")
+            );
+        }
         Ok(evolution)
     }
 
-    /// Writes the checkpoint if `every_seconds` have passed since the last one.
-    pub fn after_generation(&mut self, evolution: &Evolution) -> Result<()> {
+    /// Writes the checkpoint if `every_seconds` have passed since the last one. A checkpoint
+    /// that cannot be written is a warning, not the end of the run: the run file is what
+    /// counts, the checkpoint only saves time.
+    pub fn after_generation(&mut self, evolution: &Evolution) {
         let due = self.every_seconds > 0.0
             && self.last.elapsed().as_secs_f64() >= self.every_seconds
             && !evolution.is_done();
-        if let (true, Some(checkpoint)) = (due, evolution.checkpoint()) {
-            crate::atomic::write(&self.path, checkpoint.to_json().as_bytes(), "checkpoint")?;
-            self.last = Instant::now();
+        let Some(checkpoint) = evolution.checkpoint(Some(CODE)).filter(|_| due) else {
+            return;
+        };
+        let written = checkpoint
+            .to_json()
+            .and_then(|text| crate::atomic::write(&self.path, text.as_bytes(), "checkpoint"));
+        if let Err(e) = written {
+            eprintln!("vsr: warning: {e}; the run goes on without it");
         }
-        Ok(())
+        self.last = Instant::now();
     }
 
     /// Deletes the checkpoint once the run file is written.

@@ -8,7 +8,9 @@ use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
-use vsr::experiment::{EvolutionConfig, GenerationRecord, Job, RunFile, Timing, TrainingTerrain};
+use vsr::experiment::{
+    Evolution, EvolutionConfig, GenerationRecord, Job, RunFile, Timing, TrainingTerrain,
+};
 
 use crate::checkpoint::Checkpointer;
 use vsr::{Error, Result};
@@ -84,16 +86,14 @@ pub fn execute(mut config: EvolutionConfig, options: &RunOptions) -> Result<()> 
         };
         pool.install(|| jobs.par_iter().map(fitness).collect())
     };
-    loop {
-        let jobs = evolution.next_batch();
-        if jobs.is_empty() {
-            break;
+    let after_generation = |e: &Evolution| {
+        if let Some(record) = e.history().last() {
+            bar.set_message(summary(record));
         }
-        let fitness = evaluate(&jobs);
-        let record = evolution.tell(&fitness, clock())?;
-        bar.set_message(summary(&record));
-        checkpointer.after_generation(&evolution)?;
-    }
+        checkpointer.after_generation(e);
+        Ok(())
+    };
+    evolution.run(evaluate, after_generation, clock)?;
     bar.finish_and_clear();
     let run = evolution.run_file(Some(Timing {
         threads,

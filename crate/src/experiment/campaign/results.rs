@@ -32,12 +32,15 @@ impl RunData {
 
     /// The best fitness of the last generation done within the first `evals` evaluations
     /// (the measure `final_best` gives at the end: the curve of Fig. 3 and 7 read at
-    /// `evals`), if the run exists and had done a generation by then.
+    /// `evals`), if the run exists, had done a generation by then and went on that far (a
+    /// run that stopped earlier says nothing about `evals`).
     pub fn best_at(&self, evals: u64) -> Option<f64> {
-        let done = self.run.as_ref()?.generations.iter();
-        done.take_while(|g| g.evaluations <= evals)
-            .last()
-            .map(|g| g.best)
+        let generations = &self.run.as_ref()?.generations;
+        if generations.last()?.evaluations < evals {
+            return None;
+        }
+        let done = generations.iter().take_while(|g| g.evaluations <= evals);
+        done.last().map(|g| g.best)
     }
 
     /// Evaluations done by the last generation, if the run exists.

@@ -98,6 +98,10 @@ fn prefix_stand_in(
     scratch: &Sample,
     r: &mut Report,
 ) -> Sample {
+    // Only a shorter run that covers the fine-tuning budget can stand in.
+    if !(g.evals <= g.source_evals && g.source_evals < scratch_evals) {
+        return scratch.clone();
+    }
     let spec = RunSpec::scratch(to, g.controller, g.source_evals, 0);
     let runs = results.seeds_of(&spec, seeds);
     let finished = scratch.runs.len();
