@@ -1,5 +1,5 @@
 //! Embeds the version of the code being built as `VSR_VERSION`: the crate version and the git
-//! commit (`-dirty` with uncommitted changes), e.g. `0.1.0 (git 5436b58c1a2b)`; outside a git
+//! commit (`-dirty` with uncommitted changes to `crate/`, `Cargo.toml` or `Cargo.lock`), e.g. `0.1.0 (git 5436b58c1a2b)`; outside a git
 //! checkout of this package just the crate version, or whatever the `VSR_VERSION` environment
 //! variable says (for builds from a source archive). `vsr --version` prints it, `vsr campaign
 //! export` and checkpoints record it, so provenance names the code that ran, not whatever
@@ -44,10 +44,14 @@ fn commit() -> Option<String> {
             }
         }
     }
-    git(
-        &manifest,
-        &["describe", "--always", "--dirty", "--abbrev=12"],
-    )
+    let commit = git(&manifest, &["describe", "--always", "--abbrev=12"])?;
+    // Dirty: uncommitted changes to what the binary is built from (not to study data, say).
+    let built_from = ["crate", "Cargo.toml", "Cargo.lock"];
+    let status = [&["status", "--porcelain", "--"][..], &built_from[..]].concat();
+    Some(match git(&manifest, &status) {
+        Some(_) => format!("{commit}-dirty"),
+        None => commit,
+    })
 }
 
 /// The trimmed output of a successful git command run in `dir`.
