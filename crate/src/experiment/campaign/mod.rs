@@ -6,12 +6,14 @@
 pub mod export;
 pub mod figures;
 pub mod file;
+pub mod job;
 pub mod merge;
 pub mod plan;
 pub mod report;
 pub mod results;
 
 pub use file::Campaign;
-pub use plan::{plan, runs, select, Job, RunSpec};
+pub use job::{select, Job};
+pub use plan::{plan, runs, RunSpec};
 pub use report::{report, Report};
 pub use results::{Results, RunData};
