@@ -246,3 +246,68 @@ fn a_killed_vsr_evolve_continues_to_the_uninterrupted_run_file() {
     assert_eq!(comparable(&resumed), comparable(&whole));
     assert!(!checkpoint.exists());
 }
+
+/// `vsr evolve` with `--seed 5` (see `evolve`) and extra arguments.
+fn evolve_with(out: &str, evals: u32, extra: &str) -> std::process::Output {
+    let line = format!(
+        "evolve --shape biped-4x3 --controller attention --evals {evals} --seed 5 \
+         --population 10 --seconds 2 --threads 2 --out {out} {extra}"
+    );
+    Command::new(env!("CARGO_BIN_EXE_vsr"))
+        .args(line.split_whitespace())
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn a_longer_run_continues_a_shorter_runs_kept_checkpoint_bit_for_bit() {
+    let (short, long, whole) = (
+        scratch("s30.json"),
+        scratch("l50.json"),
+        scratch("w50.json"),
+    );
+    assert!(evolve_with(&short, 30, "--keep-checkpoint")
+        .status
+        .success());
+    let kept = format!("{short}.checkpoint");
+    assert!(
+        std::path::Path::new(&kept).exists(),
+        "the final checkpoint is kept"
+    );
+    let out = evolve_with(&long, 50, &format!("--continue {kept}"));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        out.status.success() && stderr.contains("generation 2"),
+        "{stderr}"
+    );
+    assert!(evolve_with(&whole, 50, "").status.success());
+    assert_eq!(comparable(&long), comparable(&whole));
+    let gens = |path: &str| comparable(path)["generations"].as_array().unwrap().clone();
+    assert_eq!(gens(&short)[..], gens(&whole)[..2]);
+
+    // A missing --continue file: a note, and the run from generation 0.
+    let fresh = scratch("f50.json");
+    let out = evolve_with(
+        &fresh,
+        50,
+        &format!("--continue {}", scratch("none.checkpoint")),
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        out.status.success() && stderr.contains("does not exist"),
+        "{stderr}"
+    );
+    assert_eq!(comparable(&fresh), comparable(&whole));
+
+    // A checkpoint the run never reaches (past its budget): exit 2, nothing written.
+    let longer = scratch("k50.json");
+    assert!(evolve_with(&longer, 50, "--keep-checkpoint")
+        .status
+        .success());
+    let past = scratch("p30.json");
+    let out = evolve_with(&past, 30, &format!("--continue {longer}.checkpoint"));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("past this run's budget"), "{stderr}");
+    assert!(!std::path::Path::new(&past).exists());
+}

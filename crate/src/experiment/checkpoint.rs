@@ -1,7 +1,8 @@
 //! Checkpoints: an evolutionary run stopped between two generations, kept so that it can go on
 //! later exactly as if it had never stopped (the same run file, bit for bit, apart from the
 //! wall times). `vsr evolve` and `vsr finetune` write one next to their output while they run
-//! and delete it when the run file is written; a campaign interrupted mid-run resumes there.
+//! and delete it when the run file is written (or keep the final one, so that a run with a
+//! larger budget continues it); a campaign interrupted mid-run resumes there.
 //!
 //! Top level: `format` ("vsr-checkpoint"), `version` (1), `config` (the run's
 //! [`EvolutionConfig`]), `generations` (the records so far) and `ga` ([`GaState`]: survivors,
@@ -94,14 +95,29 @@ impl Evolution {
         })
     }
 
-    /// Continues the run `config` from `checkpoint`. Fails, with a message saying how they
-    /// differ, if the checkpoint belongs to another run.
+    /// Continues the run `config` from `checkpoint`: a checkpoint of the same run, or of a run
+    /// that differs only in its budget and whose state this run passes through on its way
+    /// (a run's draws never depend on its budget, so a 20,000-evaluation run's final state is
+    /// the 30,000-evaluation run's state after the same generation, bit for bit). Fails, with
+    /// a message saying how they differ, otherwise.
     pub fn resume(config: EvolutionConfig, checkpoint: Checkpoint) -> Result<Evolution> {
-        if checkpoint.config != config {
+        let mut same_budget = checkpoint.config.clone();
+        same_budget.ga.budget_evals = config.ga.budget_evals;
+        if same_budget != config {
             return Err(Error::Input(format!(
                 "the checkpoint belongs to another run ({}); this run is {}",
                 describe(&checkpoint.config),
                 describe(&config)
+            )));
+        }
+        // The run reaches the state if it was not done before its last generation.
+        let generations = &checkpoint.generations;
+        let before_last = generations.len().checked_sub(2).map(|i| &generations[i]);
+        if let Some(g) = before_last.filter(|g| g.evaluations >= config.ga.budget_evals) {
+            return Err(Error::Input(format!(
+                "the checkpoint is past this run's budget: this run of {} evaluations ends \
+                 after generation {} ({} evaluations), the checkpoint is at generation {}",
+                config.ga.budget_evals, g.generation, g.evaluations, checkpoint.ga.generation
             )));
         }
         Evolution::from_parts(config, &checkpoint.ga, checkpoint.generations)

@@ -1,7 +1,8 @@
 //! The checkpoint file of a running `vsr evolve` / `vsr finetune`: `OUT.checkpoint` next to the
 //! run file `OUT`, written atomically between generations at most every `--checkpoint-every`
 //! seconds, read at the start (the run continues from it, bit for bit) and deleted once the
-//! run file is written. See `vsr::experiment::checkpoint`.
+//! run file is written, or kept with the final state (`--keep-checkpoint`) so that a run with
+//! a larger budget can start from it (`--continue`). See `vsr::experiment::checkpoint`.
 
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -37,43 +38,27 @@ impl Checkpointer {
         })
     }
 
-    /// The run `config` from its checkpoint if there is one, else from the start. A
-    /// checkpoint of another run, or a damaged one, is an error naming the file (nothing is
-    /// deleted: the user decides).
-    pub fn start(&self, config: EvolutionConfig) -> Result<Evolution> {
-        let text = match fs::read_to_string(&self.path) {
-            Ok(text) => text,
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Evolution::new(config),
-            Err(e) => {
-                return Err(Error::Io(format!(
-                    "cannot read checkpoint {}: {e}",
-                    self.path.display()
-                )))
-            }
-        };
-        let resumed = Checkpoint::from_json(&text).and_then(|c| {
-            let at = (c.ga.generation, c.ga.evaluations, c.code.clone());
-            Evolution::resume(config, c).map(|e| (e, at))
-        });
-        let (evolution, (generation, evaluations, code)) = resumed.map_err(|e| {
-            Error::Input(format!(
-                "{}: {e}; delete it to start the run afresh",
-                self.path.display()
-            ))
-        })?;
-        eprintln!(
-            "resuming from {} (generation {generation}, {evaluations} evaluations done)",
-            self.path.display()
-        );
-        if code.as_deref() != Some(CODE) {
-            eprintln!(
-                "vsr: note: the checkpoint was written by vsr {}, this is vsr {CODE}: the run \
-                 is the uninterrupted run bit for bit only if nothing that shapes a run \
-                 (simulator, controllers, GA) changed in between",
-                code.as_deref().unwrap_or("(unknown version)")
-            );
+    /// The run `config` from its checkpoint if there is one; else from `earlier` (the final
+    /// checkpoint of a run with a smaller budget, `--continue`) if that exists; else from the
+    /// start. A checkpoint of another run, or a damaged one, is an error naming the file
+    /// (nothing is deleted: the user decides).
+    pub fn start(&self, config: EvolutionConfig, earlier: Option<&Path>) -> Result<Evolution> {
+        if let Some(evolution) = resume_from(&self.path, &config)? {
+            return Ok(evolution);
         }
-        Ok(evolution)
+        let Some(earlier) = earlier else {
+            return Evolution::new(config);
+        };
+        match resume_from(earlier, &config)? {
+            Some(evolution) => Ok(evolution),
+            None => {
+                eprintln!(
+                    "vsr: note: {} does not exist: the run starts from generation 0",
+                    earlier.display()
+                );
+                Evolution::new(config)
+            }
+        }
     }
 
     /// Writes the checkpoint if `every_seconds` have passed since the last one. A checkpoint
@@ -95,8 +80,16 @@ impl Checkpointer {
         self.last = Instant::now();
     }
 
-    /// Deletes the checkpoint once the run file is written.
-    pub fn finish(&self) -> Result<()> {
+    /// Once the run file is written: keeps the final checkpoint (`keep`: a run with a larger
+    /// budget can continue this one) or deletes it.
+    pub fn finish(&self, evolution: &Evolution, keep: bool) -> Result<()> {
+        if keep {
+            let checkpoint = evolution.checkpoint(Some(CODE)).ok_or_else(|| {
+                Error::Input("the run has no generation to keep a checkpoint of".into())
+            })?;
+            let text = checkpoint.to_json()?;
+            return crate::atomic::write(&self.path, text.as_bytes(), "checkpoint");
+        }
         match fs::remove_file(&self.path) {
             Ok(()) => Ok(()),
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(()),
@@ -106,4 +99,41 @@ impl Checkpointer {
             ))),
         }
     }
+}
+
+/// The run `config` continued from the checkpoint at `path`; `None` if there is no such file.
+fn resume_from(path: &Path, config: &EvolutionConfig) -> Result<Option<Evolution>> {
+    let text = match fs::read_to_string(path) {
+        Ok(text) => text,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
+        Err(e) => {
+            return Err(Error::Io(format!(
+                "cannot read checkpoint {}: {e}",
+                path.display()
+            )))
+        }
+    };
+    let resumed = Checkpoint::from_json(&text).and_then(|c| {
+        let at = (c.ga.generation, c.ga.evaluations, c.code.clone());
+        Evolution::resume(config.clone(), c).map(|e| (e, at))
+    });
+    let (evolution, (generation, evaluations, code)) = resumed.map_err(|e| {
+        Error::Input(format!(
+            "{}: {e}; delete it to start the run afresh",
+            path.display()
+        ))
+    })?;
+    eprintln!(
+        "resuming from {} (generation {generation}, {evaluations} evaluations done)",
+        path.display()
+    );
+    if code.as_deref() != Some(CODE) {
+        eprintln!(
+            "vsr: note: the checkpoint was written by vsr {}, this is vsr {CODE}: the run is \
+             the uninterrupted run bit for bit only if nothing that shapes a run (simulator, \
+             controllers, GA) changed in between",
+            code.as_deref().unwrap_or("(unknown version)")
+        );
+    }
+    Ok(Some(evolution))
 }

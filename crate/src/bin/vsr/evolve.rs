@@ -44,6 +44,15 @@ pub struct RunOptions {
     /// continues a stopped run from it, bit for bit). 0: never write one.
     #[arg(long, default_value_t = 60.0)]
     checkpoint_every: f64,
+    /// Keep OUT.checkpoint at the end, holding the final state, so that a run with a larger
+    /// budget can --continue this one.
+    #[arg(long)]
+    keep_checkpoint: bool,
+    /// Start from the final checkpoint of the same run with a smaller budget (kept with
+    /// --keep-checkpoint): the result is the run from generation 0, bit for bit. A missing
+    /// file is a note and the run starts from generation 0.
+    #[arg(long, value_name = "CHECKPOINT")]
+    r#continue: Option<PathBuf>,
 }
 
 /// Arguments of `vsr evolve`.
@@ -70,7 +79,7 @@ pub fn execute(mut config: EvolutionConfig, options: &RunOptions) -> Result<()> 
     config.ga.population = options.population;
     crate::runfile::check_writable(&options.out)?;
     let mut checkpointer = Checkpointer::new(&options.out, options.checkpoint_every)?;
-    let mut evolution = checkpointer.start(config)?;
+    let mut evolution = checkpointer.start(config, options.r#continue.as_deref())?;
     let pool = thread_pool(options.threads)?;
     let threads = pool.current_num_threads();
     let start = Instant::now();
@@ -100,7 +109,7 @@ pub fn execute(mut config: EvolutionConfig, options: &RunOptions) -> Result<()> 
         wall_seconds: clock(),
     }))?;
     crate::runfile::save(&options.out, &run)?;
-    checkpointer.finish()?;
+    checkpointer.finish(&evolution, options.keep_checkpoint)?;
     print_summary(&run, &options.out);
     Ok(())
 }

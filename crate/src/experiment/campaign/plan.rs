@@ -7,10 +7,14 @@
 //! - `validation/STEM.SET.json`: `vsr validate --json` of a run's best on a set;
 //! - `ablation/STEM.json`: `vsr ablate --json` of a run's best.
 //!
-//! Stages: 1 = runs from scratch; 2 = fine-tuning runs (each needs its source run) and the
-//! assessments of stage-1 runs; 3 = the assessments of fine-tuning runs. A job needs only
-//! files of earlier stages, so running stage after stage respects every dependency. A run
-//! listed twice (the same shape, controller, budget and seed in two groups) is one job.
+//! Stages: 1 = runs from scratch; 2 = fine-tuning runs (each needs its source run), runs
+//! that continue a shorter run and the assessments of stage-1 runs; 3 = the assessments of
+//! stage-2 runs. A job needs only files of earlier stages, so running stage after stage
+//! respects every dependency. A run listed twice (the same shape, controller, budget and seed
+//! in two groups) is one job. A run from scratch with the same shape, controller and seed as a
+//! shorter one (RQ2's 20,000-evaluation sources and 30,000-evaluation runs) continues it: the
+//! shorter run keeps its final checkpoint (`--keep-checkpoint`) and the longer starts there
+//! (`--continue`), the same run file bit for bit for a third of the work.
 
 use super::file::Campaign;
 pub use super::job::Job;
@@ -147,10 +151,17 @@ fn ablated(c: &Campaign, r: &RunSpec) -> bool {
 /// The job list of campaign `c` with outputs under `out`, in dependency order.
 pub fn plan(c: &Campaign, out: &Path) -> Vec<Job> {
     let mut jobs = Vec::new();
-    for r in runs(c) {
+    let all = runs(c);
+    for r in &all {
         let run_path = r.run_path(out);
-        let stage = if r.source.is_some() { 2 } else { 1 };
-        jobs.push(run_job(c, &r, out, stage));
+        let prefix = prefix_of(&all, r);
+        let stage = if r.source.is_some() || prefix.is_some() {
+            2
+        } else {
+            1
+        };
+        let keep = all.iter().any(|q| prefix_of(&all, q) == Some(r));
+        jobs.push(run_job(c, r, out, stage, (prefix, keep)));
         let genome = run_path.display().to_string();
         let seconds = c.seconds.to_string();
         for &set in &c.validate {
@@ -167,7 +178,7 @@ pub fn plan(c: &Campaign, out: &Path) -> Vec<Job> {
                 threaded: false,
             });
         }
-        if ablated(c, &r) {
+        if ablated(c, r) {
             let path = r.ablation_path(out);
             let last = c.ablation.last_second.to_string();
             jobs.push(Job {
@@ -191,8 +202,30 @@ fn words(w: &[&str]) -> Vec<String> {
     w.iter().map(|s| s.to_string()).collect()
 }
 
-/// The `vsr evolve` or `vsr finetune` job of run `r`.
-fn run_job(c: &Campaign, r: &RunSpec, out: &Path, stage: u32) -> Job {
+/// The run from scratch that `r` continues: the same shape, controller and seed with the
+/// largest smaller budget planned. A run's draws never depend on its budget, so `r` passes
+/// through that run's final state and can start from its kept checkpoint.
+fn prefix_of<'a>(all: &'a [RunSpec], r: &RunSpec) -> Option<&'a RunSpec> {
+    let same = |p: &&RunSpec| {
+        p.source.is_none()
+            && (&p.shape, p.controller, p.seed) == (&r.shape, r.controller, r.seed)
+            && p.evals < r.evals
+    };
+    if r.source.is_some() {
+        return None;
+    }
+    all.iter().filter(same).max_by_key(|p| p.evals)
+}
+
+/// The `vsr evolve` or `vsr finetune` job of run `r`; `prefix` is the run it continues,
+/// `keep` says that another run continues it.
+fn run_job(
+    c: &Campaign,
+    r: &RunSpec,
+    out: &Path,
+    stage: u32,
+    (prefix, keep): (Option<&RunSpec>, bool),
+) -> Job {
     let path = r.run_path(out);
     let mut args = match &r.source {
         None => words(&[
@@ -223,14 +256,28 @@ fn run_job(c: &Campaign, r: &RunSpec, out: &Path, stage: u32) -> Job {
         "--terrain",
         &c.terrain,
     ]));
+    if keep {
+        args.push("--keep-checkpoint".to_string());
+    }
+    let mut needs: Vec<PathBuf> = r.source.iter().map(|s| s.run_path(out)).collect();
+    if let Some(p) = prefix {
+        let from = p.run_path(out);
+        args.extend(["--continue".to_string(), checkpoint_of(&from)]);
+        needs.push(from);
+    }
     args.extend(["--out".to_string(), path.display().to_string()]);
     Job {
         stage,
         args,
         out: path,
-        needs: r.source.iter().map(|s| s.run_path(out)).collect(),
+        needs,
         threaded: true,
     }
+}
+
+/// The checkpoint `vsr evolve` keeps next to the run file `run`.
+fn checkpoint_of(run: &Path) -> String {
+    format!("{}.checkpoint", run.display())
 }
 
 #[cfg(test)]
@@ -274,6 +321,37 @@ scratch_evals = 300
         }
         let outs: std::collections::HashSet<_> = jobs.iter().map(|j| &j.out).collect();
         assert_eq!(outs.len(), jobs.len(), "one file per job");
+    }
+
+    #[test]
+    fn a_longer_run_continues_the_shorter_one_with_the_same_seed() {
+        let text = CAMPAIGN.replace("evals = [300]", "evals = [300, 100]");
+        let jobs = plan(&Campaign::parse(&text).unwrap(), Path::new("o"));
+        let job = |stem: &str| {
+            let name = format!("{stem}.json");
+            jobs.iter()
+                .find(|j| j.out.file_name().unwrap().to_string_lossy() == name)
+                .unwrap()
+        };
+        let (short, long) = (job("biped-4x3-mlp-100-s2"), job("biped-4x3-mlp-300-s2"));
+        assert!(short.args.contains(&"--keep-checkpoint".to_string()));
+        assert_eq!(short.stage, 1);
+        let at = long.args.iter().position(|a| a == "--continue").unwrap();
+        assert_eq!(
+            long.args[at + 1],
+            "o/runs/biped-4x3-mlp-100-s2.json.checkpoint"
+        );
+        assert_eq!(long.needs, std::slice::from_ref(&short.out));
+        assert_eq!(long.stage, 2);
+        // Other seeds and controllers, and runs with no shorter twin, are left alone.
+        let alone = job("comb-7x2-attention-200-s1");
+        assert!(!alone
+            .args
+            .iter()
+            .any(|a| a.contains("checkpoint") || a == "--continue"));
+        assert!(!job("biped-4x3-attention-300-s1")
+            .args
+            .contains(&"--keep-checkpoint".into()));
     }
 
     #[test]
