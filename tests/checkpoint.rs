@@ -285,6 +285,21 @@ fn a_longer_run_continues_a_shorter_runs_kept_checkpoint_bit_for_bit() {
     let gens = |path: &str| comparable(path)["generations"].as_array().unwrap().clone();
     assert_eq!(gens(&short)[..], gens(&whole)[..2]);
 
+    // A smaller budget that the kept state still lies on (generation 1 of the 30-evaluation
+    // run ends at 30 >= 25): accepted, and the 25-evaluation run from generation 0.
+    let (cut, cut_whole) = (scratch("c25.json"), scratch("w25.json"));
+    assert!(evolve_with(&cut, 25, &format!("--continue {kept}"))
+        .status
+        .success());
+    assert!(evolve_with(&cut_whole, 25, "").status.success());
+    assert_eq!(comparable(&cut), comparable(&cut_whole));
+
+    // Given again, a finished run with its kept checkpoint is left alone.
+    let before = std::fs::read_to_string(&short).unwrap();
+    let out = evolve_with(&short, 30, "--keep-checkpoint");
+    assert!(String::from_utf8_lossy(&out.stdout).contains("nothing to do"));
+    assert_eq!(std::fs::read_to_string(&short).unwrap(), before);
+
     // A missing --continue file: a note, and the run from generation 0.
     let fresh = scratch("f50.json");
     let out = evolve_with(

@@ -70,11 +70,16 @@ impl Checkpoint {
         let checkpoint: Checkpoint = serde_json::from_value(value)
             .map_err(|e| Error::Input(format!("the checkpoint is malformed: {e}")))?;
         checkpoint.config.validate()?;
-        if checkpoint.generations.len() != checkpoint.ga.generation as usize {
+        let last = checkpoint.generations.last().map(|g| g.evaluations);
+        if checkpoint.generations.len() != checkpoint.ga.generation as usize
+            || last != Some(checkpoint.ga.evaluations)
+        {
             return Err(Error::Input(format!(
-                "the checkpoint is inconsistent: {} generation records for generation {}",
+                "the checkpoint is inconsistent: {} generation records for generation {}, \
+                 the last at {last:?} evaluations for {}",
                 checkpoint.generations.len(),
-                checkpoint.ga.generation
+                checkpoint.ga.generation,
+                checkpoint.ga.evaluations
             )));
         }
         Ok(checkpoint)

@@ -61,8 +61,9 @@ pub enum Command {
 pub struct PlanArgs {
     #[command(flatten)]
     target: Target,
-    /// Only the jobs of this stage (1 runs from scratch, 2 fine-tuning and the assessments of
-    /// stage 1, 3 the assessments of fine-tuning runs).
+    /// Only the jobs of this stage: 1 runs that need no other run; a fine-tuning run or a run
+    /// continuing a shorter one comes a stage after the run it needs, assessments a stage
+    /// after their run (the paper's study: 1 to 3; past the last stage nothing is printed).
     #[arg(long)]
     stage: Option<u32>,
     /// Only the jobs whose output does not exist yet.

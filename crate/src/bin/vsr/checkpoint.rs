@@ -84,11 +84,15 @@ impl Checkpointer {
     /// budget can continue this one) or deletes it.
     pub fn finish(&self, evolution: &Evolution, keep: bool) -> Result<()> {
         if keep {
-            let checkpoint = evolution.checkpoint(Some(CODE)).ok_or_else(|| {
-                Error::Input("the run has no generation to keep a checkpoint of".into())
-            })?;
-            let text = checkpoint.to_json()?;
-            return crate::atomic::write(&self.path, text.as_bytes(), "checkpoint");
+            let written = evolution
+                .checkpoint(Some(CODE))
+                .ok_or_else(|| Error::Input("the run has no generation to keep".into()))
+                .and_then(|c| c.to_json())
+                .and_then(|text| crate::atomic::write(&self.path, text.as_bytes(), "checkpoint"));
+            if let Err(e) = written {
+                eprintln!("vsr: warning: {e}; a longer run will start from generation 0");
+            }
+            return Ok(());
         }
         match fs::remove_file(&self.path) {
             Ok(()) => Ok(()),

@@ -80,6 +80,16 @@ pub fn execute(mut config: EvolutionConfig, options: &RunOptions) -> Result<()> 
     crate::runfile::check_writable(&options.out)?;
     let mut checkpointer = Checkpointer::new(&options.out, options.checkpoint_every)?;
     let mut evolution = checkpointer.start(config, options.r#continue.as_deref())?;
+    if evolution.is_done() && options.out.exists() {
+        // A kept final checkpoint next to its run file: the run is complete.
+        println!(
+            "{} is complete (its checkpoint is at the end of the budget): nothing to do; \
+             delete {}.checkpoint to run it again",
+            options.out.display(),
+            options.out.display()
+        );
+        return Ok(());
+    }
     let pool = thread_pool(options.threads)?;
     let threads = pool.current_num_threads();
     let start = Instant::now();

@@ -7,10 +7,10 @@
 //! - `validation/STEM.SET.json`: `vsr validate --json` of a run's best on a set;
 //! - `ablation/STEM.json`: `vsr ablate --json` of a run's best.
 //!
-//! Stages: 1 = runs from scratch; 2 = fine-tuning runs (each needs its source run), runs
-//! that continue a shorter run and the assessments of stage-1 runs; 3 = the assessments of
-//! stage-2 runs. A job needs only files of earlier stages, so running stage after stage
-//! respects every dependency. A run listed twice (the same shape, controller, budget and seed
+//! Stages: a run that needs no other run is stage 1; a fine-tuning run (it needs its source
+//! run) or a run that continues a shorter one is one stage after the run it needs; a run's
+//! validations and ablation are one stage after the run. A job needs only files of earlier
+//! stages, so running stage after stage respects every dependency (the paper's study has 3). A run listed twice (the same shape, controller, budget and seed
 //! in two groups) is one job. A run from scratch with the same shape, controller and seed as a
 //! shorter one (RQ2's 20,000-evaluation sources and 30,000-evaluation runs) continues it: the
 //! shorter run keeps its final checkpoint (`--keep-checkpoint`) and the longer starts there
@@ -155,11 +155,7 @@ pub fn plan(c: &Campaign, out: &Path) -> Vec<Job> {
     for r in &all {
         let run_path = r.run_path(out);
         let prefix = prefix_of(&all, r);
-        let stage = if r.source.is_some() || prefix.is_some() {
-            2
-        } else {
-            1
-        };
+        let stage = stage_of(&all, r);
         let keep = all.iter().any(|q| prefix_of(&all, q) == Some(r));
         jobs.push(run_job(c, r, out, stage, (prefix, keep)));
         let genome = run_path.display().to_string();
@@ -215,6 +211,13 @@ fn prefix_of<'a>(all: &'a [RunSpec], r: &RunSpec) -> Option<&'a RunSpec> {
         return None;
     }
     all.iter().filter(same).max_by_key(|p| p.evals)
+}
+
+/// The stage of run `r`'s job: 1 for a run that needs no other run, else one more than the
+/// latest run it needs (its source, the shorter run it continues).
+fn stage_of(all: &[RunSpec], r: &RunSpec) -> u32 {
+    let needs = r.source.as_deref().into_iter().chain(prefix_of(all, r));
+    1 + needs.map(|n| stage_of(all, n)).max().unwrap_or(0)
 }
 
 /// The `vsr evolve` or `vsr finetune` job of run `r`; `prefix` is the run it continues,
@@ -352,6 +355,39 @@ scratch_evals = 300
         assert!(!job("biped-4x3-attention-300-s1")
             .args
             .contains(&"--keep-checkpoint".into()));
+    }
+
+    #[test]
+    fn chains_of_budgets_and_fine_tunings_of_continued_runs_come_stage_after_stage() {
+        let text = CAMPAIGN
+            .replace("evals = [300]", "evals = [300, 100, 30]")
+            .replace(
+                "pairs = [[\"comb-7x2\", \"biped-4x3\"]]",
+                "pairs = [[\"biped-4x3\", \"comb-7x2\"]]",
+            )
+            .replace("source_evals = 200", "source_evals = 300");
+        let jobs = plan(&Campaign::parse(&text).unwrap(), Path::new("o"));
+        for (i, job) in jobs.iter().enumerate() {
+            for need in &job.needs {
+                let at = jobs
+                    .iter()
+                    .position(|j| &j.out == need)
+                    .expect("needed job");
+                assert!(at < i && jobs[at].stage < job.stage, "{need:?}");
+            }
+        }
+        let stage = |name: &str| {
+            let j = jobs.iter().find(|j| j.out.ends_with(name)).unwrap();
+            j.stage
+        };
+        assert_eq!(stage("biped-4x3-mlp-30-s1.json"), 1);
+        assert_eq!(stage("biped-4x3-mlp-100-s1.json"), 2);
+        assert_eq!(stage("biped-4x3-mlp-300-s1.json"), 3);
+        assert_eq!(stage("biped-4x3-attention-300-to-comb-7x2-100-s1.json"), 4);
+        assert_eq!(
+            stage("biped-4x3-attention-300-to-comb-7x2-100-s1.paper.json"),
+            5
+        );
     }
 
     #[test]
