@@ -110,7 +110,7 @@ fn prefix_stand_in(
     }
     let _ = writeln!(
         r.markdown,
-        "{finished} of {} from-scratch runs of {scratch_evals} evaluations have finished: the \
+        "Only {finished} of the {} from-scratch runs of {scratch_evals} evaluations exist: the \
          convergence table and the figure use the {} {to} runs of {} evaluations with the same \
          seeds instead, which are their first generations bit for bit.\n",
         seeds.len(),
