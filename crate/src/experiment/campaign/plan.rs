@@ -49,6 +49,14 @@ impl RunSpec {
         }
     }
 
+    /// A fine-tuning of `source`'s best on `shape`, with the source's controller and seed.
+    pub fn finetuned(source: RunSpec, shape: &str, evals: u64) -> Self {
+        RunSpec {
+            source: Some(Box::new(source.clone())),
+            ..RunSpec::scratch(shape, source.controller, evals, source.seed)
+        }
+    }
+
     /// The file stem of its outputs; see the module doc.
     pub fn stem(&self) -> String {
         let tail = format!("{}-s{}", self.evals, self.seed);
@@ -126,10 +134,7 @@ pub fn finetune_runs(c: &Campaign, g: &super::file::FinetuneGroup) -> Vec<RunSpe
             if let Some(evals) = g.scratch_evals {
                 out.push(RunSpec::scratch(to, g.controller, evals, seed));
             }
-            out.push(RunSpec {
-                source: Some(Box::new(source)),
-                ..RunSpec::scratch(to, g.controller, g.evals, seed)
-            });
+            out.push(RunSpec::finetuned(source, to, g.evals));
         }
     }
     out

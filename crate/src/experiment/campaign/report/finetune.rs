@@ -132,10 +132,7 @@ pub(super) fn finetune_section(
     let seeds = g.seeds.as_ref().unwrap_or(&results.campaign.seeds);
     let [from, to] = pair;
     let source = RunSpec::scratch(from, g.controller, g.source_evals, 0);
-    let tuned = RunSpec {
-        source: Some(Box::new(source)),
-        ..RunSpec::scratch(to, g.controller, g.evals, 0)
-    };
+    let tuned = RunSpec::finetuned(source, to, g.evals);
     let mut samples = vec![Sample {
         label: format!("fine-tuned from {from} ({} + {})", g.source_evals, g.evals),
         runs: results.seeds_of(&tuned, seeds),
