@@ -310,14 +310,8 @@ evals = 100
 scratch_evals = 300
 "#;
 
-    #[test]
-    fn every_job_comes_after_the_jobs_it_needs_and_runs_are_not_repeated() {
-        let c = Campaign::parse(CAMPAIGN).unwrap();
-        let jobs = plan(&c, Path::new("o"));
-        // Runs: 2 controllers x 2 seeds + per seed (source, fine-tune; the scratch run is
-        // the attention run of group a) = 8; each validated twice; 2 attention runs ablated.
-        assert_eq!(jobs.iter().filter(|j| j.threaded).count(), 8);
-        assert_eq!(jobs.len(), 8 + 16 + 2);
+    /// Every job's needs come earlier in the plan and in an earlier stage.
+    fn assert_needs_come_first(jobs: &[Job]) {
         for (i, job) in jobs.iter().enumerate() {
             for need in &job.needs {
                 let at = jobs
@@ -327,6 +321,17 @@ scratch_evals = 300
                 assert!(at < i && jobs[at].stage < job.stage, "{need:?}");
             }
         }
+    }
+
+    #[test]
+    fn every_job_comes_after_the_jobs_it_needs_and_runs_are_not_repeated() {
+        let c = Campaign::parse(CAMPAIGN).unwrap();
+        let jobs = plan(&c, Path::new("o"));
+        // Runs: 2 controllers x 2 seeds + per seed (source, fine-tune; the scratch run is
+        // the attention run of group a) = 8; each validated twice; 2 attention runs ablated.
+        assert_eq!(jobs.iter().filter(|j| j.threaded).count(), 8);
+        assert_eq!(jobs.len(), 8 + 16 + 2);
+        assert_needs_come_first(&jobs);
         let outs: std::collections::HashSet<_> = jobs.iter().map(|j| &j.out).collect();
         assert_eq!(outs.len(), jobs.len(), "one file per job");
     }
@@ -372,15 +377,7 @@ scratch_evals = 300
             )
             .replace("source_evals = 200", "source_evals = 300");
         let jobs = plan(&Campaign::parse(&text).unwrap(), Path::new("o"));
-        for (i, job) in jobs.iter().enumerate() {
-            for need in &job.needs {
-                let at = jobs
-                    .iter()
-                    .position(|j| &j.out == need)
-                    .expect("needed job");
-                assert!(at < i && jobs[at].stage < job.stage, "{need:?}");
-            }
-        }
+        assert_needs_come_first(&jobs);
         let stage = |name: &str| {
             let j = jobs.iter().find(|j| j.out.ends_with(name)).unwrap();
             j.stage
