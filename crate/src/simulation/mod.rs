@@ -6,6 +6,7 @@ pub mod assembly;
 pub mod body;
 pub mod box_box;
 pub mod broad_phase;
+pub mod carry;
 pub mod collide;
 pub mod constants;
 pub mod contact;

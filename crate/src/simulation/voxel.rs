@@ -101,6 +101,16 @@ impl World {
         (x, y, self.pieces.angle[p])
     }
 
+    /// Velocity (vx, vy) of the centre of corner square `s`, and its angular velocity.
+    pub fn square_velocity(&self, s: usize) -> (f64, f64, f64) {
+        let p = self.squares.piece[s];
+        let (x, y) = self.squares.point(&self.pieces, s, 0.0, 0.0);
+        let (vx, vy) = self
+            .pieces
+            .point_velocity(p, x - self.pieces.x[p], y - self.pieces.y[p]);
+        (vx, vy, self.pieces.vel[p].w)
+    }
+
     /// Axis-aligned bounding box of the robot's outer corners: (min x, min y, max x, max y).
     pub fn bounding_box(&self) -> (f64, f64, f64, f64) {
         let mut b = (

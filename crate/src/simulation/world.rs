@@ -164,7 +164,7 @@ impl World {
         }
     }
 
-    fn detect_contacts(&mut self) {
+    pub(super) fn detect_contacts(&mut self) {
         detect(
             &self.pieces,
             &self.squares,
