@@ -82,6 +82,24 @@ fn terrain_polyline_has_walls() {
 }
 
 #[wasm_bindgen_test]
+fn an_edited_walking_robot_keeps_its_posture() {
+    let mut old = Episode::new("biped-4x3", "hilly-1-10-0", 1.5, 1.0).expect("valid");
+    old.step(150).expect("stable");
+    // The top-right voxel removed: the rows keep their bounding box.
+    let left = old.left_edge();
+    let mut edited =
+        Episode::gait_at("1110-1111-1001", "hilly-1-10-0", 1.5, 1.0, left).expect("valid");
+    edited.carry_pose(&old, 0, 0);
+    let (before, after) = (old.corners(), edited.corners());
+    // Voxels are ordered bottom row first, left to right: the removed one was the last.
+    assert_eq!(after.len() + 8, before.len());
+    for (a, b) in after.iter().zip(&before) {
+        assert!((a - b).abs() < 1e-5, "{a} became {b}");
+    }
+    edited.step(60).expect("stable");
+}
+
+#[wasm_bindgen_test]
 fn invalid_shapes_are_js_errors_not_traps() {
     for shape in ["", "11x1-1001", "1111-11", "101", "not-a-preset"] {
         let error = Episode::new(shape, "flat", 1.0, 1.5)

@@ -38,7 +38,11 @@ let brain = null;
 /** The last check of the drawing. @type {import('./core.js').ShapeCheck} */
 let check = checkShape('');
 let edits = 0;
-/** The next body change is an edit of the walking robot: rebuild it where it stands. */
+/**
+ * The next body change is an edit of the walking robot: rebuild it where it stands, in its
+ * posture and motion; the edit's shift of the bounding box, or false.
+ * @type {import('./protocol.js').Shift | false}
+ */
 let keepPlace = false;
 /** A brain set aside by choosing another controller family, back if that family is chosen again. @type {Brain | null} */
 let shelved = null;
@@ -208,7 +212,8 @@ function editWalking(pick) {
     return;
   }
   drawing.set(x, y, adding);
-  keepPlace = true;
+  const moved = drawing.box();
+  keepPlace = moved ? { dx: box.left - moved.left, dy: box.bottom - moved.bottom } : false;
   editor.draw();
   bodyChanged();
 }

@@ -84,8 +84,16 @@ export const DT = 1 / 60;
  * @property {number} frequency  gait frequency f (Hz), used without a brain
  * @property {number} phase      gait phase phi (rad per column), used without a brain
  * @property {Brain | null} brain  the controller that drives the body, or null for the gait
- * @property {boolean} [keepPlace] build the robot where the current one stands (an edit of the
- *                               walking robot), not at the start line
+ * @property {Shift | false} [keepPlace] an edit of the walking robot: build it in the posture
+ *                               and motion of the current one (its cells the current ones
+ *                               shifted by the Shift), not at rest on the start line
+ */
+
+/**
+ * @typedef {object} Shift  how an edit moved the body's bounding box: a cell (x, y) of the
+ *                          edited body (from the bottom left) was (x - dx, y - dy) before
+ * @property {number} dx
+ * @property {number} dy
  */
 
 /**

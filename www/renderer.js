@@ -48,10 +48,14 @@ export class Renderer {
     this.lastDraw = 0;
   }
 
-  /** Shows a new terrain and snaps the camera on the next frame. @param {Float64Array} xs @param {Float64Array} ys */
-  setTerrain(xs, ys) {
+  /**
+   * Shows a new terrain and, unless `snap` is false (an edit of the robot where it stands),
+   * snaps the camera onto the robot on the next frame.
+   * @param {Float64Array} xs @param {Float64Array} ys @param {boolean} [snap]
+   */
+  setTerrain(xs, ys, snap = true) {
     this.terrain = { xs, ys };
-    this.snapCamera = true;
+    if (snap) this.snapCamera = true;
   }
 
   /** @param {import('./protocol.js').Frame} frame the latest frame to draw */

@@ -76,8 +76,9 @@ export class Viewer {
 
   /**
    * Walks `rows` driven by `brain` (or the phase gait when null), from the start line or, with
-   * `keepPlace`, where the robot stands now.
-   * @param {string} rows @param {import('./protocol.js').Brain | null} brain @param {boolean} [keepPlace]
+   * `keepPlace` (an edit's shift), in the posture and motion of the robot walking now.
+   * @param {string} rows @param {import('./protocol.js').Brain | null} brain
+   * @param {import('./protocol.js').Shift | false} [keepPlace]
    */
   show(rows, brain, keepPlace = false) {
     this.wanted = {
@@ -93,7 +94,7 @@ export class Viewer {
       case FromWorker.READY: break;
       case FromWorker.LOADED:
         this.current = msg.params;
-        this.renderer.setTerrain(msg.terrainXs, msg.terrainYs);
+        this.renderer.setTerrain(msg.terrainXs, msg.terrainYs, !msg.params.keepPlace);
         this.attention.setLayout(msg.cells);
         this.readout.reset();
         this.status.textContent = `${msg.voxels} voxels, ${msg.controller}`;

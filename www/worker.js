@@ -71,11 +71,13 @@ function handle(msg) {
  * @param {import('./protocol.js').EpisodeParams} next
  */
 function load(next) {
-  // An edit of the walking robot rebuilds it where it stands (its left edge), not at the start.
-  const left = next.keepPlace && episode ? episode.leftEdge() : NaN;
+  // An edit of the walking robot rebuilds it where it stands, in its posture and motion.
+  const edit = next.keepPlace && episode ? next.keepPlace : null;
+  const left = edit ? episode.leftEdge() : NaN;
   const fresh = next.brain
     ? Episode.fromGenome(next.shape, next.terrain, next.brain.controller, next.brain.genome, left)
     : Episode.gaitAt(next.shape, next.terrain, next.frequency, next.phase, left);
+  if (edit && next.terrain === params?.terrain) fresh.carryPose(episode, edit.dx, edit.dy);
   episode?.free();
   episode = fresh;
   params = next;

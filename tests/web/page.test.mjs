@@ -131,7 +131,7 @@ test('Hold stops the clock, Restart walk begins again, Play resumes', async () =
   assert.deepEqual(problems, []);
 });
 
-test('clicking a voxel of the walking robot removes it where it stands; the same controller keeps driving it', async () => {
+test('clicking a voxel of the walking robot removes it where it stands, in its posture; the same controller keeps driving it', async () => {
   await byTestId(page, 'preset').selectOption({ label: 'biped-4x3' });
   await waitForText(page, 'status', /^10 voxels/);
   await waitForFigure(page, 'sim-time', 'v > 0.5', 20_000);
@@ -143,12 +143,21 @@ test('clicking a voxel of the walking robot removes it where it stands; the same
   await page.waitForFunction(() => document.body.dataset.running === 'false');
   await page.waitForTimeout(300);
   const before = await figure(page, 'robot-x');
-  const centre = await robotCentre();
+  // Click once the camera has caught up, so that the click hits the voxel it aims at.
+  const boxBefore = await settledRobotBox();
+  const centre = { x: (boxBefore.left + boxBefore.right) / 2, y: (boxBefore.top + boxBefore.bottom) / 2 };
   await byTestId(page, 'viewer').click({ position: centre });
   await waitForText(page, 'status', /^9 voxels/);
   assert.notEqual(await page.locator('#rows').inputValue(), '1111-1111-1001');
   const after = await figure(page, 'robot-x');
-  assert.ok(Math.abs(after - before) < 2, `rebuilt where it stood: x ${before} before, ${after} after (start ${start})`);
+  assert.ok(Math.abs(after - before) < 1, `rebuilt where it stood: x ${before} before, ${after} after (start ${start})`);
+  // In its posture, not rebuilt at rest above the ground: the robot's outline stays put.
+  const boxAfter = await settledRobotBox();
+  const cell = (boxBefore.bottom - boxBefore.top) / 3;
+  for (const side of ['left', 'right', 'top', 'bottom']) {
+    assert.ok(Math.abs(boxAfter[side] - boxBefore[side]) < 0.2 * cell,
+      `the ${side} edge moved from ${boxBefore[side]} to ${boxAfter[side]} px (a voxel is ${cell} px): ${JSON.stringify([boxBefore, boxAfter, before, after])}`);
+  }
   await page.locator('#sim-play').click();
   await screenshot(page, 'page.png');
   assert.deepEqual(problems, []);
@@ -176,6 +185,18 @@ test('clicking next to the robot adds a voxel; an edit that would split it is re
   await page.locator('#sim-play').click();
   assert.deepEqual(problems, []);
 });
+
+/** The robot's box once the camera has caught up with the held robot (two equal reads). */
+async function settledRobotBox() {
+  let last = await robotBox();
+  for (let i = 0; i < 50; i++) {
+    await page.waitForTimeout(200);
+    const box = await robotBox();
+    if (JSON.stringify(box) === JSON.stringify(last)) return box;
+    last = box;
+  }
+  return last;
+}
 
 /** The box around the robot's coloured pixels on the viewer (CSS px). */
 async function robotBox() {

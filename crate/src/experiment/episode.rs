@@ -130,6 +130,13 @@ impl Episode {
         }
     }
 
+    /// Puts this freshly built episode's robot in the posture and motion of `old`'s robot;
+    /// `map[v]` is the old index of voxel `v` (an edit of a walking robot, see
+    /// [`crate::simulation::carry`]). The clock, the policy and the sensors start afresh.
+    pub fn carry_pose_from(&mut self, old: &Episode, map: &[Option<usize>]) {
+        self.world.carry_pose(&old.world, map);
+    }
+
     /// Asks the policy after step k (1-based); its output is latched when `latch`.
     fn act(&mut self, k: u64, latch: bool) {
         match &mut self.policy {

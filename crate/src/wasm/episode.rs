@@ -6,6 +6,7 @@
 use wasm_bindgen::prelude::{wasm_bindgen, JsError};
 
 use crate::experiment::{Episode as CoreEpisode, PhaseGait};
+use crate::simulation::carry::voxel_map;
 use crate::simulation::{Shape, Terrain};
 
 /// Name reported by [`Episode::controller`] for the phase gait.
@@ -59,6 +60,17 @@ impl Episode {
         cells
             .flat_map(|&(x, y)| [x, y].map(|v| u32::try_from(v).unwrap_or(u32::MAX)))
             .collect()
+    }
+
+    /// An edit of the walking robot `old`: this freshly built robot takes `old`'s posture
+    /// and motion, its cell (x, y) being `old`'s cell (x - dx, y - dy) (the edit's shift of
+    /// the bounding box; cells count from the bottom left). Voxels that were not in `old`
+    /// move with their neighbours.
+    #[wasm_bindgen(js_name = carryPose)]
+    pub fn carry_pose(&mut self, old: &Episode, dx: i32, dy: i32) {
+        let shift = (i64::from(dx), i64::from(dy));
+        let map = voxel_map(old.shape.voxels(), self.shape.voxels(), shift);
+        self.inner.carry_pose_from(&old.inner, &map);
     }
 
     /// Advances the simulation by `steps` steps of 1/60 s. Throws if it became unstable.
