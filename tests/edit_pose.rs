@@ -4,7 +4,7 @@
 //! voxel sits against its neighbours and moves with them; the edited robot simulates on.
 
 use vsr::simulation::carry::voxel_map;
-use vsr::simulation::constants::VOXEL_SIDE;
+use vsr::simulation::constants::{CORNER_SIDE, VOXEL_SIDE};
 use vsr::simulation::{Shape, Terrain, World};
 
 fn cells(rows: &str) -> Vec<(usize, usize)> {
@@ -149,19 +149,30 @@ fn an_added_voxel_sits_against_its_neighbour_and_moves_with_it() {
         "{gap} m between the added voxel and its neighbour"
     );
     assert!(a.1 > b.1, "the added voxel is on top");
-    // Its bottom corners are welded to its neighbour's top corners: one rigid piece, so the
-    // same spin, and velocities that differ only by that spin over the squares' distance.
-    let (va, vb) = (
-        new.square_velocity(4 * added),
-        new.square_velocity(4 * below + 3),
-    );
-    let (pa, pb) = (new.square_pose(4 * added), new.square_pose(4 * below + 3));
-    assert_eq!(va.2, vb.2);
-    let rigid = (vb.0 - va.2 * (pa.1 - pb.1), vb.1 + va.2 * (pa.0 - pb.0));
-    assert!(
-        (va.0 - rigid.0).abs() < 1e-9 && (va.1 - rigid.1).abs() < 1e-9,
-        "{va:?} {rigid:?}"
-    );
+    // Its free top corners (pieces of their own): each placed by the rigid motion of the
+    // welded corner below it, at rest distance from it and moving with it as one body.
+    for (top, bottom) in [(2, 1), (3, 0)] {
+        let (pt, pb) = (
+            new.square_pose(4 * added + top),
+            new.square_pose(4 * added + bottom),
+        );
+        let (vt, vb) = (
+            new.square_velocity(4 * added + top),
+            new.square_velocity(4 * added + bottom),
+        );
+        let apart = (pt.0 - pb.0).hypot(pt.1 - pb.1);
+        assert!(
+            (apart - (VOXEL_SIDE - CORNER_SIDE)).abs() < 1e-9,
+            "{apart} m"
+        );
+        assert_eq!(pt.2, pb.2, "the same angle");
+        let rigid = (vb.0 - vb.2 * (pt.1 - pb.1), vb.1 + vb.2 * (pt.0 - pb.0));
+        assert!(
+            (vt.0 - rigid.0).abs() < 1e-9 && (vt.1 - rigid.1).abs() < 1e-9,
+            "{vt:?} {rigid:?}"
+        );
+        assert_eq!(vt.2, vb.2);
+    }
     assert_simulates(new);
 }
 

@@ -211,9 +211,10 @@ function editWalking(pick) {
       : `Removing that voxel would split the robot into ${after.pieces.length} pieces; not done`);
     return;
   }
+  const from = drawing.rows();
   drawing.set(x, y, adding);
   const moved = drawing.box();
-  keepPlace = moved ? { dx: box.left - moved.left, dy: box.bottom - moved.bottom } : false;
+  keepPlace = moved ? { from, dx: box.left - moved.left, dy: box.bottom - moved.bottom } : false;
   editor.draw();
   bodyChanged();
 }

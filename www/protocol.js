@@ -17,8 +17,9 @@
  *
  * Worker -> page
  *   {type: 'ready'}                      the wasm module is instantiated
- *   {type: 'loaded', params, voxels, controller, cells, terrainXs, terrainYs}
+ *   {type: 'loaded', params, carried, voxels, controller, cells, terrainXs, terrainYs}
  *                                        a new episode replaced the previous one;
+ *                                        carried: it took the edited robot's posture and motion;
  *                                        controller: 'phase gait', 'attention', 'mlp', ...;
  *                                        cells (Uint32Array, 2n): voxel i's grid column at 2i
  *                                        (from the left) and row at 2i + 1 (from the bottom)
@@ -90,8 +91,11 @@ export const DT = 1 / 60;
  */
 
 /**
- * @typedef {object} Shift  how an edit moved the body's bounding box: a cell (x, y) of the
- *                          edited body (from the bottom left) was (x - dx, y - dy) before
+ * @typedef {object} Shift  an edit of the body `from`, and how it moved the bounding box: a
+ *                          cell (x, y) of the edited body (from the bottom left) was
+ *                          (x - dx, y - dy) of `from`
+ * @property {string} from  the rows of the body that was edited (the worker carries the pose
+ *                          over only from a robot with these rows)
  * @property {number} dx
  * @property {number} dy
  */

@@ -94,7 +94,7 @@ export class Viewer {
       case FromWorker.READY: break;
       case FromWorker.LOADED:
         this.current = msg.params;
-        this.renderer.setTerrain(msg.terrainXs, msg.terrainYs, !msg.params.keepPlace);
+        this.renderer.setTerrain(msg.terrainXs, msg.terrainYs, !msg.carried);
         this.attention.setLayout(msg.cells);
         this.readout.reset();
         this.status.textContent = `${msg.voxels} voxels, ${msg.controller}`;

@@ -71,13 +71,15 @@ function handle(msg) {
  * @param {import('./protocol.js').EpisodeParams} next
  */
 function load(next) {
-  // An edit of the walking robot rebuilds it where it stands, in its posture and motion.
+  // An edit of the walking robot rebuilds it where it stands, in its posture and motion, if
+  // the robot walking is the one that was edited (not after a restart or a refused load).
   const edit = next.keepPlace && episode ? next.keepPlace : null;
   const left = edit ? episode.leftEdge() : NaN;
   const fresh = next.brain
     ? Episode.fromGenome(next.shape, next.terrain, next.brain.controller, next.brain.genome, left)
     : Episode.gaitAt(next.shape, next.terrain, next.frequency, next.phase, left);
-  if (edit && next.terrain === params?.terrain) fresh.carryPose(episode, edit.dx, edit.dy);
+  const carried = Boolean(edit && episode && edit.from === episode.shape && next.terrain === params?.terrain);
+  if (carried && edit && episode) fresh.carryPose(episode, edit.dx, edit.dy);
   episode?.free();
   episode = fresh;
   params = next;
@@ -85,7 +87,7 @@ function load(next) {
   const terrainYs = fresh.terrainYs();
   const cells = fresh.voxelCells();
   self.postMessage({
-    type: FromWorker.LOADED, params, voxels: fresh.voxelCount, controller: fresh.controller,
+    type: FromWorker.LOADED, params, carried, voxels: fresh.voxelCount, controller: fresh.controller,
     cells, terrainXs, terrainYs,
   }, [cells.buffer, terrainXs.buffer, terrainYs.buffer]);
   restartClocks();

@@ -182,6 +182,15 @@ test('clicking next to the robot adds a voxel; an edit that would split it is re
   await waitForText(page, 'message', /would split the robot into 2 pieces; not done/);
   assert.equal(await page.locator('#rows').inputValue(), '111', 'the robot is unchanged');
   assert.equal(await page.locator('#redo').isEnabled(), true, 'the refused edit kept the history: the undone addition can be redone');
+  // Removing the left voxel moves the bounding box: the other two keep their places, so the
+  // centre moves right by half a voxel (3 m), not left as a mapping without the shift gives.
+  const x3 = await figure(page, 'robot-x');
+  const box3 = await settledRobotBox();
+  const cell3 = (box3.right - box3.left) / 3;
+  await byTestId(page, 'viewer').click({ position: { x: box3.left + 0.5 * cell3, y: (box3.top + box3.bottom) / 2 } });
+  await waitForText(page, 'status', /^2 voxels/);
+  const x2 = await figure(page, 'robot-x');
+  assert.ok(Math.abs(x2 - x3 - 1.5) < 0.3, `the centre moved from ${x3} to ${x2} m`);
   await page.locator('#sim-play').click();
   assert.deepEqual(problems, []);
 });

@@ -2,8 +2,8 @@
 //! walking robot: one voxel added or removed). The edited robot is built afresh (pieces,
 //! springs, ropes, welds), then every piece takes its pose and velocity from the old robot:
 //! a piece with a square whose voxel was there before moves as that square's old piece
-//! moved it; a piece of a new voxel's own corners follows the rigid motion of a piece of
-//! the same voxel that was placed that way. Contacts are detected anew. The result is the
+//! moved it; a piece of a new voxel's own corners follows the rigid motion of a placed piece
+//! of the same voxel, a corner beside it first. Contacts are detected anew. The result is the
 //! edited robot in the old one's posture and speed, not a restart at rest.
 
 use super::body::Velocity;
@@ -94,16 +94,17 @@ impl World {
                 },
             });
         }
-        // The rest (a new voxel's own corners): follow a placed piece of the same voxel,
-        // then of any voxel, so that the robot moves as one.
+        // The rest (a new voxel's own corners): follow a placed piece of the same voxel, a
+        // corner on the same side first (then the opposite one), else any placed piece, so
+        // that the robot moves as one.
         let any = motion.iter().flatten().next().copied();
-        let of_voxel: Vec<Option<Motion>> = (0..self.squares.len() / 4)
-            .map(|v| (0..4).find_map(|c| motion[self.squares.piece[4 * v + c]]))
-            .collect();
+        let placed = motion.clone();
         for s in 0..self.squares.len() {
             let p = self.squares.piece[s];
             if motion[p].is_none() {
-                motion[p] = of_voxel[s / 4].or(any);
+                let (v, c) = (s / 4, s % 4);
+                let near = [3, 1, 2].map(|k| placed[self.squares.piece[4 * v + (c + k) % 4]]);
+                motion[p] = near.into_iter().flatten().next().or(any);
             }
         }
         for (p, m) in motion.iter().enumerate() {
