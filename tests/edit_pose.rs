@@ -192,10 +192,38 @@ fn voxel_maps_follow_the_shift() {
 }
 
 #[test]
-fn a_voxel_added_under_a_foot_pushes_the_robot_up_without_blowing_it_apart() {
+fn a_voxel_added_under_a_foot_lifts_the_robot_out_of_the_ground() {
     let old = walking("1111-1111-1001");
     // Under the left foot: a new bottom row, so the old cells moved up by one.
     let (new, map) = edited(&old, "1111-1111-1001", "1111-1111-1001-1000", (0, 1));
-    assert_eq!(assert_kept(&old, &new, &map), 10);
+    // The new foot starts in the ground, so the whole robot is lifted out of it: the kept
+    // voxels keep their posture, one common lift higher, and no corner is in the ground.
+    let (a, b) = (
+        old.square_pose(0),
+        new.square_pose(4 * map.iter().position(|&m| m == Some(0)).unwrap()),
+    );
+    let lift = b.1 - a.1;
+    assert!(lift > 0.1, "lifted {lift} m");
+    for (v, ov) in map.iter().enumerate() {
+        let Some(ov) = *ov else { continue };
+        for c in 0..4 {
+            let (a, b) = (old.square_pose(4 * ov + c), new.square_pose(4 * v + c));
+            assert!((a.0 - b.0).abs() < 1e-9 && (a.1 + lift - b.1).abs() < 1e-9 && a.2 == b.2);
+        }
+    }
+    let half = CORNER_SIDE / 2.0;
+    for s in 0..4 * new.voxel_count() {
+        let (x, y, angle) = new.square_pose(s);
+        for (sx, sy) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            let (cx, cy) = (
+                x + half * (sx * angle.cos() - sy * angle.sin()),
+                y + half * (sx * angle.sin() + sy * angle.cos()),
+            );
+            assert!(
+                cy - new.ground().height_at(cx) > -1e-9,
+                "square {s} in the ground"
+            );
+        }
+    }
     assert_simulates(new);
 }

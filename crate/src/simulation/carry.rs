@@ -3,10 +3,12 @@
 //! springs, ropes, welds), then every piece takes its pose and velocity from the old robot:
 //! a piece with a square whose voxel was there before moves as that square's old piece
 //! moved it; a piece of a new voxel's own corners follows the rigid motion of a placed piece
-//! of the same voxel, a corner beside it first. Contacts are detected anew. The result is the
-//! edited robot in the old one's posture and speed, not a restart at rest.
+//! of the same voxel, a corner beside it first. A robot that would start in the ground (a
+//! voxel added under a foot) is lifted out of it. Contacts are detected anew. The result is
+//! the edited robot in the old one's posture and speed, not a restart at rest.
 
 use super::body::Velocity;
+use super::constants::{CORNER_SIDE, LINEAR_SLOP};
 use super::world::World;
 use std::collections::HashMap;
 
@@ -115,6 +117,26 @@ impl World {
             self.pieces.set_angle(p, m.angle);
             self.pieces.vel[p] = vel;
         }
+        // A voxel added under a foot may sit in the ground: lift the robot out of it rather
+        // than let the contacts kick it out (a walking robot's own contacts, a few slops
+        // deep at most, are left to the solver as they were).
+        let lift = self.depth_in_ground();
+        if lift > 3.0 * LINEAR_SLOP {
+            self.pieces.y.iter_mut().for_each(|y| *y += lift);
+        }
         self.detect_contacts();
+    }
+
+    /// How deep the deepest outer corner of a square lies below the ground (m; 0 if none).
+    fn depth_in_ground(&self) -> f64 {
+        let half = CORNER_SIDE / 2.0;
+        let mut depth: f64 = 0.0;
+        for s in 0..self.squares.len() {
+            for (sx, sy) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+                let (x, y) = self.squares.point(&self.pieces, s, sx * half, sy * half);
+                depth = depth.max(self.ground.height_at(x) - y);
+            }
+        }
+        depth
     }
 }

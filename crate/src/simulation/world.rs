@@ -39,7 +39,7 @@ pub struct World {
     pub(crate) squares: Squares,
     springs: Springs,
     ropes: Ropes,
-    ground: Ground,
+    pub(super) ground: Ground,
     contacts: Vec<Contact>,
     solver: ContactSolver,
     broad: BroadPhase,
