@@ -85,13 +85,14 @@ impl World {
                 build[p].1 + self.squares.ly[s],
             );
             let (rx, ry) = (centre.0 - old.pieces.x[op], centre.1 - old.pieces.y[op]);
+            let (vx, vy) = old.pieces.point_velocity(op, rx, ry);
             motion[p] = Some(Motion {
                 from: square_build,
                 to: centre,
                 angle: old.pieces.angle[op],
                 vel: Velocity {
-                    vx: old.pieces.vel[op].vx - old.pieces.vel[op].w * ry,
-                    vy: old.pieces.vel[op].vy + old.pieces.vel[op].w * rx,
+                    vx,
+                    vy,
                     w: old.pieces.vel[op].w,
                 },
             });
