@@ -2,7 +2,6 @@
 //! seeds, evolutionary runs and their run files, fine-tuning, validation and the ablation.
 
 pub mod ablation;
-pub mod campaign;
 pub mod checkpoint;
 pub mod config;
 pub mod ensemble;

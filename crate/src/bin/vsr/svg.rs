@@ -4,7 +4,7 @@
 
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
-use vsr::experiment::campaign::figures::{Band, BoxData, Figure, Plot};
+use vsr::study::report::figures::{Band, BoxData, Figure, Plot};
 use vsr::{Error, Result};
 
 const SIZE: (u32, u32) = (800, 500);

@@ -1,8 +1,8 @@
 //! The data of the report's figures, ready to draw: lines with a band across seeds, and box
 //! plots. The command line draws them (SVG); nothing here knows about pixels.
 
-use super::results::RunData;
-use crate::statistics::{quantile, Summary};
+use crate::study::campaign::RunData;
+use crate::study::statistics::{quantile, Summary};
 
 /// A line over x: the median across seeds and the interquartile band.
 #[derive(Debug, Clone, PartialEq)]

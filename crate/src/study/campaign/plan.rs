@@ -1,5 +1,5 @@
-//! A campaign's job list: every run, validation and ablation as one complete `vsr` command
-//! that writes one output file, in dependency order.
+//! A campaign's job list: every run, validation and ablation as one job (data: the command
+//! line makes it a `vsr` command) that writes one output file, in dependency order.
 //!
 //! Output folder layout (under the campaign's output folder):
 //! - `runs/STEM.json`: run files; STEM is `SHAPE-CONTROLLER-EVALS-sSEED` from scratch and
@@ -17,7 +17,7 @@
 //! (`--continue`), the same run file bit for bit for a third of the work.
 
 use super::file::Campaign;
-pub use super::job::Job;
+use super::job::{Job, RunTask, Task};
 use crate::controllers::ControllerKind;
 use crate::experiment::ValidationSet;
 use std::path::{Path, PathBuf};
@@ -163,44 +163,33 @@ pub fn plan(c: &Campaign, out: &Path) -> Vec<Job> {
         let stage = stage_of(&all, r);
         let keep = all.iter().any(|q| prefix_of(&all, q) == Some(r));
         jobs.push(run_job(c, r, out, stage, (prefix, keep)));
-        let genome = run_path.display().to_string();
-        let seconds = c.seconds.to_string();
         for &set in &c.validate {
-            let path = r.validation_path(out, set);
             jobs.push(Job {
                 stage: stage + 1,
-                args: words(&["validate", "--genome", &genome, "--set", set.name()])
-                    .into_iter()
-                    .chain(words(&["--seconds", &seconds, "--json", "--out"]))
-                    .chain([path.display().to_string()])
-                    .collect(),
-                out: path,
+                task: Task::Validate {
+                    genome: run_path.clone(),
+                    set,
+                    seconds: c.seconds,
+                },
+                out: r.validation_path(out, set),
                 needs: vec![run_path.clone()],
-                threaded: false,
             });
         }
         if ablated(c, r) {
-            let path = r.ablation_path(out);
-            let last = c.ablation.last_second.to_string();
             jobs.push(Job {
                 stage: stage + 1,
-                args: words(&["ablate", "--genome", &genome, "--last-second", &last])
-                    .into_iter()
-                    .chain(words(&["--seconds", &seconds, "--json", "--out"]))
-                    .chain([path.display().to_string()])
-                    .collect(),
-                out: path,
+                task: Task::Ablate {
+                    genome: run_path.clone(),
+                    last_second: c.ablation.last_second,
+                    seconds: c.seconds,
+                },
+                out: r.ablation_path(out),
                 needs: vec![run_path],
-                threaded: false,
             });
         }
     }
     jobs.sort_by_key(|j| j.stage);
     jobs
-}
-
-fn words(w: &[&str]) -> Vec<String> {
-    w.iter().map(|s| s.to_string()).collect()
 }
 
 /// The run from scratch that `r` continues: the same shape, controller and seed with the
@@ -225,8 +214,8 @@ fn stage_of(all: &[RunSpec], r: &RunSpec) -> u32 {
     1 + needs.map(|n| stage_of(all, n)).max().unwrap_or(0)
 }
 
-/// The `vsr evolve` or `vsr finetune` job of run `r`; `prefix` is the run it continues,
-/// `keep` says that another run continues it.
+/// The evolution or fine-tuning job of run `r`; `prefix` is the run it continues, `keep`
+/// says that another run continues it.
 fn run_job(
     c: &Campaign,
     r: &RunSpec,
@@ -234,58 +223,33 @@ fn run_job(
     stage: u32,
     (prefix, keep): (Option<&RunSpec>, bool),
 ) -> Job {
-    let path = r.run_path(out);
-    let mut args = match &r.source {
-        None => words(&[
-            "evolve",
-            "--shape",
-            &r.shape,
-            "--controller",
-            r.controller.name(),
-        ]),
-        Some(s) => {
-            let from = s.run_path(out).display().to_string();
-            words(&["finetune", "--from", &from, "--shape", &r.shape])
-        }
-    };
-    let (evals, seed) = (r.evals.to_string(), r.seed.to_string());
-    let (seconds, population) = (c.seconds.to_string(), c.population.to_string());
-    args.extend(words(&[
-        "--evals",
-        &evals,
-        "--seed",
-        &seed,
-        "--seconds",
-        &seconds,
-    ]));
-    args.extend(words(&[
-        "--population",
-        &population,
-        "--terrain",
-        &c.terrain,
-    ]));
-    if keep {
-        args.push("--keep-checkpoint".to_string());
-    }
-    let mut needs: Vec<PathBuf> = r.source.iter().map(|s| s.run_path(out)).collect();
-    if let Some(p) = prefix {
-        let from = p.run_path(out);
-        args.extend(["--continue".to_string(), checkpoint_of(&from)]);
-        needs.push(from);
-    }
-    args.extend(["--out".to_string(), path.display().to_string()]);
+    let from = r.source.as_ref().map(|s| s.run_path(out));
+    let continued = prefix.map(|p| p.run_path(out));
+    let needs = from.iter().chain(&continued).cloned().collect();
     Job {
         stage,
-        args,
-        out: path,
+        task: Task::Run(RunTask {
+            from,
+            shape: r.shape.clone(),
+            controller: r.controller,
+            evals: r.evals,
+            seed: r.seed,
+            seconds: c.seconds,
+            population: c.population,
+            terrain: c.terrain.clone(),
+            keep_checkpoint: keep,
+            continue_from: continued.as_deref().map(checkpoint_of),
+        }),
+        out: r.run_path(out),
         needs,
-        threaded: true,
     }
 }
 
 /// The checkpoint `vsr evolve` keeps next to the run file `run`.
-fn checkpoint_of(run: &Path) -> String {
-    format!("{}.checkpoint", run.display())
+fn checkpoint_of(run: &Path) -> PathBuf {
+    let mut name = run.as_os_str().to_owned();
+    name.push(".checkpoint");
+    PathBuf::from(name)
 }
 
 #[cfg(test)]

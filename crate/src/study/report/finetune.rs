@@ -1,12 +1,12 @@
 //! The RQ2 section of the report: fine-tuning against from scratch on a target shape (the
 //! summary and tests, the convergence table at matched evaluation counts, Fig. 7).
 
-use super::{comparisons, push_lines, summary_table, Report, Sample};
-use crate::experiment::campaign::figures::{band, best_series};
-use crate::experiment::campaign::file::FinetuneGroup;
-use crate::experiment::campaign::plan::RunSpec;
-use crate::experiment::campaign::results::{Results, RunData};
-use crate::statistics::{mann_whitney, Summary};
+use super::figures::{band, best_series};
+use super::tables::{comparisons, summary_table, Sample};
+use super::{push_lines, Report};
+use crate::study::campaign::file::FinetuneGroup;
+use crate::study::campaign::{Results, RunData, RunSpec};
+use crate::study::statistics::{mann_whitney, Summary};
 use std::fmt::Write;
 
 /// The paper's RQ2 claim is about speed ("fine-tuning reaches from-scratch quality in far

@@ -38,7 +38,7 @@ fn every_job_comes_after_the_jobs_it_needs_and_runs_are_not_repeated() {
     let jobs = plan(&c, Path::new("o"));
     // Runs: 2 controllers x 2 seeds + per seed (source, fine-tune; the scratch run is
     // the attention run of group a) = 8; each validated twice; 2 attention runs ablated.
-    assert_eq!(jobs.iter().filter(|j| j.threaded).count(), 8);
+    assert_eq!(jobs.iter().filter(|j| j.threaded()).count(), 8);
     assert_eq!(jobs.len(), 8 + 16 + 2);
     assert_needs_come_first(&jobs);
     let outs: std::collections::HashSet<_> = jobs.iter().map(|j| &j.out).collect();
@@ -55,25 +55,23 @@ fn a_longer_run_continues_the_shorter_one_with_the_same_seed() {
             .find(|j| j.out.file_name().unwrap().to_string_lossy() == name)
             .unwrap()
     };
+    let task = |stem: &str| match &job(stem).task {
+        Task::Run(t) => t.clone(),
+        other => panic!("{stem}: not a run: {other:?}"),
+    };
     let (short, long) = (job("biped-4x3-mlp-100-s2"), job("biped-4x3-mlp-300-s2"));
-    assert!(short.args.contains(&"--keep-checkpoint".to_string()));
+    assert!(task("biped-4x3-mlp-100-s2").keep_checkpoint);
     assert_eq!(short.stage, 1);
-    let at = long.args.iter().position(|a| a == "--continue").unwrap();
     assert_eq!(
-        long.args[at + 1],
-        "o/runs/biped-4x3-mlp-100-s2.json.checkpoint"
+        task("biped-4x3-mlp-300-s2").continue_from,
+        Some(PathBuf::from("o/runs/biped-4x3-mlp-100-s2.json.checkpoint"))
     );
     assert_eq!(long.needs, std::slice::from_ref(&short.out));
     assert_eq!(long.stage, 2);
     // Other seeds and controllers, and runs with no shorter twin, are left alone.
-    let alone = job("comb-7x2-attention-200-s1");
-    assert!(!alone
-        .args
-        .iter()
-        .any(|a| a.contains("checkpoint") || a == "--continue"));
-    assert!(!job("biped-4x3-attention-300-s1")
-        .args
-        .contains(&"--keep-checkpoint".into()));
+    let alone = task("comb-7x2-attention-200-s1");
+    assert!(!alone.keep_checkpoint && alone.continue_from.is_none());
+    assert!(!task("biped-4x3-attention-300-s1").keep_checkpoint);
 }
 
 #[test]
@@ -98,18 +96,5 @@ fn chains_of_budgets_and_fine_tunings_of_continued_runs_come_stage_after_stage()
     assert_eq!(
         stage("biped-4x3-attention-300-to-comb-7x2-100-s1.paper.json"),
         5
-    );
-}
-
-#[test]
-fn commands_are_complete_and_quoted() {
-    let c = Campaign::parse(CAMPAIGN).unwrap();
-    let jobs = plan(&c, Path::new("my study"));
-    let ft = jobs.iter().find(|j| j.args[0] == "finetune").unwrap();
-    assert_eq!(
-        ft.command_line("vsr", 2),
-        "vsr finetune --from 'my study/runs/comb-7x2-attention-200-s1.json' --shape \
-         biped-4x3 --evals 100 --seed 1 --seconds 30 --population 100 --terrain hilly-1-10 \
-         --out 'my study/runs/comb-7x2-attention-200-to-biped-4x3-100-s1.json' --threads 2"
     );
 }

@@ -1,7 +1,7 @@
-//! Order statistics of a small sample: median, quartiles, extremes, mean and standard
-//! deviation. Quantiles interpolate linearly between order statistics (numpy's default, as
-//! the GA's generation statistics do).
+//! The summary of a small sample: median, quartiles, extremes, mean and standard deviation
+//! (its quantiles are the engine's `crate::quantiles`, as the GA's generation statistics).
 
+use crate::quantiles::{median, quantile};
 use serde::Serialize;
 
 /// The summary of one sample; every field is NaN for an empty sample.
@@ -51,35 +51,6 @@ impl Summary {
     }
 }
 
-/// Median of `values` (any order; the mean of the middle two for an even count, computed as
-/// 0.5 (a + b)); NaN when empty. Validation medians (recorded in run and manifest files) and
-/// the reports' medians are this one function.
-pub fn median(values: &[f64]) -> f64 {
-    let mut sorted = values.to_vec();
-    sorted.sort_by(f64::total_cmp);
-    let n = sorted.len();
-    match n {
-        0 => f64::NAN,
-        _ if n % 2 == 1 => sorted[n / 2],
-        _ => 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]),
-    }
-}
-
-/// Quantile `q` in [0, 1] of an ascending `sorted` sample, linear between order statistics
-/// (the lower one next to an infinite one: interpolating towards it would give NaN); NaN
-/// when empty.
-pub fn quantile(sorted: &[f64], q: f64) -> f64 {
-    let Some(last) = sorted.len().checked_sub(1) else {
-        return f64::NAN;
-    };
-    let h = q.clamp(0.0, 1.0) * last as f64;
-    let (lo, hi) = (h.floor() as usize, h.ceil() as usize);
-    if lo == hi || !(sorted[lo].is_finite() && sorted[hi].is_finite()) {
-        return sorted[lo];
-    }
-    sorted[lo] + (h - lo as f64) * (sorted[hi] - sorted[lo])
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -90,11 +61,6 @@ mod tests {
         assert_eq!((s.n, s.min, s.q1, s.median), (5, 1.0, 2.0, 3.0));
         assert_eq!((s.q3, s.max, s.mean), (4.0, 5.0, 3.0));
         assert!((s.sd - 2.5f64.sqrt()).abs() < 1e-12);
-        assert_eq!(median(&[3.0, 1.0, 2.0]), 2.0);
-        assert_eq!(median(&[4.0, 1.0, 3.0, 2.0]), 2.5);
-        assert!(median(&[]).is_nan());
-        // numpy.quantile([1, 2, 3, 4], 0.25) = 1.75
-        assert_eq!(quantile(&[1.0, 2.0, 3.0, 4.0], 0.25), 1.75);
     }
 
     #[test]

@@ -7,7 +7,7 @@
 //! plan order). The `unseen` set is not used to choose, so its figure stays an unbiased
 //! estimate of how the chosen module walks on terrains it has never met.
 
-use super::plan::{Job, RunSpec};
+use super::plan::RunSpec;
 use super::results::{Results, RunData};
 use crate::controllers::ControllerKind;
 use crate::experiment::{Validation, ValidationSet};
@@ -171,8 +171,8 @@ pub fn choose(
     out
 }
 
-/// The manifest entry of `choice`, whose run `job` made; `None` if its run file is absent.
-pub fn entry(choice: &Choice, job: &Job, campaign: &str, code_version: &str) -> Option<Entry> {
+/// The manifest entry of `choice`, whose run `command` made; `None` if its run file is absent.
+pub fn entry(choice: &Choice, command: &str, campaign: &str, code_version: &str) -> Option<Entry> {
     let run = choice.data.run.as_ref()?;
     Some(Entry {
         file: file_name(&category(&choice.spec)),
@@ -191,7 +191,7 @@ pub fn entry(choice: &Choice, job: &Job, campaign: &str, code_version: &str) -> 
             .map(|(set, v)| (*set, SetFigures::from(v)))
             .collect(),
         chosen_from: choice.candidates,
-        command: job.command_line("vsr", 1),
+        command: command.to_string(),
         campaign: campaign.to_string(),
         code_version: code_version.to_string(),
         wall_seconds: run.timing.as_ref().map(|t| t.wall_seconds),
