@@ -34,10 +34,20 @@ install() {
   fi
 }
 
+# A free TCP port from $1 up (nothing listening), so that two local Slurms (two test runs
+# at once) do not meet.
+free_port() {
+  local port=$1
+  while ss -Hltn "sport = :$port" | grep -q .; do port=$((port + 1)); done
+  echo "$port"
+}
+
 # One node, this host, with its CPUs as slurmd detects them and half its memory (so that
 # `--mem` requests fit), one partition; no accounting, no cgroups.
 write_conf() {
-  local host node memory
+  local host node memory ctld_port slurmd_port
+  ctld_port=$(free_port $((20000 + RANDOM % 20000)))
+  slurmd_port=$(free_port $((ctld_port + 1)))
   host=$(hostname -s)
   node=$(slurmd -C | head -1 | sed 's/ RealMemory=[0-9]*//')
   memory=$(( $(free -m | awk '/^Mem:/ { print $2 }') / 2 ))
@@ -47,6 +57,8 @@ ClusterName=vsr-local
 SlurmctldHost=$host(127.0.0.1)
 SlurmUser=root
 AuthType=auth/munge
+SlurmctldPort=$ctld_port
+SlurmdPort=$slurmd_port
 StateSaveLocation=$state/ctld
 SlurmdSpoolDir=$state/spool
 SlurmctldPidFile=$state/slurmctld.pid
