@@ -102,6 +102,14 @@ fn rank_sum(x: &[f64], y: &[f64]) -> (f64, Vec<usize>) {
 
 /// P(U >= u) under the null hypothesis for samples of `n1` and `n2` distinct values.
 fn exact_upper_tail(n1: usize, n2: usize, u: usize) -> f64 {
+    let all = exact_null_counts(n1, n2);
+    let total: f64 = all.iter().sum();
+    all[u.min(n1 * n2)..].iter().sum::<f64>() / total
+}
+
+/// The null distribution of U for samples of `n1` and `n2` distinct values: entry `v` counts
+/// the arrangements with U = v (0 ..= n1 n2), of C(n1 + n2, n1) in all.
+pub(crate) fn exact_null_counts(n1: usize, n2: usize) -> Vec<f64> {
     let max_u = n1 * n2;
     // counts[i][j][v]: arrangements of i x's and j y's with U = v.
     let mut counts = vec![vec![vec![0.0f64; max_u + 1]; n2 + 1]; n1 + 1];
@@ -117,9 +125,7 @@ fn exact_upper_tail(n1: usize, n2: usize, u: usize) -> f64 {
             }
         }
     }
-    let all = &counts[n1][n2];
-    let total: f64 = all.iter().sum();
-    all[u.min(max_u)..].iter().sum::<f64>() / total
+    counts.swap_remove(n1).swap_remove(n2)
 }
 
 /// Two-sided p of the normal approximation for U = `u` (the larger of U1, U2).
