@@ -9,6 +9,13 @@ use vsr::statistics::{
     wilcoxon_signed_rank,
 };
 
+/// Two samples of 10 velocities (m/s; 3.14 is a velocity, not pi).
+const X10: [f64; 10] = [1.83, 0.50, 1.62, 2.48, 1.68, 1.88, 1.55, 3.06, 1.30, 0.27];
+#[allow(clippy::approx_constant)]
+const Y10: [f64; 10] = [
+    0.878, 0.647, 0.598, 2.05, 1.06, 1.29, 1.06, 3.14, 1.29, 0.11,
+];
+
 fn close(a: f64, b: f64, tol: f64) -> bool {
     (a - b).abs() <= tol
 }
@@ -55,10 +62,7 @@ fn hodges_lehmann_five_against_five() {
 /// coverage 0.95674.
 #[test]
 fn hodges_lehmann_ten_against_ten() {
-    let x = [1.83, 0.50, 1.62, 2.48, 1.68, 1.88, 1.55, 3.06, 1.30, 0.27];
-    let y = [
-        0.878, 0.647, 0.598, 2.05, 1.06, 1.29, 1.06, 3.14, 1.29, 0.11,
-    ];
+    let (x, y) = (X10, Y10);
     let s = hodges_lehmann(&x, &y, 0.05).expect("samples");
     assert!(close(s.estimate, 0.55, 1e-12), "{}", s.estimate);
     assert!(close(s.interval.low, -0.378, 1e-12), "{:?}", s.interval);
@@ -78,10 +82,7 @@ fn hodges_lehmann_ten_against_ten() {
 /// p = 0.05023302822033748 (W+ = 55 of 66).
 #[test]
 fn signed_rank_matches_scipy() {
-    let x = [1.83, 0.50, 1.62, 2.48, 1.68, 1.88, 1.55, 3.06, 1.30, 0.27];
-    let y = [
-        0.878, 0.647, 0.598, 2.05, 1.06, 1.29, 1.06, 3.14, 1.29, 0.11,
-    ];
+    let (x, y) = (X10, Y10);
     let t = wilcoxon_signed_rank(&x, &y);
     assert_eq!((t.n, t.w_plus), (10, 50.0));
     assert!(close(t.p, 0.02182427562605354, 1e-9), "{}", t.p);
@@ -111,10 +112,7 @@ fn median_intervals_from_order_statistics() {
 /// the smallest p of 5 against 5 is 2/252.
 #[test]
 fn resampled_intervals_and_power() {
-    let x = [1.83, 0.50, 1.62, 2.48, 1.68, 1.88, 1.55, 3.06, 1.30, 0.27];
-    let y = [
-        0.878, 0.647, 0.598, 2.05, 1.06, 1.29, 1.06, 3.14, 1.29, 0.11,
-    ];
+    let (x, y) = (X10, Y10);
     let a12 = mann_whitney(&x, &y).a12;
     let i = a12_interval(&x, &y, 0.05).expect("samples");
     assert!(i.low < a12 && a12 < i.high, "{i:?} around {a12}");
