@@ -4,7 +4,7 @@
 //! the Hodges-Lehmann shift and its exact interval, the signed-rank test, order-statistic
 //! intervals, and the resampled A12 interval and detectable effect.
 
-use vsr::statistics::{
+use vsr::study::statistics::{
     a12_interval, detectable_a12, hodges_lehmann, holm, mann_whitney, median_interval,
     wilcoxon_signed_rank,
 };
