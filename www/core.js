@@ -70,3 +70,9 @@ export function checkTerrain(name) { return wasm.checkTerrain(name); }
 
 /** '' or why `name` is not a training terrain (family or name). @param {string} name @returns {string} */
 export function checkTrainingTerrain(name) { return wasm.checkTrainingTerrain(name); }
+
+/**
+ * The four numbers a, b, c, d of an attention genome that fix its matrices:
+ * A[r][c] = tanh(a s_r s_c + b s_r + c s_c + d). @param {Float32Array} genome @returns {number[]}
+ */
+export function attentionTerms(genome) { return Array.from(wasm.attentionTerms(genome)); }

@@ -14,6 +14,7 @@ import { Editor } from './editor.js';
 import { messageOf } from './kit.js';
 import { MessageBox, plain } from './message.js';
 import { ModuleList } from './modules.js';
+import { Race } from './race.js';
 import { RunPanel } from './run-panel.js';
 import { Keeper } from './keeper.js';
 import { Viewer } from './viewer.js';
@@ -66,12 +67,14 @@ const keeper = new Keeper(defaults, el('share-link'), {
   say: (text, kind = 'error') => messages.show(text, kind),
 });
 const modules = new ModuleList(document, { loadOnto: loadModule, openOwn: openModule, message: showMessage });
+const race = new Race(document, { module: () => modules.selected(), terrain: () => viewer.terrain.value.trim(), message: showMessage });
 const runs = new RunPanel(document, defaults, {
   body: () => ({ rows: drawing.rows(), ok: check.ok }),
   controller: () => controllerSelect.value,
   source: () => (brain && brain.controller === 'attention' ? brain.source : null),
   best: onBest,
   finished: onFinished,
+  generation: (top, generation, settings, kind, mode) => race.keepGeneration(top, generation, settings, kind, mode),
   running: (on) => { running = on; editor.setLocked(on); updateButtons(); },
   message: showMessage,
   note: (text) => messages.show(text, 'note'),

@@ -46,6 +46,8 @@ export class Renderer {
     this.view = null;
     this.snapCamera = true;
     this.lastDraw = 0;
+    /** A voxel outlined on the robot (the one the attention reader shows), or -1. */
+    this.highlight = -1;
   }
 
   /**
@@ -203,6 +205,16 @@ export class Renderer {
     ctx.beginPath();
     for (let b = 0; b < voxels * BODY_FLOATS; b += 3) squarePath(ctx, bodies[b], bodies[b + 1], bodies[b + 2]);
     ctx.stroke();
+    if (this.highlight >= 0 && this.highlight < voxels) {
+      const c = this.highlight * CORNER_FLOATS;
+      ctx.beginPath();
+      ctx.moveTo(corners[c], corners[c + 1]);
+      for (let k = 2; k < CORNER_FLOATS; k += 2) ctx.lineTo(corners[c + k], corners[c + k + 1]);
+      ctx.closePath();
+      ctx.strokeStyle = '#2f6fb0';
+      ctx.lineWidth = 5 / s;
+      ctx.stroke();
+    }
   }
 
   /** Screen-space labels: grid metres along the top and a metre scale bar. */

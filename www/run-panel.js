@@ -29,6 +29,9 @@ const STYLE = {
  * @property {(genome: Float32Array, fitness: number, settings: import('./protocol.js').EvolveSettings, kind: string) => void} best
  *   a new best seen during a run (with "walk the best so far")
  * @property {(run: FinishedRun) => void} finished     a run ended with a run file
+ * @property {(top: {fitness: number, genome: Float32Array}, generation: number,
+ *   settings: import('./protocol.js').EvolveSettings, kind: string, mode: string) => void} [generation]
+ *   each generation's best evaluation (kept to race generations)
  * @property {(running: boolean) => void} running        a run started or ended
  * @property {(text: string) => void} message            shows an error ('' clears it)
  * @property {(text: string) => void} note               shows a note
@@ -239,6 +242,7 @@ export class RunPanel {
       this.chart.add(this.mode, STYLE[this.mode], msg.evaluations, this.bestSoFar);
     }
     this.chart.draw();
+    this.hooks.generation?.(msg.top, record.generation, settings, this.kind(settings), this.mode);
     if (msg.best && this.follow.checked && this.mode !== 'scratch') {
       this.hooks.best(msg.best.genome, msg.best.fitness, settings, this.kind(settings));
     }

@@ -1,11 +1,15 @@
 // @ts-check
 /**
  * The viewer: the simulation worker that walks the robot, the scene canvas, the live
- * figures and the attention maps, with Play / Hold / Restart, speed and terrain. It shows
+ * figures and the attention maps (one of them read enlarged), with Play / Hold / Restart,
+ * Freeze the attention, speed and terrain. It shows
  * whatever body and brain the page gives it; the worker answers 'loaded' or 'error' and a
  * refused load leaves the previous robot walking. Messages: protocol.js.
  */
 import { AttentionPanel } from './attention.js';
+import { AttentionReader } from './attention-reader.js';
+import { attentionTerms } from './core.js';
+import { FreezeControl } from './freeze.js';
 import { spawn } from './kit.js';
 import { FromWorker, ToWorker, frameIsConsistent } from './protocol.js';
 import { Readout } from './readout.js';
@@ -30,6 +34,8 @@ export class Viewer {
     this.renderer = new Renderer(this.canvas);
     this.readout = new Readout(doc);
     this.attention = new AttentionPanel(el('attention-panel'), el('attention'));
+    this.reader = new AttentionReader(doc, (voxel) => { this.renderer.highlight = voxel; this.attention.selected = voxel; this.attention.dirty = true; });
+    this.freeze = new FreezeControl(doc, (frozen) => this.worker.postMessage({ type: ToWorker.FREEZE, frozen }));
     this.status = el('status');
     this.buttons = { play: el('sim-play'), hold: el('sim-hold'), restart: el('sim-restart') };
     this.speed = /** @type {HTMLSelectElement} */ (el('speed'));
@@ -62,6 +68,10 @@ export class Viewer {
     this.canvas.addEventListener('click', (e) => {
       const pick = this.renderer.pick(e.clientX, e.clientY);
       if (pick) this.hooks.clicked(pick);
+    });
+    this.attention.canvas.addEventListener('click', (e) => {
+      const voxel = this.attention.pick(e.clientX, e.clientY);
+      if (voxel >= 0) this.reader.open(voxel, this.attention.cells[2 * voxel], this.attention.cells[2 * voxel + 1]);
     });
   }
 
@@ -96,13 +106,18 @@ export class Viewer {
         this.current = msg.params;
         this.renderer.setTerrain(msg.terrainXs, msg.terrainYs, !msg.carried);
         this.attention.setLayout(msg.cells);
+        this.reader.setEpisode(msg.voxels, msg.params.brain?.controller === 'attention' ? attentionTerms(msg.params.brain.genome) : null);
+        this.freeze.loaded(msg.controller);
         this.readout.reset();
         this.status.textContent = `${msg.voxels} voxels, ${msg.controller}`;
         for (const input of Object.values(this.gait)) input.disabled = msg.params.brain !== null;
         this.hooks.loaded(msg.params, msg.voxels, msg.controller);
         break;
       case FromWorker.FRAME:
-        if (frameIsConsistent(msg)) { this.renderer.setFrame(msg); this.readout.update(msg); this.attention.setFrame(msg); }
+        if (frameIsConsistent(msg)) {
+          this.renderer.setFrame(msg); this.readout.update(msg); this.attention.setFrame(msg);
+          this.reader.setFrame(msg.attention); this.freeze.setFrame(msg);
+        }
         break;
       case FromWorker.STATE:
         this.running = msg.running;

@@ -8,8 +8,8 @@ use wasm_bindgen::prelude::{wasm_bindgen, JsError, JsValue};
 use super::episode::GAIT_NAME;
 use super::Episode;
 use crate::controllers::ControllerKind;
-use crate::experiment::evaluate::{controller_for, replay};
-use crate::experiment::{check_start_offset, PhaseGait};
+use crate::experiment::evaluate::replay;
+use crate::experiment::{check_start_offset, freezable_policy, PhaseGait};
 use crate::experiment::{Episode as CoreEpisode, Policy, RunFile};
 use crate::simulation::constants::PLACEMENT_LEFT_X;
 use crate::simulation::{Shape, Terrain};
@@ -53,8 +53,9 @@ impl Episode {
     /// Builds the episode of a genome on a drawn body: a `controller` (`attention`, `mlp`,
     /// `mlp-comm`) with parameters `genome` drives the body `rows` on `terrain`, with sensor
     /// noise seed 0, its left edge placed at `left` metres (NaN: the start line; a place
-    /// off the ground between the walls also falls back to the start line). A genome that
-    /// does not fit the body throws an `Error` saying so.
+    /// off the ground between the walls also falls back to the start line). An attention
+    /// brain can be frozen (`freezeAttention`). A genome that does not fit the body throws
+    /// an `Error` saying so.
     #[wasm_bindgen(js_name = fromGenome)]
     pub fn from_genome(
         rows: &str,
@@ -65,7 +66,7 @@ impl Episode {
     ) -> Result<Episode, JsError> {
         let kind: ControllerKind = controller.parse()?;
         let shape = Shape::parse(rows)?;
-        let brain = Policy::Brain(controller_for(kind, &shape, genome)?);
+        let brain = freezable_policy(kind, &shape, genome)?;
         let terrain = Terrain::parse(terrain)?;
         let offset = placement_offset(&shape, &terrain, left);
         let inner =

@@ -3,7 +3,8 @@
 //! Thin handles over core types, one file per wrapped type, mirroring the core's tree:
 //! [`Episode`] wraps `experiment::Episode` (built from a phase gait in `episode.rs`, from
 //! a run file in `controlled.rs`); [`Evolution`] wraps `experiment::Evolution` for the page's
-//! GA coordinator and [`evaluate_job`] is one evaluation of its workers (`evolution.rs`).
+//! GA coordinator and [`evaluate_job`] is one evaluation of its workers (`evolution.rs`);
+//! freezing a walking robot's attention and its speed so far are in `live.rs`.
 //! Bulk per-frame data leaves linear memory as flat `Float32Array`s whose layouts are documented on the getters that fill them
 //! and, for the page, once in `www/protocol.js`. Core errors become JS `Error`s (never
 //! traps) so a worker can report bad input and keep its previous state.
@@ -13,11 +14,13 @@ mod bench;
 mod controlled;
 mod episode;
 mod evolution;
+mod live;
 mod page;
 
 pub use bench::bench_episode;
 pub use episode::Episode;
 pub use evolution::{evaluate_job, Evolution};
+pub use live::attention_terms;
 pub use page::{
     check_genome, check_shape, check_terrain, check_training_terrain, defaults, describe_run,
     fresh_seed, remap, run_genome, transplant,
