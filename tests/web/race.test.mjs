@@ -84,13 +84,16 @@ test('the bests of a run\'s generations join a race (on a phone)', async () => {
   assert.ok(options.length >= 3 && /^generation 0 \(/.test(options[0]), `one entry per generation: ${options}`);
   await byTestId(page, 'race-generation').selectOption('0');
   await byTestId(page, 'race-add-generation').click();
-  await page.locator('#race-best').click();
+  await page.waitForFunction(() => Number(/** @type {HTMLElement} */ (document.querySelector('[data-testid="race-speed"]'))?.dataset.time) > 2);
+  await page.locator('#race-best').click(); // 2 s later: the race starts again, both together
   await page.waitForFunction(() => document.querySelectorAll('[data-testid="race-robot"]').length === 2);
   const names = await page.locator('.race-name').allTextContents();
   assert.match(names[0], /generation 0's best/);
   assert.match(names[1], /best so far \(generation \d+\)/);
   await page.waitForFunction(() => [...document.querySelectorAll('[data-testid="race-speed"]')]
     .every((o) => Number(/** @type {HTMLElement} */ (o).dataset.time) > 1), undefined, { timeout: 30_000 });
+  const times = (await speeds(page)).map((r) => r.time);
+  assert.ok(Math.max(...times) - Math.min(...times) < 1, `started together, they walk in step: ${times}`);
   await byTestId(page, 'race').scrollIntoViewIfNeeded();
   await screenshot(page, 'race-420.png');
   await byTestId(page, 'race').screenshot({ path: path.join(SCREENSHOTS, 'race-420-panel.png') });
