@@ -52,6 +52,8 @@ pub struct Figure {
     pub y_label: String,
     /// The content.
     pub plot: Plot,
+    /// Lines of text written under the title (e.g. the tests between the boxes).
+    pub notes: Vec<String>,
 }
 
 /// The band of several series of (x, y) points: point i of every series is aggregated (the

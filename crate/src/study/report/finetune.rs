@@ -1,6 +1,7 @@
 //! The RQ2 section of the report: fine-tuning against from scratch on a target shape (the
 //! summary and tests, the convergence table at matched evaluation counts, Fig. 7).
 
+use super::families::Comparison;
 use super::figures::{band, best_series};
 use super::tables::{comparisons, summary_table, Sample};
 use super::{push_lines, Report};
@@ -123,12 +124,17 @@ fn prefix_stand_in(
     }
 }
 
-pub(super) fn finetune_section(
+/// The label of a transfer in tables ("SOURCE -> TARGET").
+pub(super) fn transfer(pair: &[String; 2]) -> String {
+    format!("{} -> {}", pair[0], pair[1])
+}
+
+/// The samples of a transfer: fine-tuned, then from scratch on the target (when planned).
+pub(super) fn finetune_samples(
     results: &Results,
     g: &FinetuneGroup,
     pair: &[String; 2],
-    r: &mut Report,
-) {
+) -> Vec<Sample> {
     let seeds = g.seeds.as_ref().unwrap_or(&results.campaign.seeds);
     let [from, to] = pair;
     let source = RunSpec::scratch(from, g.controller, g.source_evals, 0);
@@ -143,6 +149,19 @@ pub(super) fn finetune_section(
             runs: results.seeds_of(&RunSpec::scratch(to, g.controller, evals, 0), seeds),
         });
     }
+    samples
+}
+
+pub(super) fn finetune_section(
+    results: &Results,
+    g: &FinetuneGroup,
+    pair: &[String; 2],
+    tests: &[&Comparison],
+    r: &mut Report,
+) {
+    let seeds = g.seeds.as_ref().unwrap_or(&results.campaign.seeds);
+    let [from, to] = pair;
+    let mut samples = finetune_samples(results, g, pair);
     let _ = writeln!(
         r.markdown,
         "## {} · {from} -> {to} · {}\n",
@@ -150,7 +169,7 @@ pub(super) fn finetune_section(
     );
     let sets = &results.campaign.validate;
     summary_table(&samples, sets, &mut r.markdown);
-    comparisons(&samples, sets, &mut r.markdown);
+    comparisons(tests, &mut r.markdown);
     if let (Some(evals), [_, scratch]) = (g.scratch_evals, &mut samples[..]) {
         *scratch = prefix_stand_in(results, g, (to, evals), seeds, scratch, r);
     }

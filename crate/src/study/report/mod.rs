@@ -18,15 +18,17 @@
 
 use crate::controllers::ControllerKind;
 use crate::study::campaign::file::EvolveGroup;
-use crate::study::campaign::{Results, RunSpec};
+use crate::study::campaign::Results;
 use figures::{ablation_series, band, best_series, box_of, rate_series, Figure, Plot};
 use std::fmt::Write;
 
+mod families;
 pub mod figures;
 mod finetune;
 mod tables;
+use families::{planned, Comparison};
 use finetune::finetune_section;
-use tables::{cell, comparisons, summary_table, Sample};
+use tables::{cell, comparisons, families_table, samples_of, summary_table, Sample};
 
 /// The report: Markdown text and the figures it links.
 #[derive(Debug, Clone)]
@@ -44,16 +46,26 @@ pub fn report(results: &Results) -> Report {
         figures: Vec::new(),
     };
     missing_section(results, &mut r.markdown);
+    let tests = planned(results);
+    families_table(&tests, &mut r.markdown);
     for g in &results.campaign.evolve {
         for shape in &g.shapes {
             for &evals in &g.evals {
-                evolve_section(results, g, shape, evals, &mut r);
+                let mine: Vec<&Comparison> = tests
+                    .iter()
+                    .filter(|c| (&c.group, &c.shape, c.evals) == (&g.name, shape, evals))
+                    .collect();
+                evolve_section(results, g, (shape, evals), &mine, &mut r);
             }
         }
     }
     for g in &results.campaign.finetune {
         for pair in &g.pairs {
-            finetune_section(results, g, pair, &mut r);
+            let mine: Vec<&Comparison> = tests
+                .iter()
+                .filter(|c| (&c.group, &c.shape) == (&g.name, &finetune::transfer(pair)))
+                .collect();
+            finetune_section(results, g, pair, &mine, &mut r);
         }
     }
     r
@@ -85,22 +97,20 @@ fn missing_section(results: &Results, md: &mut String) {
     md.push('\n');
 }
 
-fn evolve_section(results: &Results, g: &EvolveGroup, shape: &str, evals: u64, r: &mut Report) {
-    let seeds = g.seeds.as_ref().unwrap_or(&results.campaign.seeds);
-    let samples: Vec<Sample> = g
-        .controllers
-        .iter()
-        .map(|&c| Sample {
-            label: c.to_string(),
-            runs: results.seeds_of(&RunSpec::scratch(shape, c, evals, 0), seeds),
-        })
-        .collect();
+fn evolve_section(
+    results: &Results,
+    g: &EvolveGroup,
+    (shape, evals): (&str, u64),
+    tests: &[&Comparison],
+    r: &mut Report,
+) {
+    let samples = samples_of(results, g, shape, evals);
     let id = format!("{}-{shape}-{evals}", g.name);
     let md = &mut r.markdown;
     let _ = writeln!(md, "## {} · {shape} · {evals} evaluations\n", g.name);
     let sets = &results.campaign.validate;
     summary_table(&samples, sets, md);
-    comparisons(&samples, sets, md);
+    comparisons(tests, md);
     let bands = samples
         .iter()
         .filter_map(|s| band(&s.label, &best_series(&s.runs, 0.0)));
@@ -127,6 +137,7 @@ fn evolve_section(results: &Results, g: &EvolveGroup, shape: &str, evals: u64, r
                 x_label: "controller".into(),
                 y_label: "velocity (m/s)".into(),
                 plot: Plot::Boxes(boxes),
+                notes: box_notes(tests, &format!("{set} mean")),
             });
         }
     }
@@ -155,6 +166,7 @@ fn push_lines(
         x_label: x.into(),
         y_label: y.into(),
         plot: Plot::Lines(bands),
+        notes: Vec::new(),
     });
 }
 
@@ -227,4 +239,22 @@ fn slow_part(samples: &[Sample], id: &str, shape: &str, r: &mut Report) {
         "value",
         bands.collect(),
     );
+}
+
+/// The tests between the boxes of a measure, one line each, for the figure.
+fn box_notes(tests: &[&Comparison], measure: &str) -> Vec<String> {
+    tests
+        .iter()
+        .filter(|c| c.measure == measure)
+        .map(|c| {
+            format!(
+                "{} vs {}: p = {:.4}, Holm {:.4} ({})",
+                c.a,
+                c.b,
+                c.test.p,
+                c.holm.0,
+                c.outcome()
+            )
+        })
+        .collect()
 }
