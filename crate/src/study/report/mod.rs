@@ -25,6 +25,8 @@ use std::fmt::Write;
 mod families;
 pub mod figures;
 mod finetune;
+mod plateau;
+mod sets;
 mod tables;
 use families::{planned, Comparison};
 use finetune::finetune_section;
@@ -48,6 +50,7 @@ pub fn report(results: &Results) -> Report {
     missing_section(results, &mut r.markdown);
     let tests = planned(results);
     families_table(&tests, &mut r.markdown);
+    sets::sets_section(results, &mut r.markdown);
     for g in &results.campaign.evolve {
         for shape in &g.shapes {
             for &evals in &g.evals {
@@ -111,6 +114,7 @@ fn evolve_section(
     let sets = &results.campaign.validate;
     summary_table(&samples, sets, md);
     comparisons(tests, md);
+    plateau::plateau_table(&samples, md);
     let bands = samples
         .iter()
         .filter_map(|s| band(&s.label, &best_series(&s.runs, 0.0)));
