@@ -90,6 +90,9 @@ export const DT = 1 / 60;
  * @property {Brain | null} brain  the controller that drives the body, or null for the gait
  * @property {number} [until]    seconds: the episode ends there, at the step `vsr evaluate`
  *                               ends an episode of that length (a race); none: it walks on
+ * @property {number} seconds    the episode's length (s): its speed is measured over it, as a
+ *                               fitness evaluation measures it; the robot walks on after it
+ *                               (unless `until` stops it)
  * @property {Shift | false} [keepPlace] an edit of the walking robot: build it in the posture
  *                               and motion of the current one (its cells the current ones
  *                               shifted by the Shift), not at rest on the start line
@@ -119,6 +122,9 @@ export const DT = 1 / 60;
  * @property {number} centreY      mean y of voxel centres (m)
  * @property {number} velocity     mean forward speed so far (m/s), as fitness defines it
  * @property {boolean} frozen      the attention matrices are frozen ('freeze')
+ * @property {number} distance     the centre's x since the start (m), as the fitness measures it
+ * @property {number} episodeSpeed `velocity` at the end of the episode (`seconds`), the
+ *                                 number `vsr evaluate` prints; NaN until the episode ended
  * @property {number} simPerWall   simulated s per wall s while running (achieved)
  * @property {number} simPerCompute simulated s per s spent inside `step` (engine speed)
  * @property {Float32Array} corners 8n floats, see the layout above

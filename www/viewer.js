@@ -87,12 +87,13 @@ export class Viewer {
   /**
    * Walks `rows` driven by `brain` (or the phase gait when null), from the start line or, with
    * `keepPlace` (an edit's shift), in the posture and motion of the robot walking now.
+   * Its speed is measured over an episode of `seconds`.
    * @param {string} rows @param {import('./protocol.js').Brain | null} brain
-   * @param {import('./protocol.js').Shift | false} [keepPlace]
+   * @param {import('./protocol.js').Shift | false} [keepPlace] @param {number} [seconds]
    */
-  show(rows, brain, keepPlace = false) {
+  show(rows, brain, keepPlace = false, seconds = this.wanted?.seconds ?? NaN) {
     this.wanted = {
-      shape: rows, terrain: this.terrain.value.trim(), brain, keepPlace,
+      shape: rows, terrain: this.terrain.value.trim(), brain, keepPlace, seconds,
       frequency: this.gait.frequency.valueAsNumber, phase: this.gait.phase.valueAsNumber,
     };
     this.worker.postMessage({ type: ToWorker.LOAD, params: this.wanted });
@@ -108,7 +109,7 @@ export class Viewer {
         this.attention.setLayout(msg.cells);
         this.reader.setEpisode(msg.voxels, msg.params.brain?.controller === 'attention' ? attentionTerms(msg.params.brain.genome) : null);
         this.freeze.loaded(msg.controller);
-        this.readout.reset();
+        this.readout.reset(msg.params, msg.carried);
         this.status.textContent = `${msg.voxels} voxels, ${msg.controller}`;
         for (const input of Object.values(this.gait)) input.disabled = msg.params.brain !== null;
         this.hooks.loaded(msg.params, msg.voxels, msg.controller);
