@@ -10,6 +10,7 @@
  * leaves the address bar, and Share's link leaves it at the next change, so that a reload
  * shows the kept state, with every later edit, never an older link.
  */
+import { plain } from './message.js';
 import { decodeState, encodeState } from './share.js';
 import { keep, loadKept } from './storage.js';
 
@@ -101,7 +102,7 @@ export class Keeper {
 
   /** @param {string} why @param {string} instead whose robot is shown instead */
   refuse(why, instead) {
-    this.hooks.say(`This link could not be opened: ${why}. It may have been cut short or changed on the way; `
+    this.hooks.say(`This link could not be opened: ${plain(why)}. It may have been cut short or changed on the way; `
       + `ask for it again. Shown instead: ${instead}, ${this.hooks.shown()}.`, 'lasting');
   }
 }

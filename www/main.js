@@ -80,7 +80,12 @@ const runs = new RunPanel(document, defaults, {
   best: onBest,
   finished: onFinished,
   generation: (top, generation, settings, kind, mode) => race.keepGeneration(top, generation, settings, kind, mode),
-  running: (on) => { running = on; editor.setLocked(on); updateButtons(); },
+  running: (on) => {
+    running = on;
+    editor.setLocked(on);
+    updateButtons();
+    if (!on) speedNote.show(brain, viewer.terrain.value.trim(), episodeSeconds()); // measured once the workers are free
+  },
   message: showMessage,
   note: (text) => messages.show(text, 'note'),
 });
@@ -171,12 +176,12 @@ function showBrain() {
   updateParams();
   const seconds = episodeSeconds();
   viewer.show(drawing.rows(), brain ? { controller: brain.controller, genome: brain.genome } : null, keepPlace, seconds);
-  speedNote.show(brain, viewer.terrain.value.trim(), seconds);
+  speedNote.show(brain, viewer.terrain.value.trim(), seconds, !running);
   runs.showWalking(brain?.run === true);
   keepPlace = false;
   el('driver').textContent = brain
     ? `Driven by: ${brain.label} (${brain.controller}, ${brain.genome.length} genes).`
-    : 'Driven by: the phase gait (no controller yet: evolve one, or load a module).';
+    : 'Driven by: the phase gait (no brain yet: evolve one, or load a module).';
   updateButtons();
 }
 
@@ -398,9 +403,14 @@ function wire() {
   });
   controllerSelect.addEventListener('change', controllerChosen);
   el('share').addEventListener('click', () => keeper.share());
+  el('glossary-open').addEventListener('click', () => { el('glossary').open = true; el('glossary').scrollIntoView({ behavior: 'smooth' }); });
   for (const input of Object.values(runs.inputs)) input.addEventListener('change', () => keeper.schedule());
   viewer.terrain.addEventListener('change', () => { speedNote.show(brain, viewer.terrain.value.trim(), episodeSeconds()); keeper.schedule(); });
-  runs.inputs.seconds.addEventListener('change', () => { if (!brain?.seconds) showBrain(); });
+  runs.inputs.seconds.addEventListener('change', () => {
+    if (brain?.seconds) return; // a trained brain walks the episodes it was trained on
+    viewer.setSeconds(episodeSeconds());
+    speedNote.show(brain, viewer.terrain.value.trim(), episodeSeconds());
+  });
 }
 
 async function start() {

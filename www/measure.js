@@ -20,6 +20,7 @@ export class Measurer {
     this.asked = 0;
     /** @type {Map<number, {resolve: (v: number) => void, reject: (e: Error) => void}>} */
     this.waiting = new Map();
+    this.start(); // its wasm module loads with the page's, not in the middle of a run
   }
 
   /**

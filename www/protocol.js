@@ -16,6 +16,7 @@
  *   {type: 'speed', speed}   simulated seconds per wall second; 0 means as fast as possible
  *   {type: 'freeze', frozen} freeze every voxel's attention matrix where it is now (true) or
  *                            release it (false); a brain without attention answers 'error'
+ *   {type: 'length', seconds} the episode's length from now on (its speed is measured over it)
  *
  * Worker -> page
  *   {type: 'ready'}                      the wasm module is instantiated
@@ -51,6 +52,7 @@ export const ToWorker = Object.freeze({
   RESET: 'reset',
   SPEED: 'speed',
   FREEZE: 'freeze',
+  LENGTH: 'length',
 });
 
 /** Message types sent by the worker to the page. */

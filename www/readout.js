@@ -33,17 +33,20 @@ export class Readout {
     this.latest = null;
     /** The episode walking: its length and terrain, and whether it went on from an edit. */
     this.episode = { seconds: NaN, terrain: '', edited: false };
-    /** Distance walked before the latest edit (m): the distance runs on across edits. */
-    this.before = 0;
+    /**
+     * Where the walk started: the centre's x after the first step of its first episode (m),
+     * NaN until then. Edits of the walking robot keep it, so the distance runs on across them.
+     */
+    this.origin = NaN;
   }
 
   /**
    * A new episode starts: forgets the pace history; an edit of the walking robot (`carried`)
-   * keeps the distance walked so far.
+   * keeps where the walk started.
    * @param {import('./protocol.js').EpisodeParams} params @param {boolean} carried
    */
   reset(params, carried) {
-    this.before = carried ? Number(this.fields.x.dataset.value) || 0 : 0;
+    if (!carried) this.origin = NaN;
     this.episode = { seconds: params.seconds, terrain: params.terrain, edited: carried };
     this.history = [];
     this.latest = null;
@@ -74,7 +77,9 @@ export class Readout {
     const first = this.history[0];
     const velocity = frame.time > first.t ? (frame.centreX - first.x) / (frame.time - first.t) : NaN;
     const { seconds, terrain, edited } = this.episode;
-    const x = this.before + frame.distance;
+    // A fresh walk's distance is the core's; an edited robot's runs on from the walk's start.
+    if (!this.episode.edited) this.origin = frame.centreX - frame.distance;
+    const x = this.episode.edited && Number.isFinite(this.origin) ? frame.centreX - this.origin : frame.distance;
     show(this.fields.time, frame.time, `${frame.time.toFixed(2)} s`);
     show(this.fields.x, x, `${x.toFixed(2)} m`);
     const ended = Number.isFinite(frame.episodeSpeed);

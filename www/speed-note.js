@@ -19,11 +19,17 @@ export class SpeedNote {
   /**
    * @param {import('./brain.js').Brain | null} brain @param {string} terrain the viewer's
    * @param {number} seconds the viewer's episode length
+   * @param {boolean} [now] measure it now (while a run uses the workers, the viewer's own measure is enough)
    */
-  show(brain, terrain, seconds) {
+  show(brain, terrain, seconds, now = true) {
     this.set(NaN, '');
     if (!brain) {
       this.set(NaN, `The phase gait has no brain: each voxel squeezes and swells on a clock. Its speed is measured as it walks, over a ${seconds}-s episode.`);
+      return;
+    }
+    if (!now) {
+      const trained = brain.trained && Number.isFinite(brain.trained.speed) ? `In training: ${brain.trained.speed.toFixed(2)} m/s. ` : '';
+      this.set(NaN, `${trained}The viewer measures its speed as it walks, over a ${seconds}-s episode on ${terrain}; the run goes on.`);
       return;
     }
     this.set(NaN, `Measuring its speed over a ${seconds}-s episode on ${terrain}…`);

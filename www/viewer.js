@@ -99,6 +99,13 @@ export class Viewer {
     this.worker.postMessage({ type: ToWorker.LOAD, params: this.wanted });
   }
 
+  /** The episode's length from now on, without restarting the walk. @param {number} seconds */
+  setSeconds(seconds) {
+    if (this.wanted) this.wanted = { ...this.wanted, seconds };
+    this.readout.episode.seconds = seconds;
+    this.worker.postMessage({ type: ToWorker.LENGTH, seconds });
+  }
+
   /** @param {any} msg a message from the worker */
   onMessage(msg) {
     switch (msg.type) {

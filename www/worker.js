@@ -53,7 +53,7 @@ self.onmessage = async (event) => {
   }
 };
 
-/** @param {{type: string, params?: import('./protocol.js').EpisodeParams, speed?: number, frozen?: boolean}} msg */
+/** @param {{type: string, params?: import('./protocol.js').EpisodeParams, speed?: number, frozen?: boolean, seconds?: number}} msg */
 function handle(msg) {
   switch (msg.type) {
     case ToWorker.LOAD: if (msg.params) load(msg.params); break;
@@ -62,6 +62,9 @@ function handle(msg) {
     case ToWorker.PAUSE: setRunning(false); break;
     case ToWorker.SPEED: speed = Math.max(0, Number(msg.speed) || 0); restartClocks(); break;
     case ToWorker.FREEZE: if (episode) { episode.freezeAttention(Boolean(msg.frozen)); postFrame(); } break;
+    case ToWorker.LENGTH:
+      if (episode && params) { episode.measureOver(Number(msg.seconds)); params = { ...params, seconds: Number(msg.seconds) }; }
+      break;
     default: reportError(`unknown message type ${JSON.stringify(msg.type)}`, false);
   }
 }

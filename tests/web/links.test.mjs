@@ -76,3 +76,29 @@ test('Evolve and Fine-tune: on the first screen at 1400 x 900, within one screen
   assert.deepEqual(phone.problems, []);
   await phone.context.close();
 });
+
+test('a glossary explains every word of the page; the paper and the study are linked; no internal names', async () => {
+  const { page, problems, context } = await openPage(env.browser, env.url);
+  const glossary = byTestId(page, 'glossary');
+  assert.equal(await glossary.evaluate((d) => /** @type {HTMLDetailsElement} */ (d).open), false);
+  await page.locator('#glossary-open').click();
+  assert.equal(await glossary.evaluate((d) => /** @type {HTMLDetailsElement} */ (d).open), true, 'the Glossary button opens it');
+  const terms = (await glossary.locator('dt').allTextContents()).join(' | ');
+  for (const word of ['voxel', 'module', 'attention', 'sensor', 'fitness', 'generation', 'evaluation', 'population', 'episode',
+    'transplant', 'fine-tune', 'from scratch', 'phase gait', 'seed', 'terrain', 'budget', 'playing at']) {
+    assert.match(terms, new RegExp(word), `the glossary explains "${word}"`);
+  }
+  assert.match(String(await glossary.textContent()), /query.*keys/s);
+  const paper = page.locator('header a[href="https://arxiv.org/abs/2204.06547"]');
+  assert.match(String(await paper.textContent()), /Evolving Modular Soft Robots without Explicit Inter-Module Communication using Local Self-Attention/);
+  const results = await page.locator('header a', { hasText: 'results' }).getAttribute('href');
+  const response = await page.request.get(new URL(String(results), env.url).href);
+  assert.equal(response.status(), 200, 'the study\'s results are served with the page');
+  assert.match(await response.text(), /^# /m);
+  const visible = await page.evaluate(() => document.body.innerText + [...document.querySelectorAll('[title]')].map((e) => e.getAttribute('title')).join(' '));
+  for (const internal of [/SPEC \d/, /downstream/i, /\bengine\b/i, /sim s \/ wall s/, /\.js\b/, /\bevals\b/]) {
+    assert.doesNotMatch(visible, internal, `the page shows ${internal}`);
+  }
+  assert.deepEqual(problems, []);
+  await context.close();
+});
