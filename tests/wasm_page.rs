@@ -115,7 +115,7 @@ fn the_viewer_measures_its_episode_as_the_fitness_does() {
     );
     assert_eq!(episode.episode_speed().to_bits(), fitness.to_bits());
     assert!(
-        episode.distance() > 0.0 && episode.speed() != fitness,
+        episode.distance() > 0.0 && episode.velocity() != fitness,
         "it walked on past the episode"
     );
     assert_eq!(json(defaults().expect("defaults"))["viewNoiseSeed"], "0");

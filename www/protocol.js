@@ -92,7 +92,7 @@ export const DT = 1 / 60;
  * @property {Brain | null} brain  the controller that drives the body, or null for the gait
  * @property {number} [until]    seconds: the episode ends there, at the step `vsr evaluate`
  *                               ends an episode of that length (a race); none: it walks on
- * @property {number} seconds    the episode's length (s): its speed is measured over it, as a
+ * @property {number} [seconds]  the episode's length (s): its speed is measured over it, as a
  *                               fitness evaluation measures it; the robot walks on after it
  *                               (unless `until` stops it)
  * @property {Shift | false} [keepPlace] an edit of the walking robot: build it in the posture

@@ -84,7 +84,7 @@ function load(next) {
     : Episode.gaitAt(next.shape, next.terrain, next.frequency, next.phase, left);
   const carried = Boolean(edit && episode && edit.from === episode.shape && next.terrain === params?.terrain);
   if (carried && edit && episode) fresh.carryPose(episode, edit.dx, edit.dy);
-  fresh.measureOver(next.seconds); // the speed over the episode, taken when it ends
+  if (next.seconds > 0) fresh.measureOver(next.seconds); // the speed over the episode, taken when it ends
   episode?.free();
   episode = fresh;
   params = next;
