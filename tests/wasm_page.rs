@@ -85,6 +85,10 @@ fn a_transplant_keeps_the_attention_block_and_redraws_the_rest() {
     assert_eq!(info["genes"], 73);
     assert_eq!(info["seconds"], run.config.seconds);
     assert_eq!(info["terrain"], "hilly-1-10");
+    assert_eq!(
+        info["evaluations"], 30100,
+        "the budget of 30000 takes whole generations"
+    );
 }
 
 #[wasm_bindgen_test]

@@ -46,7 +46,7 @@ export function checkShape(rows) { return wasm.checkShape(rows); }
 
 /**
  * @param {string} runFile a run file's JSON text
- * @returns {{shape: string, controller: string, seed: number, budget: number, fitness: number,
+ * @returns {{shape: string, controller: string, seed: number, budget: number, evaluations: number, fitness: number,
  *   genes: number, finetunedFrom: string | null, seconds: number, terrain: string}} throws a
  *   readable Error when malformed
  */

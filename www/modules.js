@@ -107,7 +107,8 @@ export class ModuleList {
       if (!module) { this.details.textContent = ''; return; }
       const info = describeRun(module.text);
       this.details.textContent = `${info.controller}, ${info.genes} genes, ${info.finetunedFrom ? 'fine-tuned' : 'evolved'} on ${info.shape}`
-        + `${info.finetunedFrom ? ` from a module evolved on ${info.finetunedFrom}` : ''} (seed ${info.seed}, budget ${info.budget} evaluations, `
+        + `${info.finetunedFrom ? ` from a module evolved on ${info.finetunedFrom}` : ''} (seed ${info.seed}, budget ${info.budget} evaluations${info.evaluations > info.budget
+          ? ` (it took ${info.evaluations}: a run finishes its last generation)` : ''}, `
         + `${info.seconds}-s episodes on ${info.terrain}; in training ${Number.isFinite(info.fitness) ? info.fitness.toFixed(2) : '–'} m/s)`;
       this.loadButton.title = info.controller === 'attention'
         ? `Put it on your robot: it keeps its ${this.attentionGenes} attention genes (the block every voxel shares); `

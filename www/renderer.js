@@ -46,6 +46,8 @@ export class Renderer {
     this.view = null;
     this.snapCamera = true;
     this.lastDraw = 0;
+    /** Where the ruler counts from (m): the walk's start, so it reads as the distance figure. */
+    this.origin = 0;
     /** A voxel outlined on the robot (the one the attention reader shows), or -1. */
     this.highlight = -1;
   }
@@ -159,7 +161,8 @@ export class Renderer {
     ctx.strokeStyle = 'rgba(40, 70, 100, 0.15)';
     ctx.lineWidth = 1 / view.s;
     ctx.beginPath();
-    for (let x = Math.ceil(view.left / 5) * 5; x <= view.right; x += 5) {
+    const o = this.origin;
+    for (let x = o + Math.ceil((view.left - o) / 5) * 5; x <= view.right; x += 5) {
       ctx.moveTo(x, view.bottom);
       ctx.lineTo(x, view.top);
     }
@@ -217,13 +220,13 @@ export class Renderer {
     }
   }
 
-  /** Screen-space labels: grid metres along the top and a metre scale bar. */
+  /** Screen-space labels: metres from the start along the top and a metre scale bar. */
   drawLabels(/** @type {View} */ view, /** @type {number} */ dpr) {
     const { ctx, canvas } = this;
     ctx.fillStyle = 'rgba(30, 50, 70, 0.8)';
     ctx.font = `${12 * dpr}px system-ui, sans-serif`;
-    for (let x = Math.ceil(view.left / 10) * 10; x <= view.right; x += 10) {
-      ctx.fillText(`${x} m`, (x - view.left) * view.s + 3 * dpr, 14 * dpr);
+    for (let d = Math.ceil((view.left - this.origin) / 10) * 10; this.origin + d <= view.right; d += 10) {
+      ctx.fillText(d === 0 ? 'start' : `${d} m`, (this.origin + d - view.left) * view.s + 3 * dpr, 14 * dpr);
     }
     const metres = niceLength(120 * dpr / view.s);
     const px = metres * view.s;

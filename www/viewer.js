@@ -124,6 +124,7 @@ export class Viewer {
       case FromWorker.FRAME:
         if (frameIsConsistent(msg)) {
           this.renderer.setFrame(msg); this.readout.update(msg); this.attention.setFrame(msg);
+          if (Number.isFinite(this.readout.origin)) this.renderer.origin = this.readout.origin; // the ruler reads as the distance
           this.reader.setFrame(msg.attention); this.freeze.setFrame(msg);
         }
         break;

@@ -38,6 +38,7 @@ test('the viewer\'s speed over an episode is `vsr evaluate`\'s; the distance cou
   await byTestId(page, 'pretrained').selectOption(ATTENTION);
   await page.locator('#module-open').click();
   await waitForText(page, 'status', /^10 voxels, attention$/);
+  await waitForText(page, 'module-details', /budget 30000 evaluations \(it took 30100: a run finishes its last generation\)/);
   await page.waitForFunction(() => Number(document.getElementById('sim-time')?.dataset.value) < 1);
   const x = await figure(page, 'robot-x');
   assert.ok(Math.abs(x) < 0.5, `the distance from the start reads ${x} m in the first second`);

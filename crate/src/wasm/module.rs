@@ -5,6 +5,7 @@ use serde::Serialize;
 use wasm_bindgen::prelude::{wasm_bindgen, JsError, JsValue};
 
 use super::page::to_js;
+use crate::experiment::evolution::planned_evaluations;
 use crate::experiment::RunFile;
 
 #[derive(Serialize)]
@@ -14,6 +15,7 @@ struct ModuleInfo {
     controller: String,
     seed: u64,
     budget: u64,
+    evaluations: u64,
     fitness: f64,
     genes: usize,
     finetuned_from: Option<String>,
@@ -22,7 +24,8 @@ struct ModuleInfo {
 }
 
 /// Reads a run file (its JSON) and describes its best individual: `{shape (rows),
-/// controller, seed, budget, fitness, genes, finetunedFrom (source rows or null), seconds
+/// controller, seed, budget, evaluations (what that budget took: whole generations),
+/// fitness, genes, finetunedFrom (source rows or null), seconds
 /// (its training episodes' length), terrain (its training terrain: a family such as
 /// hilly-1-10, or a name)}`. A malformed file throws an `Error` that says what is wrong.
 #[wasm_bindgen(js_name = describeRun)]
@@ -33,6 +36,10 @@ pub fn describe_run(run_file: &str) -> Result<JsValue, JsError> {
         controller: run.best.controller.to_string(),
         seed: run.config.seed,
         budget: run.config.ga.budget_evals,
+        evaluations: planned_evaluations(
+            run.config.ga.population as u64,
+            run.config.ga.budget_evals,
+        ),
         fitness: run.best.fitness,
         genes: run.best.genome.len(),
         finetuned_from: run.config.source.as_ref().map(|s| s.shape.to_rows()),
