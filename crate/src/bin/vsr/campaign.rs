@@ -192,7 +192,12 @@ pub fn load_results(campaign: Campaign, out: &Path) -> Result<Results> {
                 validation.insert(set, v);
             }
         }
-        let ablation = read_json(&spec.ablation_path(out), json)?;
+        let mut ablation = std::collections::BTreeMap::new();
+        for set in ValidationSet::ALL {
+            if let Some(a) = read_json(&spec.ablation_path(out, set), json)? {
+                ablation.insert(set, a);
+            }
+        }
         if let Some(d) = results.of_mut(&spec) {
             (d.run, d.validation, d.ablation) = (run, validation, ablation);
         }

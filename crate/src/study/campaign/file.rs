@@ -11,6 +11,7 @@
 //!
 //! [ablation]                     # settings of the frozen-attention ablation
 //! last_second = 30
+//! sets = ["paper", "unseen"]     # ablate on each set's first terrain (default: paper only)
 //!
 //! [[evolve]]                     # a grid: shapes x controllers x evals x seeds
 //! name = "rq1"
@@ -68,16 +69,27 @@ pub struct Campaign {
 }
 
 /// The frozen-attention ablation's settings.
-#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct AblationSettings {
     /// Freeze at every whole second 0 ..= `last_second`.
     pub last_second: u32,
+    /// The sets on whose first terrain each ablated run is ablated (`paper`: hilly-1-10-0,
+    /// the paper's; `unseen`: hilly-1-10-10000, outside the training pool).
+    #[serde(default = "paper_only")]
+    pub sets: Vec<ValidationSet>,
+}
+
+fn paper_only() -> Vec<ValidationSet> {
+    vec![ValidationSet::Paper]
 }
 
 impl Default for AblationSettings {
     fn default() -> Self {
-        AblationSettings { last_second: 30 }
+        AblationSettings {
+            last_second: 30,
+            sets: paper_only(),
+        }
     }
 }
 

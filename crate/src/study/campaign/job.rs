@@ -39,6 +39,8 @@ pub enum Task {
         genome: PathBuf,
         /// Freeze at every whole second up to this one.
         last_second: u32,
+        /// The terrain of the recording and the frozen episodes.
+        terrain: String,
         /// Episode seconds.
         seconds: f64,
     },

@@ -80,9 +80,14 @@ impl RunSpec {
             .join(format!("{}.{set}.json", self.stem()))
     }
 
-    /// Its ablation file under `out`.
-    pub fn ablation_path(&self, out: &Path) -> PathBuf {
-        out.join("ablation").join(format!("{}.json", self.stem()))
+    /// Its ablation file on `set`'s first terrain under `out` (`STEM.json` on the paper
+    /// set, as before there were two; `STEM.SET.json` on another).
+    pub fn ablation_path(&self, out: &Path, set: ValidationSet) -> PathBuf {
+        let name = match set {
+            ValidationSet::Paper => format!("{}.json", self.stem()),
+            other => format!("{}.{other}.json", self.stem()),
+        };
+        out.join("ablation").join(name)
     }
 
     /// True for controllers whose attention can be frozen.
@@ -175,16 +180,22 @@ pub fn plan(c: &Campaign, out: &Path) -> Vec<Job> {
                 needs: vec![run_path.clone()],
             });
         }
-        if ablated(c, r) {
+        let sets = if ablated(c, r) {
+            &c.ablation.sets[..]
+        } else {
+            &[]
+        };
+        for &set in sets {
             jobs.push(Job {
                 stage: stage + 1,
                 task: Task::Ablate {
                     genome: run_path.clone(),
                     last_second: c.ablation.last_second,
+                    terrain: set.first_terrain(),
                     seconds: c.seconds,
                 },
-                out: r.ablation_path(out),
-                needs: vec![run_path],
+                out: r.ablation_path(out, set),
+                needs: vec![run_path.clone()],
             });
         }
     }

@@ -15,14 +15,24 @@ pub struct RunData {
     pub run: Option<RunFile>,
     /// Validations found, by set.
     pub validation: BTreeMap<ValidationSet, Validation>,
-    /// The ablation, if it exists.
-    pub ablation: Option<Vec<AblationPoint>>,
+    /// The ablations found, by the set on whose first terrain they ran.
+    pub ablation: BTreeMap<ValidationSet, Vec<AblationPoint>>,
 }
 
 impl RunData {
     /// The mean validation velocity on `set` (the paper's re-assessment figure), if known.
     pub fn validation_mean(&self, set: ValidationSet) -> Option<f64> {
         self.validation.get(&set).map(|v| v.mean)
+    }
+
+    /// The unfrozen reference of the ablation on `set`: the velocity of the validation
+    /// episode on the set's first terrain (the same terrain and sensor noise), if known.
+    pub fn unfrozen(&self, set: ValidationSet) -> Option<f64> {
+        self.validation
+            .get(&set)?
+            .terrains
+            .first()
+            .map(|t| t.velocity)
     }
 
     /// The best fitness of the last generation, if the run exists.

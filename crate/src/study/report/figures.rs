@@ -1,6 +1,7 @@
 //! The data of the report's figures, ready to draw: lines with a band across seeds, and box
 //! plots. The command line draws them (SVG); nothing here knows about pixels.
 
+use crate::experiment::ValidationSet;
 use crate::study::campaign::RunData;
 use crate::study::statistics::{quantile, Summary};
 
@@ -95,16 +96,25 @@ pub fn best_series(runs: &[RunData], offset: f64) -> Vec<Vec<(f64, f64)>> {
         .collect()
 }
 
-/// Velocity against freeze second of each run's ablation.
-pub fn ablation_series(runs: &[RunData]) -> Vec<Vec<(f64, f64)>> {
+/// Velocity against freeze second of each run's ablation on `set`.
+pub fn ablation_series(runs: &[RunData], set: ValidationSet) -> Vec<Vec<(f64, f64)>> {
     runs.iter()
-        .filter_map(|d| d.ablation.as_ref())
+        .filter_map(|d| d.ablation.get(&set))
         .map(|a| {
             let points = a.iter();
             points
                 .map(|p| (f64::from(p.freeze_second), p.velocity))
                 .collect()
         })
+        .collect()
+}
+
+/// The unfrozen reference of each run with an ablation on `set`, as a flat series over the
+/// same freeze seconds.
+pub fn unfrozen_series(runs: &[RunData], set: ValidationSet) -> Vec<Vec<(f64, f64)>> {
+    runs.iter()
+        .filter_map(|d| Some((d.ablation.get(&set)?, d.unfrozen(set)?)))
+        .map(|(a, v)| a.iter().map(|p| (f64::from(p.freeze_second), v)).collect())
         .collect()
 }
 

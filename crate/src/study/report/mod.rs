@@ -19,9 +19,10 @@
 use crate::controllers::ControllerKind;
 use crate::study::campaign::file::EvolveGroup;
 use crate::study::campaign::Results;
-use figures::{ablation_series, band, best_series, box_of, rate_series, Figure, Plot};
+use figures::{band, best_series, box_of, rate_series, Figure, Plot};
 use std::fmt::Write;
 
+mod ablation;
 mod families;
 pub mod figures;
 mod finetune;
@@ -146,7 +147,7 @@ fn evolve_section(
         }
     }
     if g.ablate {
-        ablation_part(&samples, &id, shape, r);
+        ablation::ablation_part(&samples, &id, shape, r);
     }
     slow_part(&samples, &id, shape, r);
 }
@@ -172,43 +173,6 @@ fn push_lines(
         plot: Plot::Lines(bands),
         notes: Vec::new(),
     });
-}
-
-fn ablation_part(samples: &[Sample], id: &str, shape: &str, r: &mut Report) {
-    let with: Vec<&Sample> = samples
-        .iter()
-        .filter(|s| s.runs.iter().any(|d| d.ablation.is_some()))
-        .collect();
-    if with.is_empty() {
-        let _ = writeln!(r.markdown, "No ablation file yet.\n");
-        return;
-    }
-    let _ = writeln!(r.markdown, "Frozen-attention ablation: mean velocity over the freeze seconds, median [q1, q3] across seeds:\n");
-    for s in &with {
-        let means = s
-            .runs
-            .iter()
-            .filter_map(|d| d.ablation.as_ref())
-            .map(|a| a.iter().map(|p| p.velocity).sum::<f64>() / a.len().max(1) as f64);
-        let _ = writeln!(
-            r.markdown,
-            "- {}: {} m/s",
-            s.label,
-            cell(&means.collect::<Vec<_>>())
-        );
-    }
-    r.markdown.push('\n');
-    let bands = with
-        .iter()
-        .filter_map(|s| band(&s.label, &ablation_series(&s.runs)));
-    push_lines(
-        r,
-        format!("fig6-{id}.svg"),
-        format!("{shape}: attention frozen at t"),
-        "freeze time (s)",
-        "velocity (m/s)",
-        bands.collect(),
-    );
 }
 
 fn slow_part(samples: &[Sample], id: &str, shape: &str, r: &mut Report) {

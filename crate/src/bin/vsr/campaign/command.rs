@@ -26,11 +26,14 @@ pub fn args(job: &Job, threads: usize) -> Vec<String> {
         Task::Ablate {
             genome,
             last_second,
+            terrain,
             seconds,
         } => words(&[
             "ablate",
             "--genome",
             &genome.display().to_string(),
+            "--terrain",
+            terrain,
             "--last-second",
             &last_second.to_string(),
             "--seconds",
