@@ -3,8 +3,9 @@
  * A tiny static file server for www/ (module workers need http, and wasm needs the
  * application/wasm type for streaming compilation). Serves on 127.0.0.1 only, GET and
  * HEAD only. The repository's pretrained/ run files are also served, read-only, at
- * /pretrained/ (the page lists them from /pretrained/manifest.json), without a copy, and
- * its docs/ at /docs/ (the page links the study's results).
+ * /pretrained/ (the page lists them from /pretrained/manifest.json), without a copy; so
+ * are its docs/ at /docs/ (the page links the study's results) and study/ at /study/ (the
+ * page shows the study's figures and walks its runs' bests).
  *
  *   node scripts/serve.mjs          # http://127.0.0.1:8080, or PORT=9000 node ...
  *
@@ -23,6 +24,7 @@ export const WWW = path.resolve(HERE, '..', 'www');
 export const MOUNTS = Object.freeze({
   '/pretrained/': path.resolve(HERE, '..', 'pretrained'),
   '/docs/': path.resolve(HERE, '..', 'docs'), // the study's results, linked from the page
+  '/study/': path.resolve(HERE, '..', 'study'), // the study's figures, runs and table of runs
 });
 
 /** Content types by file extension. */
@@ -39,6 +41,7 @@ const MIME = {
   '.ts': 'text/plain; charset=utf-8',
   '.txt': 'text/plain; charset=utf-8',
   '.md': 'text/plain; charset=utf-8',
+  '.csv': 'text/csv; charset=utf-8',
 };
 
 /**

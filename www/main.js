@@ -20,6 +20,8 @@ import { RunPanel } from './run-panel.js';
 import { Keeper } from './keeper.js';
 import { Measurer } from './measure.js';
 import { SpeedNote } from './speed-note.js';
+import { StudyPanel } from './tour/study.js';
+import { Tour } from './tour/tour.js';
 import { Viewer } from './viewer.js';
 
 /** Least wall time between two switches of the viewer to a newer best (ms). */
@@ -431,4 +433,46 @@ async function start() {
   });
 }
 
-start();
+/** The playground as the tour and the study panel set it up (www/tour/): the page's own functions. */
+const playground = {
+  defaults,
+  running: () => running,
+  stopRun: () => new Promise((resolve) => {
+    runs.buttons.stop.click();
+    const wait = () => (running ? setTimeout(wait, 50) : resolve(undefined));
+    wait();
+  }),
+  /** @param {string} rows drawn, driven by the phase gait */
+  setBody(rows) {
+    const problem = drawing.setRows(rows);
+    if (problem) throw new Error(problem);
+    brain = null;
+    shelved = null;
+    editor.draw();
+    bodyChanged();
+  },
+  module: (/** @type {string} */ key, /** @type {string | undefined} */ label) => modules.read(key, label),
+  openModule,
+  loadModule,
+  /** @param {string} terrain @param {{frequency: number, phase: number}} gait */
+  setView(terrain, gait) {
+    viewer.terrain.value = terrain;
+    viewer.gait.frequency.value = String(gait.frequency);
+    viewer.gait.phase.value = String(gait.phase);
+  },
+  /** @param {Record<string, string>} values @param {boolean} compare */
+  setRun(values, compare) {
+    runs.setValues(values);
+    runs.compare.checked = compare;
+    keeper.schedule();
+  },
+  /** @param {string} kind */
+  setController(kind) { controllerSelect.value = kind; controllerChosen(); },
+  wanted: () => viewer.wanted,
+  walking: () => viewer.current,
+  race,
+  message: showMessage,
+};
+const tour = new Tour(document, playground, new StudyPanel(document, playground));
+
+start().then(() => tour.begin());

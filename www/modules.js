@@ -33,6 +33,8 @@ export class ModuleList {
     this.hooks = hooks;
     /** Run files already read, by key. @type {Map<string, Module>} */
     this.held = new Map();
+    /** Resolves once the pretrained modules are listed (or could not be). */
+    this.listed = new Promise((resolve) => { this.doneListing = resolve; });
     el('module-load').addEventListener('click', () => this.withSelected(hooks.loadOnto));
     el('module-open').addEventListener('click', () => this.withSelected(hooks.openOwn));
     this.select.addEventListener('change', () => this.describe());
@@ -55,6 +57,7 @@ export class ModuleList {
     } catch (error) {
       this.hooks.message(`could not list the pretrained modules: ${messageOf(error)}`);
     }
+    this.doneListing?.(undefined);
   }
 
   /**
@@ -117,6 +120,23 @@ export class ModuleList {
     } catch (error) {
       this.details.textContent = '';
     }
+  }
+
+  /**
+   * The module `key` (a served run file: pretrained/ or the study's runs), read and chosen in
+   * the list; one not listed yet is added under `label`.
+   * @param {string} key @param {string} [label] @returns {Promise<Module>}
+   */
+  async read(key, label = key) {
+    await this.listed;
+    if ([...this.select.options].some((o) => o.value === key)) {
+      this.choose(key);
+      const module = await this.selected();
+      if (module) return module;
+    }
+    const text = await fetchOk(key).then((r) => r.text());
+    this.add({ key, label, text });
+    return /** @type {Module} */ (this.held.get(key));
   }
 
   async importFile() {

@@ -57,7 +57,7 @@ export class Race {
     b.best.addEventListener('click', () => this.addGeneration(-1));
     b.generation.addEventListener('click', () => this.addGeneration(Number(this.generation.value)));
     b.restart.addEventListener('click', () => this.restart());
-    b.clear.addEventListener('click', () => { for (const lane of this.lanes) lane.dispose(); this.lanes = []; this.restart(); });
+    b.clear.addEventListener('click', () => this.clear());
     this.speed.addEventListener('change', () => this.restart());
   }
 
@@ -66,12 +66,27 @@ export class Race {
     try {
       const module = await this.hooks.module();
       if (!module) { this.hooks.message('choose a module in the list first (3 · Give it a brain, Transplant a module)'); return; }
-      const info = describeRun(module.text);
-      this.add({ label: module.label.replace(/ \([^()]*\)$/, ''), shape: info.shape,
-        controller: info.controller, genome: runGenome(module.text) });
+      this.addRunFile(module);
     } catch (error) {
       this.hooks.message(`could not race this module: ${messageOf(error)}`);
     }
+  }
+
+  /**
+   * Adds a module on its own body with its own genome (throws a readable Error when its run
+   * file is malformed). @param {import('./modules.js').Module} module
+   */
+  addRunFile(module) {
+    const info = describeRun(module.text);
+    this.add({ label: module.label.replace(/ \([^()]*\)$/, ''), shape: info.shape,
+      controller: info.controller, genome: runGenome(module.text) });
+  }
+
+  /** Takes every robot out of the race. */
+  clear() {
+    for (const lane of this.lanes) lane.dispose();
+    this.lanes = [];
+    this.restart();
   }
 
   /**

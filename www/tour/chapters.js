@@ -1,0 +1,145 @@
+// @ts-check
+/**
+ * The tour's chapters, as data: the paper's story told with the live playground. Each
+ * chapter has a title, 2 to 5 plain sentences, one thing to do and what to notice, and the
+ * playground it sets up (stage.js does it with the page's own functions):
+ *
+ * - rows: the body (rows of 1 and 0, top first), or null to keep the body;
+ * - brain: null (the phase gait), or a module: a run file served with the page, either on its
+ *   own body (`own`) or transplanted onto `rows` (`drawn`);
+ * - terrain: the viewer's terrain; run: the run settings (and `compare`: run from scratch after
+ *   fine-tuning); controller: the family Evolve uses; race: the modules racing side by side;
+ * - target: the control the visitor is asked to use (scrolled to and outlined);
+ * - figure: a study figure shown beside the chapter (figures.js).
+ *
+ * Pure data with no page in it: the browser tests read it to check each chapter's set-up.
+ */
+
+const BIPED = '1111-1111-1001';
+const BIPED_LARGE = '111111-111111-100011-100011';
+const ATTENTION = 'pretrained/biped-4x3-attention.json';
+const QUICK = { population: '20', seconds: '10', budget: '2000', seed: '1', terrain: 'hilly-1-10' };
+const VIEW = 'hilly-1-10-0';
+
+/**
+ * @typedef {object} Chapter
+ * @property {string} title
+ * @property {string[]} text      2 to 5 plain sentences (a paragraph each)
+ * @property {string} task        the one thing to do
+ * @property {string} notice      what to notice
+ * @property {{rows: string | null, brain: {module: string, on: 'own' | 'drawn'} | null, terrain: string,
+ *   run?: Record<string, string>, compare?: boolean, controller?: string, race?: string[]}} setup
+ * @property {string} target      CSS selector of the control the task is about
+ * @property {string} [figure]    a study figure's id (figures.js)
+ */
+
+/** @type {Chapter[]} */
+export const CHAPTERS = [
+  {
+    title: 'A voxel and its colours',
+    text: [
+      'This robot is made of ten voxels: soft squares, each joined to its neighbours. A voxel can squeeze (red) and swell (green); yellow is at rest.',
+      'No brain drives it yet. Every voxel squeezes and swells on a clock, each column a little later than the one on its left, so a wave runs along the body: this is the phase gait.',
+    ],
+    task: 'Open “Phase gait” under the robot and change φ, the delay from one column to the next (try 0, then −1.5).',
+    notice: 'The same ten voxels walk fast, crawl or go backwards depending only on their timing. The speed under the robot tells you how fast.',
+    setup: { rows: BIPED, brain: null, terrain: 'flat' },
+    target: 'details.gait',
+  },
+  {
+    title: 'A body',
+    text: [
+      'You can draw any body on the grid of “1 · Draw”: every filled square is a voxel, and the robot walks as soon as you lift the mouse or your finger.',
+      'A robot must be one piece, every voxel sharing a side with another: voxels only push and pull on the voxels they touch, so a piece on its own would be a second robot.',
+    ],
+    task: 'Draw a few voxels onto the robot (drag on the grid), then erase a column to cut it in two.',
+    notice: 'A new body walks at once on the phase gait. Cut in two, each piece gets its own colour and the page waits until it is one piece again.',
+    setup: { rows: BIPED, brain: null, terrain: VIEW },
+    target: '#editor',
+  },
+  {
+    title: 'One small brain in every voxel',
+    text: [
+      'Now each voxel gets a brain. A voxel feels four things, all about itself: its area (squeezed or stretched), its speed sideways (vx) and up or down (vy), and touch (whether it is on the ground).',
+      'Three times a second, its brain turns these four readings into one number: how much to squeeze. Every voxel runs the same small network; only the last step, four weights, belongs to the voxel\'s place in the body.',
+      'No voxel sends anything to another. They walk together only because they share one body and one ground. This brain was evolved in our study.',
+    ],
+    task: 'Click an empty square right next to the walking robot to give it one more voxel.',
+    notice: 'The brain grows by 4 genes (the numbers evolution tunes; the count is under “3 · Give it a brain”), not by a whole new brain: the new voxel runs the same network, with its own four weights.',
+    setup: { rows: BIPED, brain: { module: ATTENTION, on: 'own' }, terrain: VIEW },
+    target: '#scene',
+  },
+  {
+    title: 'Attention, read on one voxel',
+    text: [
+      'Before it decides, a voxel\'s brain lets each of its four readings ask how much to listen to each of the four. The answers form a 4 × 4 table, its attention matrix, new at every step.',
+      'The small maps beside the robot show every voxel\'s matrix in its place: red +1 (listen), blue −1 (listen, reversed), white 0 (ignore). A row is the reading that asks (the query); the columns are the readings it listens to (the keys).',
+    ],
+    task: 'Click one voxel\'s map (a foot is a good choice) to read its matrix enlarged, with the voxel outlined on the robot.',
+    notice: 'Most values sit at +1 or −1 and stay there; the rows of the speeds (vx, vy) change as the foot lands and lifts. The robot reads its own motion through them.',
+    setup: { rows: BIPED, brain: { module: ATTENTION, on: 'own' }, terrain: VIEW },
+    target: '#attention',
+  },
+  {
+    title: 'Evolution',
+    text: [
+      'Nobody wrote these brains: evolution found them. It starts with a population of random brains (here 20) and walks each one for an episode (10 s) on hilly ground. Its fitness is its speed: the distance walked divided by the time.',
+      'The fastest become parents; their children are copies with small random changes, or mixes of two parents. Each round is a generation; each walk measured is an evaluation.',
+      'The study gave every run 30,000 evaluations with 100 brains and 30-s episodes; this quick run has 2,000.',
+    ],
+    task: 'Press Evolve.',
+    notice: 'The chart climbs as generations pass, and the robot switches to the best brain so far every few seconds. Each evaluation is on freshly drawn hills, so a lucky walk can score high once: the line wobbles.',
+    setup: { rows: BIPED, brain: null, terrain: VIEW, run: QUICK, controller: 'attention' },
+    target: '#run-evolve',
+  },
+  {
+    title: 'Three brains, side by side',
+    text: [
+      'Three kinds of brain on the same body: attention (the paper\'s); mlp, the same small network without attention; and mlp-comm, a network whose voxels do send messages to their neighbours.',
+      'Each was evolved in our study with 30,000 evaluations. Below, they race on one terrain for 30 s, all started together.',
+      'The paper found attention the fastest, even against voxels that talk; on this biped our study agrees.',
+    ],
+    task: 'Watch the race under the playground to the end.',
+    notice: 'One race is one terrain and one run of each: the figure is the fair comparison, every run of each brain on ten terrains it never trained on.',
+    setup: { rows: BIPED, brain: { module: ATTENTION, on: 'own' }, terrain: VIEW,
+      race: [ATTENTION, 'pretrained/biped-4x3-mlp-comm.json', 'pretrained/biped-4x3-mlp.json'] },
+    target: '#race-panel',
+    figure: 'validation-biped',
+  },
+  {
+    title: 'Freeze the attention',
+    text: [
+      'Is the changing attention needed, or would one fixed table do? Freeze every voxel\'s matrix as it is at one moment, and let the robot walk on with it.',
+      'Nothing else changes: the same sensors, the same weights, the same ground.',
+    ],
+    task: 'Let the robot walk for about 5 s, then press “Freeze the attention”.',
+    notice: 'Within seconds it stumbles and nearly stops; the line under the button gives its speed before and after. The paper (its Fig. 6) and our study froze every best robot at every second of a walk: they all stop.',
+    setup: { rows: BIPED, brain: { module: ATTENTION, on: 'own' }, terrain: VIEW },
+    target: '#freeze-attention',
+    figure: 'frozen-biped',
+  },
+  {
+    title: 'Transplant a module',
+    text: [
+      'A module is a brain evolved before, kept in a file. Here the small biped\'s brain is transplanted onto a larger biped of 18 voxels: its attention (32 numbers, the same for any body) is kept.',
+      'Its last step, the four weights of each voxel\'s place, belonged to the old body, so they are drawn at random for the new one. One-shot, the robot hardly moves: a brain is made for its body.',
+      'Fine-tuning evolves only those weights and keeps the attention. In the paper (its Fig. 7) and our study, it gets fast far sooner than a brain evolved from scratch.',
+    ],
+    task: 'See how slowly it walks, then press Fine-tune: a run from scratch with the same budget follows.',
+    notice: 'On the chart, red is fine-tuning and grey dashed is from scratch: which climbs faster? One quick run is one sample; the figure has five runs of each, 10,000 evaluations.',
+    setup: { rows: BIPED_LARGE, brain: { module: ATTENTION, on: 'drawn' }, terrain: VIEW, run: QUICK, compare: true },
+    target: '#run-finetune',
+    figure: 'finetune-biped-large',
+  },
+  {
+    title: 'Your turn',
+    text: [
+      'Draw a robot of your own: a long worm, a table, a creature with three legs.',
+      'Give it a brain: evolve one, or choose a module under “3 · Give it a brain”, load it onto your robot and fine-tune it. Every figure of the study is under “The study” at the bottom of the page, each with its robots to watch.',
+    ],
+    task: 'When it walks, press “Share link” and send the link: it opens your robot, its brain and its settings.',
+    notice: 'This tour has a link for every chapter too (the address bar shows it), to send one chapter to a class.',
+    setup: { rows: '11111-10101', brain: null, terrain: VIEW, run: QUICK, controller: 'attention' },
+    target: '#share',
+  },
+];

@@ -1,0 +1,105 @@
+// @ts-check
+/**
+ * The study's figures the page shows (written by `vsr report` into study/report/, served at
+ * /study/ by scripts/serve.mjs; linked, never copied), each with the runs it is drawn from
+ * (rows of study/campaign.csv, whose run files are study/runs/<run>.json) and the paper's
+ * figure it reproduces. The tour (chapters.js) and the study panel (study.js) read them here.
+ */
+
+/** Where the study's files are served. */
+export const STUDY_DIR = 'study/';
+
+/**
+ * @typedef {object} StudyFigure
+ * @property {string} id
+ * @property {string} file       in study/report/
+ * @property {string} title      what it shows, in a newcomer's words
+ * @property {string} paper      the paper's figure it reproduces, and what the paper found
+ * @property {string} read       how to read it
+ * @property {RunFilter[]} runs  the campaign rows it is drawn from: those that match one filter
+ */
+/**
+ * @typedef {{kind: string, shape: string, evals: number, controllers?: string[], source?: string}} RunFilter
+ *   every field given must match; source: how the fine-tuned module's run name starts
+ */
+
+const BOXES = 'Each box holds the runs of one brain (one dot per run, each with its own seed): the line in it is the median run, the box the middle half.';
+
+/** @type {StudyFigure[]} */
+export const FIGURES = [
+  {
+    id: 'validation-biped',
+    file: 'fig4-rq1-biped-4x3-30000-unseen.svg',
+    title: 'Three brains on the biped, each run\'s best walking on ten test terrains',
+    paper: 'The paper\'s Fig. 4: attention walks faster than a plain network (mlp) and than a network whose voxels send messages (mlp-comm).',
+    read: `${BOXES} A point is the mean speed of one run's best robot over ten hilly terrains it was not trained on; higher is faster.`,
+    runs: [{ kind: 'scratch', shape: 'biped-4x3', evals: 30000, controllers: ['attention', 'mlp-comm', 'mlp'] }],
+  },
+  {
+    id: 'validation-comb',
+    file: 'fig4-rq1-comb-7x2-30000-unseen.svg',
+    title: 'Three brains on the comb, each run\'s best walking on ten test terrains',
+    paper: 'The paper\'s Fig. 4 found attention ahead on the comb too; our study finds it above mlp but level with mlp-comm there.',
+    read: `${BOXES} A point is the mean speed of one run's best robot over ten hilly terrains it was not trained on.`,
+    runs: [{ kind: 'scratch', shape: 'comb-7x2', evals: 30000, controllers: ['attention', 'mlp-comm', 'mlp'] }],
+  },
+  {
+    id: 'frozen-biped',
+    file: 'fig6-rq1-biped-4x3-30000.svg',
+    title: 'Freeze the attention and the biped stops',
+    paper: 'The paper\'s Fig. 6: with every voxel\'s attention frozen as it was at one moment, the robots barely move.',
+    read: 'Each run\'s best robot, its attention frozen at the moment on the horizontal axis, then walked 30 s: its speed. Near zero whatever the moment.',
+    runs: [{ kind: 'scratch', shape: 'biped-4x3', evals: 30000, controllers: ['attention'] }],
+  },
+  {
+    id: 'frozen-comb',
+    file: 'fig6-rq1-comb-7x2-30000.svg',
+    title: 'Freeze the attention and the comb stops',
+    paper: 'The paper\'s Fig. 6, for the comb.',
+    read: 'Each run\'s best robot, its attention frozen at the moment on the horizontal axis, then walked 30 s: its speed.',
+    runs: [{ kind: 'scratch', shape: 'comb-7x2', evals: 30000, controllers: ['attention'] }],
+  },
+  {
+    id: 'finetune-biped-large',
+    file: 'fig7-rq2-biped-4x3-to-biped-6x4.svg',
+    title: 'The small biped\'s attention, fine-tuned on the large biped, against evolving from scratch',
+    paper: 'The paper\'s Fig. 7: a transplanted attention, fine-tuned, gets fast much sooner than a brain evolved from scratch. Our study agrees on all four transfers (after 2,500 evaluations); by the end of the budget the two are level.',
+    read: 'Speed of the best robot so far against evaluations spent on the large biped; solid: fine-tuning the transplanted module, dashed: from scratch. Lines are medians over runs.',
+    runs: [{ kind: 'finetune', shape: 'biped-6x4', evals: 10000, source: 'biped-4x3-' },
+      { kind: 'scratch', shape: 'biped-6x4', evals: 30000, controllers: ['attention'] }],
+  },
+  {
+    id: 'finetune-biped-small',
+    file: 'fig7-rq2-biped-6x4-to-biped-4x3.svg',
+    title: 'The large biped\'s attention, fine-tuned on the small biped, against evolving from scratch',
+    paper: 'The paper\'s Fig. 7, from large to small.',
+    read: 'Speed of the best robot so far against evaluations spent on the small biped; solid: fine-tuning, dashed: from scratch.',
+    runs: [{ kind: 'finetune', shape: 'biped-4x3', evals: 10000, source: 'biped-6x4-' },
+      { kind: 'scratch', shape: 'biped-4x3', evals: 30000, controllers: ['attention'] }],
+  },
+  {
+    id: 'finetune-comb-large',
+    file: 'fig7-rq2-comb-7x2-to-comb-14x2.svg',
+    title: 'The small comb\'s attention, fine-tuned on the large comb, against evolving from scratch',
+    paper: 'The paper\'s Fig. 7, for the combs.',
+    read: 'Speed of the best robot so far against evaluations spent on the large comb; solid: fine-tuning, dashed: from scratch.',
+    runs: [{ kind: 'finetune', shape: 'comb-14x2', evals: 10000, source: 'comb-7x2-' },
+      { kind: 'scratch', shape: 'comb-14x2', evals: 30000, controllers: ['attention'] }],
+  },
+  {
+    id: 'finetune-comb-small',
+    file: 'fig7-rq2-comb-14x2-to-comb-7x2.svg',
+    title: 'The large comb\'s attention, fine-tuned on the small comb, against evolving from scratch',
+    paper: 'The paper\'s Fig. 7, from large to small.',
+    read: 'Speed of the best robot so far against evaluations spent on the small comb; solid: fine-tuning, dashed: from scratch.',
+    runs: [{ kind: 'finetune', shape: 'comb-7x2', evals: 10000, source: 'comb-14x2-' },
+      { kind: 'scratch', shape: 'comb-7x2', evals: 30000, controllers: ['attention'] }],
+  },
+];
+
+/** @param {string} id @returns {StudyFigure} */
+export function figure(id) {
+  const found = FIGURES.find((f) => f.id === id);
+  if (!found) throw new Error(`no study figure "${id}"`);
+  return found;
+}

@@ -1,0 +1,86 @@
+// @ts-check
+/**
+ * Sets the playground up as a chapter says (chapters.js), with the page's own functions
+ * (main.js hands them over as a {@link Playground}; nothing here simulates, transplants or
+ * draws): stops a run under way, sets the terrain, the phase gait, the run settings, the body
+ * and its brain, and the race; then waits until the viewer walks exactly that robot.
+ */
+import { messageOf } from '../kit.js';
+
+/** Longest wait for the viewer to walk the chapter's robot (ms). */
+const WALK_TIMEOUT_MS = 10_000;
+
+/**
+ * @typedef {object} Playground  the page's functions the tour uses (main.js)
+ * @property {import('../core.js').Defaults} defaults
+ * @property {() => boolean} running                 a run uses the robot
+ * @property {() => Promise<void>} stopRun            stops it; resolves once stopped
+ * @property {(rows: string) => void} setBody         draws rows, driven by the phase gait
+ * @property {(key: string, label?: string) => Promise<import('../modules.js').Module>} module  reads and chooses a module
+ * @property {(module: import('../modules.js').Module) => void} openModule   on its own body
+ * @property {(module: import('../modules.js').Module) => void} loadModule   onto the drawn body
+ * @property {(terrain: string, gait: {frequency: number, phase: number}) => void} setView
+ * @property {(values: Record<string, string>, compare: boolean) => void} setRun
+ * @property {(kind: string) => void} setController
+ * @property {() => {shape: string, terrain: string, brain: {controller: string, genome: Float32Array} | null} | null} wanted
+ *   the episode the page asked the viewer for last
+ * @property {() => {shape: string, terrain: string, brain: {controller: string, genome: Float32Array} | null} | null} walking
+ *   the episode the viewer walks now
+ * @property {import('../race.js').Race} race
+ * @property {(text: string) => void} message
+ */
+
+/**
+ * Sets the playground up for `chapter`; resolves once the viewer walks its robot.
+ * @param {Playground} page @param {import('./chapters.js').Chapter} chapter
+ */
+export async function stage(page, chapter) {
+  const { setup } = chapter;
+  if (page.running()) await page.stopRun();
+  page.setView(setup.terrain, page.defaults.gait);
+  if (setup.run) page.setRun(setup.run, setup.compare ?? false);
+  const brain = setup.brain ? await page.module(setup.brain.module) : null;
+  if (setup.rows !== null && setup.brain?.on !== 'own') page.setBody(setup.rows);
+  if (setup.controller) page.setController(setup.controller);
+  if (brain && setup.brain?.on === 'own') page.openModule(brain);
+  if (brain && setup.brain?.on === 'drawn') page.loadModule(brain);
+  if (setup.race) await race(page, setup.race);
+  await walking(page);
+}
+
+/** Empties the race and enters `keys` (modules on their own bodies). @param {Playground} page @param {string[]} keys */
+async function race(page, keys) {
+  page.race.clear();
+  for (const key of keys) {
+    try {
+      page.race.addRunFile(await page.module(key));
+    } catch (error) {
+      page.message(`could not race ${key}: ${messageOf(error)}`);
+    }
+  }
+}
+
+/** Resolves once the viewer walks the episode the page asked for last. @param {Playground} page */
+function walking(page) {
+  const wanted = page.wanted();
+  const since = performance.now();
+  return new Promise((resolve, reject) => {
+    const look = () => {
+      if (sameEpisode(page.walking(), wanted)) resolve(undefined);
+      else if (performance.now() - since > WALK_TIMEOUT_MS) reject(new Error('the robot did not start walking'));
+      else requestAnimationFrame(look);
+    };
+    look();
+  });
+}
+
+/**
+ * Whether two episodes walk the same robot: body, terrain, brain (bit for bit).
+ * @param {ReturnType<Playground['walking']>} a @param {ReturnType<Playground['walking']>} b
+ */
+export function sameEpisode(a, b) {
+  if (!a || !b || a.shape !== b.shape || a.terrain !== b.terrain) return false;
+  if (!a.brain || !b.brain) return a.brain === b.brain;
+  const [x, y] = [a.brain.genome, b.brain.genome];
+  return a.brain.controller === b.brain.controller && x.length === y.length && x.every((g, i) => Object.is(g, y[i]));
+}

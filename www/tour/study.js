@@ -1,0 +1,119 @@
+// @ts-check
+/**
+ * The study in the page: our reproduction's figures (figures.js; the files `vsr report`
+ * writes, served from study/report/), one at a time with what it shows and what the paper
+ * found, and under it the runs it is drawn from (study/campaign.csv): one click walks the
+ * chosen run's best robot in the viewer, on its own body (its run file, study/runs/<run>.json,
+ * becomes a module of the list, so it can also race or be transplanted).
+ */
+import { messageOf } from '../kit.js';
+import { FIGURES, STUDY_DIR } from './figures.js';
+
+/** The study's table of runs, one row per run. */
+const CAMPAIGN = `${STUDY_DIR}campaign.csv`;
+
+/**
+ * @typedef {object} StudyRun  a row of the campaign table
+ * @property {string} run  its name (its run file is study/runs/<run>.json)
+ * @property {string} kind @property {string} shape @property {string} controller
+ * @property {number} evals @property {number} seed @property {string} source
+ * @property {number} unseen  mean speed of its best over the ten unseen test terrains (m/s)
+ */
+
+/**
+ * The runs of a campaign table (CSV with a header row; no quoted commas in it).
+ * @param {string} text @returns {StudyRun[]}
+ */
+export function parseCampaign(text) {
+  const [head, ...lines] = text.trim().split('\n');
+  const names = head.split(',');
+  const col = (/** @type {string} */ name) => names.indexOf(name);
+  const at = { run: col('run'), kind: col('kind'), shape: col('shape'), controller: col('controller'), evals: col('evals'),
+    seed: col('seed'), source: col('source'), unseen: col('unseen_mean') };
+  if (Object.values(at).some((i) => i < 0)) throw new Error('the study\'s table of runs lacks a column');
+  return lines.map((line) => {
+    const v = line.split(',');
+    return { run: v[at.run], kind: v[at.kind], shape: v[at.shape], controller: v[at.controller], evals: Number(v[at.evals]),
+      seed: Number(v[at.seed]), source: v[at.source], unseen: Number(v[at.unseen]) };
+  });
+}
+
+/**
+ * The runs a figure is drawn from, the fastest first within each filter.
+ * @param {import('./figures.js').StudyFigure} figure @param {StudyRun[]} runs @returns {StudyRun[]}
+ */
+export function runsOf(figure, runs) {
+  return figure.runs.flatMap((f) => runs.filter((r) => r.kind === f.kind && r.shape === f.shape && r.evals === f.evals
+    && (!f.controllers || f.controllers.includes(r.controller)) && (!f.source || r.source.startsWith(f.source)))
+    .sort((a, b) => (f.controllers ? f.controllers.indexOf(a.controller) - f.controllers.indexOf(b.controller) : 0)
+      || b.unseen - a.unseen));
+}
+
+/** A run in words. @param {StudyRun} r */
+export function describe(r) {
+  const how = r.kind === 'finetune' ? `fine-tuned from ${r.source.replace(/-\d+-s(\d+)$/, ', seed $1')}` : `from scratch, ${r.evals} evaluations`;
+  const speed = Number.isFinite(r.unseen) ? `: ${r.unseen.toFixed(2)} m/s on the ten test terrains` : '';
+  return `${r.controller} on ${r.shape}, ${how}, seed ${r.seed}${speed}`;
+}
+
+export class StudyPanel {
+  /**
+   * @param {Document} doc
+   * @param {{module: (key: string, label?: string) => Promise<import('../modules.js').Module>,
+   *   openModule: (module: import('../modules.js').Module) => void, message: (text: string) => void}} page
+   */
+  constructor(doc, page) {
+    const el = (/** @type {string} */ id) => /** @type {any} */ (doc.getElementById(id));
+    this.page = page;
+    this.section = /** @type {HTMLElement} */ (el('study-panel'));
+    this.pick = /** @type {HTMLSelectElement} */ (el('study-figure'));
+    this.image = /** @type {HTMLImageElement} */ (el('study-image'));
+    this.link = /** @type {HTMLAnchorElement} */ (el('study-full'));
+    this.caption = /** @type {HTMLElement} */ (el('study-caption'));
+    this.runPick = /** @type {HTMLSelectElement} */ (el('study-run'));
+    this.watch = /** @type {HTMLButtonElement} */ (el('study-watch'));
+    /** @type {StudyRun[]} */
+    this.runs = [];
+    for (const f of FIGURES) this.pick.append(new Option(f.title, f.id));
+    this.pick.addEventListener('change', () => this.showFigure());
+    this.watch.addEventListener('click', () => this.watchRun());
+    this.loaded = fetch(CAMPAIGN)
+      .then((r) => (r.ok ? r.text() : Promise.reject(new Error(`HTTP ${r.status}`))))
+      .then((text) => { this.runs = parseCampaign(text); })
+      .catch((error) => page.message(`the study's runs could not be listed: ${messageOf(error)}`))
+      .then(() => this.showFigure());
+  }
+
+  /** Shows the figure `id` and scrolls to it (from a tour chapter). @param {string} id */
+  async show(id) {
+    this.pick.value = id;
+    await this.showFigure();
+    this.section.scrollIntoView({ block: 'start', behavior: 'instant' });
+  }
+
+  /** Shows the chosen figure and lists its runs, the fastest of its first brain chosen. */
+  async showFigure() {
+    const fig = FIGURES.find((f) => f.id === this.pick.value) ?? FIGURES[0];
+    const src = `${STUDY_DIR}report/${fig.file}`;
+    this.image.src = src;
+    this.image.alt = fig.title;
+    this.link.href = src;
+    this.caption.textContent = `${fig.read} ${fig.paper}`;
+    const runs = runsOf(fig, this.runs);
+    this.runPick.replaceChildren(...runs.map((r) => new Option(describe(r), r.run)));
+    this.watch.disabled = runs.length === 0;
+  }
+
+  /** Walks the chosen run's best robot in the viewer, on its own body. */
+  async watchRun() {
+    const run = this.runs.find((r) => r.run === this.runPick.value);
+    if (!run) return;
+    try {
+      const module = await this.page.module(`${STUDY_DIR}runs/${run.run}.json`, `study: ${describe(run)}`);
+      this.page.openModule(module);
+      this.section.ownerDocument.getElementById('watch-panel')?.scrollIntoView({ block: 'start', behavior: 'instant' });
+    } catch (error) {
+      this.page.message(`could not open the run ${run.run}: ${messageOf(error)}`);
+    }
+  }
+}

@@ -1,0 +1,200 @@
+// @ts-check
+/**
+ * The guided tour (Learn): the chapters of chapters.js in a box beside the playground (a side
+ * column on a wide screen, a sheet at the bottom of a phone's), with Back and Next. Opening a
+ * chapter sets the playground up (stage.js), outlines the control it asks about and scrolls
+ * to it. Every chapter has its own link, `?chapter=N` (1-based): a query, so it never meets the
+ * share link's `#...` and both can be in one address. Leaving the tour leaves the playground
+ * as the chapter set it.
+ */
+import { messageOf } from '../kit.js';
+import { CHAPTERS } from './chapters.js';
+import { FIGURES, STUDY_DIR } from './figures.js';
+import { stage } from './stage.js';
+
+/** The address's query parameter that names a chapter. */
+export const CHAPTER_PARAM = 'chapter';
+
+/**
+ * @param {string} search a location's query (`?chapter=4`)
+ * @returns {number} the chapter's index (0-based), or -1 when there is none or it is not a chapter
+ */
+export function chapterOf(search) {
+  const text = new URLSearchParams(search).get(CHAPTER_PARAM);
+  const n = Number(text);
+  return text !== null && Number.isInteger(n) && n >= 1 && n <= CHAPTERS.length ? n - 1 : -1;
+}
+
+export class Tour {
+  /**
+   * @param {Document} doc
+   * @param {import('./stage.js').Playground} page
+   * @param {{show: (id: string) => void}} study  shows a figure in the study panel
+   */
+  constructor(doc, page, study) {
+    this.doc = doc;
+    this.page = page;
+    this.study = study;
+    this.index = -1;
+    /** Counts chapter openings, so that a slow one never overwrites a newer one. */
+    this.opening = 0;
+    this.box = this.build();
+    doc.getElementById('tour-open')?.addEventListener('click', () => this.open(Math.max(0, this.index)));
+  }
+
+  /** Builds the box (hidden until the tour opens). */
+  build() {
+    const doc = this.doc;
+    const box = doc.createElement('aside');
+    box.id = 'tour-box';
+    box.hidden = true;
+    box.setAttribute('aria-labelledby', 'tour-chapter');
+    box.innerHTML = `
+      <div class="tour-head">
+        <label class="tour-count">Learn · chapter <select id="tour-pick" aria-label="Go to chapter"></select> of ${CHAPTERS.length}</label>
+        <button type="button" id="tour-fold" class="tour-fold" aria-expanded="true" title="Fold the text away (Back and Next stay)">–</button>
+        <button type="button" id="tour-close" class="close" aria-label="Leave the tour" title="Leave the tour (the playground stays as it is)">&times;</button>
+      </div>
+      <h2 id="tour-chapter" data-testid="tour-chapter"></h2>
+      <div id="tour-body" class="tour-body" aria-live="polite"></div>
+      <nav class="tour-nav">
+        <button type="button" id="tour-back" data-testid="tour-back">&larr; Back</button>
+        <a id="tour-link" class="tour-link" title="This chapter's own link: send it, and it opens here">link to this chapter</a>
+        <button type="button" id="tour-next" data-testid="tour-next" class="primary">Next &rarr;</button>
+      </nav>`;
+    doc.body.append(box);
+    const pick = /** @type {HTMLSelectElement} */ (box.querySelector('#tour-pick'));
+    CHAPTERS.forEach((c, i) => pick.append(new Option(`${i + 1}`, String(i))));
+    pick.title = CHAPTERS.map((c, i) => `${i + 1}. ${c.title}`).join('\n');
+    pick.addEventListener('change', () => this.open(Number(pick.value)));
+    box.querySelector('#tour-back')?.addEventListener('click', () => this.open(this.index - 1));
+    box.querySelector('#tour-next')?.addEventListener('click', () => this.open(this.index + 1));
+    box.querySelector('#tour-close')?.addEventListener('click', () => this.close());
+    box.querySelector('#tour-fold')?.addEventListener('click', () => this.fold());
+    return box;
+  }
+
+  /** Opens the chapter of the page's address, if it names one. */
+  begin() {
+    const index = chapterOf(location.search);
+    if (index >= 0) this.open(index);
+  }
+
+  /**
+   * Opens chapter `index` (0-based) and sets the playground up for it.
+   * @param {number} index
+   */
+  async open(index) {
+    if (index < 0 || index >= CHAPTERS.length) return;
+    const started = performance.now();
+    const ticket = ++this.opening;
+    this.index = index;
+    this.show(CHAPTERS[index]);
+    this.box.dataset.state = 'setting';
+    try {
+      await stage(this.page, CHAPTERS[index]);
+      if (ticket !== this.opening) return;
+      this.box.dataset.state = 'ready';
+      this.box.dataset.openedMs = (performance.now() - started).toFixed(0);
+      this.point(CHAPTERS[index].target);
+    } catch (error) {
+      if (ticket !== this.opening) return;
+      this.box.dataset.state = 'failed';
+      this.page.message(`this chapter could not set the playground up: ${messageOf(error)}`);
+    }
+  }
+
+  /** Shows a chapter's words. @param {import('./chapters.js').Chapter} chapter */
+  show(chapter) {
+    const doc = this.doc;
+    const i = this.index;
+    this.box.hidden = false;
+    doc.body.classList.add('touring');
+    this.box.dataset.chapter = String(i + 1);
+    /** @type {HTMLElement} */ (this.box.querySelector('#tour-chapter')).textContent = chapter.title;
+    /** @type {HTMLSelectElement} */ (this.box.querySelector('#tour-pick')).value = String(i);
+    const body = /** @type {HTMLElement} */ (this.box.querySelector('#tour-body'));
+    body.replaceChildren(...chapter.text.map((t) => paragraph(doc, t)),
+      paragraph(doc, chapter.task, 'Do', 'tour-task'), paragraph(doc, chapter.notice, 'Notice', 'tour-notice'));
+    if (chapter.figure) body.append(this.figure(chapter.figure));
+    /** @type {HTMLButtonElement} */ (this.box.querySelector('#tour-back')).disabled = i === 0;
+    const next = /** @type {HTMLButtonElement} */ (this.box.querySelector('#tour-next'));
+    next.disabled = i === CHAPTERS.length - 1;
+    next.title = i < CHAPTERS.length - 1 ? CHAPTERS[i + 1].title : 'The last chapter';
+    const url = new URL(location.href);
+    url.searchParams.set(CHAPTER_PARAM, String(i + 1));
+    history.replaceState(history.state, '', url);
+    const link = /** @type {HTMLAnchorElement} */ (this.box.querySelector('#tour-link'));
+    url.hash = '';
+    link.href = url.href;
+  }
+
+  /** A study figure beside the chapter. @param {string} id */
+  figure(id) {
+    const doc = this.doc;
+    const fig = FIGURES.find((f) => f.id === id);
+    const box = doc.createElement('figure');
+    if (!fig) return box;
+    const src = `${STUDY_DIR}report/${fig.file}`;
+    box.innerHTML = '<a target="_blank" rel="noopener" title="Open the figure full size"><img alt=""></a><figcaption></figcaption>';
+    /** @type {HTMLAnchorElement} */ (box.querySelector('a')).href = src;
+    const img = /** @type {HTMLImageElement} */ (box.querySelector('img'));
+    img.src = src;
+    img.alt = fig.title;
+    const caption = /** @type {HTMLElement} */ (box.querySelector('figcaption'));
+    caption.textContent = `Our study: ${fig.title}. ${fig.paper} `;
+    const watch = doc.createElement('button');
+    watch.type = 'button';
+    watch.textContent = 'Watch its robots';
+    watch.title = 'Show this figure in “The study” below, where each run\'s best robot can walk';
+    watch.addEventListener('click', () => this.study.show(id));
+    caption.append(watch);
+    return box;
+  }
+
+  /** Outlines the controls a chapter asks about and brings the first into view. @param {string} selector */
+  point(selector) {
+    for (const el of this.doc.querySelectorAll('.tour-target')) el.classList.remove('tour-target');
+    const targets = [...this.doc.querySelectorAll(selector)];
+    for (const el of targets) el.classList.add('tour-target');
+    const first = /** @type {HTMLElement | undefined} */ (targets[0]);
+    if (!first) return;
+    const rect = first.getBoundingClientRect();
+    const sheet = this.box.getBoundingClientRect();
+    const bottom = sheet.top > innerHeight / 3 ? sheet.top : innerHeight; // a sheet at the bottom hides what is under it
+    if (rect.top < 0 || rect.top > bottom - 40) first.scrollIntoView({ block: 'start', behavior: 'instant' });
+  }
+
+  /** Folds the chapter's text away, or back. */
+  fold() {
+    const folded = this.box.classList.toggle('folded');
+    this.box.querySelector('#tour-fold')?.setAttribute('aria-expanded', String(!folded));
+  }
+
+  /** Leaves the tour: the playground stays as the chapter set it. */
+  close() {
+    this.opening++;
+    this.box.hidden = true;
+    this.doc.body.classList.remove('touring');
+    for (const el of this.doc.querySelectorAll('.tour-target')) el.classList.remove('tour-target');
+    const url = new URL(location.href);
+    url.searchParams.delete(CHAPTER_PARAM);
+    history.replaceState(history.state, '', url);
+  }
+}
+
+/**
+ * @param {Document} doc @param {string} text @param {string} [lead] a bold first word
+ * @param {string} [className]
+ */
+function paragraph(doc, text, lead, className) {
+  const p = doc.createElement('p');
+  if (className) p.className = className;
+  if (lead) {
+    const b = doc.createElement('b');
+    b.textContent = `${lead}: `;
+    p.append(b);
+  }
+  p.append(text);
+  return p;
+}
