@@ -44,7 +44,7 @@ export const CHAPTERS = [
     task: 'Open “Phase gait” under the robot and change φ, the delay from one column to the next (try 0, then −1.5).',
     notice: 'The same ten voxels walk fast, crawl or go backwards depending only on their timing. The speed under the robot tells you how fast.',
     setup: { rows: BIPED, brain: null, terrain: 'flat' },
-    target: 'details.gait',
+    target: '#scene, details.gait',
   },
   {
     title: 'A body',
@@ -78,7 +78,7 @@ export const CHAPTERS = [
     task: 'Click one voxel\'s map (a foot is a good choice) to read its matrix enlarged, with the voxel outlined on the robot.',
     notice: 'Most values sit at +1 or −1 and stay there; the rows of the speeds (vx, vy) change as the foot lands and lifts. The robot reads its own motion through them.',
     setup: { rows: BIPED, brain: { module: ATTENTION, on: 'own' }, terrain: VIEW },
-    target: '#attention',
+    target: '#scene, #attention',
   },
   {
     title: 'Evolution',
@@ -126,9 +126,9 @@ export const CHAPTERS = [
       'Fine-tuning evolves only those weights and keeps the attention. In the paper (its Fig. 7) and our study, it gets fast far sooner than a brain evolved from scratch.',
     ],
     task: 'See how slowly it walks, then press Fine-tune: a run from scratch with the same budget follows.',
-    notice: 'On the chart, red is fine-tuning and grey dashed is from scratch: which climbs faster? One quick run is one sample; the figure has five runs of each, 10,000 evaluations.',
+    notice: 'The chart under the robot draws fine-tuning, then from scratch as a dashed line: which climbs faster? One quick run is one sample; the study\'s figure has five runs of each.',
     setup: { rows: BIPED_LARGE, brain: { module: ATTENTION, on: 'drawn' }, terrain: VIEW, run: QUICK, compare: true },
-    target: '#run-finetune',
+    target: '#scene, #run-finetune',
     figure: 'finetune-biped-large',
   },
   {

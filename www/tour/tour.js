@@ -142,7 +142,7 @@ export class Tour {
     img.src = src;
     img.alt = fig.title;
     const caption = /** @type {HTMLElement} */ (box.querySelector('figcaption'));
-    caption.textContent = `Our study: ${fig.title}. ${fig.paper} `;
+    caption.textContent = `Our study: ${fig.title}. ${fig.read} ${fig.paper} `;
     const watch = doc.createElement('button');
     watch.type = 'button';
     watch.textContent = 'Watch its robots';
@@ -162,7 +162,8 @@ export class Tour {
     const rect = first.getBoundingClientRect();
     const sheet = this.box.getBoundingClientRect();
     const bottom = sheet.top > innerHeight / 3 ? sheet.top : innerHeight; // a sheet at the bottom hides what is under it
-    if (rect.top < 0 || rect.top > bottom - 40) first.scrollIntoView({ block: 'start', behavior: 'instant' });
+    const sheetBelow = bottom < innerHeight;
+    if (rect.top < 0 || rect.top > bottom - 40) first.scrollIntoView({ block: sheetBelow ? 'start' : 'center', behavior: 'instant' });
   }
 
   /** Folds the chapter's text away, or back. */
