@@ -59,43 +59,32 @@ export const FIGURES = [
     read: 'Each run\'s best robot, its attention frozen at the second on the horizontal axis, then walked 30 s: its speed (mind the scale: centimetres per second).',
     runs: [{ kind: 'scratch', shape: 'comb-7x2', evals: 30000, controllers: ['attention'] }],
   },
-  {
-    id: 'finetune-biped-large',
-    file: 'fig7-rq2-biped-4x3-to-biped-6x4.svg',
-    title: 'The small biped\'s attention, fine-tuned on the large biped, against evolving from scratch',
-    paper: 'The paper\'s Fig. 7: a transplanted attention, fine-tuned, gets fast much sooner than a brain evolved from scratch. Our study agrees on all four transfers (after 2,500 evaluations); by the end of the budget the two are level.',
-    read: 'Speed of the best robot so far (the median run; shaded, the middle half) against evaluations spent on the large biped: fine-tuning the transplanted module (10,000 evaluations) and evolving from scratch (30,000).',
-    runs: [{ kind: 'finetune', shape: 'biped-6x4', evals: 10000, source: 'biped-4x3-' },
-      { kind: 'scratch', shape: 'biped-6x4', evals: 30000, controllers: ['attention'] }],
-  },
-  {
-    id: 'finetune-biped-small',
-    file: 'fig7-rq2-biped-6x4-to-biped-4x3.svg',
-    title: 'The large biped\'s attention, fine-tuned on the small biped, against evolving from scratch',
-    paper: 'The paper\'s Fig. 7, from large to small.',
-    read: 'Speed of the best robot so far (the median run; shaded, the middle half) against evaluations spent on the small biped: fine-tuning the transplanted module (10,000 evaluations) and evolving from scratch (30,000).',
-    runs: [{ kind: 'finetune', shape: 'biped-4x3', evals: 10000, source: 'biped-6x4-' },
-      { kind: 'scratch', shape: 'biped-4x3', evals: 30000, controllers: ['attention'] }],
-  },
-  {
-    id: 'finetune-comb-large',
-    file: 'fig7-rq2-comb-7x2-to-comb-14x2.svg',
-    title: 'The small comb\'s attention, fine-tuned on the large comb, against evolving from scratch',
-    paper: 'The paper\'s Fig. 7, for the combs.',
-    read: 'Speed of the best robot so far (the median run; shaded, the middle half) against evaluations spent on the large comb: fine-tuning the transplanted module (10,000 evaluations) and evolving from scratch (30,000).',
-    runs: [{ kind: 'finetune', shape: 'comb-14x2', evals: 10000, source: 'comb-7x2-' },
-      { kind: 'scratch', shape: 'comb-14x2', evals: 30000, controllers: ['attention'] }],
-  },
-  {
-    id: 'finetune-comb-small',
-    file: 'fig7-rq2-comb-14x2-to-comb-7x2.svg',
-    title: 'The large comb\'s attention, fine-tuned on the small comb, against evolving from scratch',
-    paper: 'The paper\'s Fig. 7, from large to small.',
-    read: 'Speed of the best robot so far (the median run; shaded, the middle half) against evaluations spent on the small comb: fine-tuning the transplanted module (10,000 evaluations) and evolving from scratch (30,000).',
-    runs: [{ kind: 'finetune', shape: 'comb-7x2', evals: 10000, source: 'comb-14x2-' },
-      { kind: 'scratch', shape: 'comb-7x2', evals: 30000, controllers: ['attention'] }],
-  },
+  transfer('biped', ['biped-4x3', 'small'], ['biped-6x4', 'large'], 'The paper\'s Fig. 7: a transplanted attention, '
+    + 'fine-tuned, gets fast much sooner than a brain evolved from scratch. Our study agrees on all four transfers (after '
+    + '2,500 evaluations); by the end of the budget the two are level.'),
+  transfer('biped', ['biped-6x4', 'large'], ['biped-4x3', 'small'], 'The paper\'s Fig. 7, from large to small.'),
+  transfer('comb', ['comb-7x2', 'small'], ['comb-14x2', 'large'], 'The paper\'s Fig. 7, for the combs.'),
+  transfer('comb', ['comb-14x2', 'large'], ['comb-7x2', 'small'], 'The paper\'s Fig. 7, from large to small.'),
 ];
+
+/**
+ * A fine-tuning figure (the paper's Fig. 7): the attention evolved on `from` (20,000
+ * evaluations), fine-tuned on `to` (10,000), against evolving from scratch on `to` (30,000).
+ * @param {string} body @param {[string, string]} from shape and size in words @param {[string, string]} to
+ * @param {string} paper @returns {StudyFigure}
+ */
+function transfer(body, [from, fromSize], [to, toSize], paper) {
+  return {
+    id: `finetune-${body}-${toSize}`,
+    file: `fig7-rq2-${from}-to-${to}.svg`,
+    title: `The ${fromSize} ${body}'s attention, fine-tuned on the ${toSize} ${body}, against evolving from scratch`,
+    paper,
+    read: `Speed of the best robot so far (the median run; shaded, the middle half) against evaluations spent on the ${toSize} `
+      + `${body}: fine-tuning the transplanted module (10,000 evaluations) and evolving from scratch (30,000).`,
+    runs: [{ kind: 'finetune', shape: to, evals: 10000, source: `${from}-` },
+      { kind: 'scratch', shape: to, evals: 30000, controllers: ['attention'] }],
+  };
+}
 
 /** @param {string} id @returns {StudyFigure} */
 export function figure(id) {
