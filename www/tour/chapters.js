@@ -42,7 +42,7 @@ export const CHAPTERS = [
       'No brain drives it yet. Every voxel squeezes and swells on a clock, each column a little later than the one on its left, so a wave runs along the body: this is the phase gait.',
     ],
     task: 'Open “Phase gait” under the robot and change φ, the delay from one column to the next (try 0, then −1.5).',
-    notice: 'The same ten voxels walk fast, crawl or go backwards depending only on their timing. The speed under the robot tells you how fast.',
+    notice: 'At 0 every column beats together and the robot stays where it is; at −1.5 the wave runs the other way, and so does the robot. Only the timing changed. The speed under the robot says how fast.',
     setup: { rows: BIPED, brain: null, terrain: 'flat' },
     target: '#scene, details.gait',
   },
