@@ -3,6 +3,7 @@
 #   make test        install what is missing (and chromium), then every check and test
 #   make test-cluster  the campaign recipes from a bare folder: GNU parallel, and Slurm on a
 #                      single-node Slurm started here (scripts/slurm-local.sh; needs root)
+#   make test-python the Python package (python/): wheel, install, pytest (docs/python.md)
 #   make bench-wasm  speed of the wasm build in Node (figures for the README)
 #   make bench-native-v3  opt-in: native speed built for x86-64-v3 (AVX2) CPUs only
 
@@ -15,11 +16,11 @@ WASM_PACK_BUILD := wasm-pack build --release --target web --out-dir www/pkg --ou
 .NOTPARALLEL:
 
 .PHONY: run test setup setup-test wasm serve lint test-native test-wasm test-web test-cluster \
-	test-parallel test-slurm bench-wasm bench-native-v3
+	test-parallel test-slurm test-python bench-wasm bench-native-v3 bench-python
 
 run: setup wasm serve
 
-test: setup-test lint test-native test-cluster test-wasm wasm test-web
+test: setup-test lint test-native test-python test-cluster test-wasm wasm test-web
 
 setup:
 	bash scripts/setup.sh
@@ -35,12 +36,30 @@ serve:
 	PORT=$(PORT) node scripts/serve.mjs
 
 lint:
-	cargo fmt --check
+	cargo fmt --all --check
 	cargo clippy --all-targets -- -D warnings
+	cargo clippy -p vsr-python --all-targets -- -D warnings
 	cargo clippy --lib --target wasm32-unknown-unknown -- -D warnings
 
 test-native:
 	cargo test --release
+
+## The Python package: its abi3 wheel built by maturin (release profile, as the binary), put
+## in the virtual environment scripts/setup.sh --test made (target/py-venv; a fresh one in CI),
+## then its pytest suite, which checks it against the `vsr` binary built here.
+PY_VENV := target/py-venv
+test-python:
+	cargo build --release --bin vsr
+	rm -rf target/wheels
+	$(PY_VENV)/bin/maturin build --release -m python/Cargo.toml --out target/wheels
+	$(PY_VENV)/bin/pip install --force-reinstall --no-deps target/wheels/vsr-*.whl
+	$(PY_VENV)/bin/pytest -q python/tests
+
+## Evaluations per second through vsr.evaluate against `vsr evaluate` on the same batch, and a
+## pycma run (the figures of docs/python.md); needs `make test-python` first.
+bench-python:
+	$(PY_VENV)/bin/python python/examples/bench_evaluate.py
+	$(PY_VENV)/bin/python python/examples/cma_evolve.py
 
 ## The campaign recipes of docs/campaigns.md, as written, on campaigns/smoke.toml in an empty
 ## folder: GNU parallel, then Slurm on a real single-node Slurm (about 80 s; needs root).

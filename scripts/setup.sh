@@ -5,7 +5,9 @@
 #
 #   scripts/setup.sh          wasm target, wasm-pack, the exact wasm-bindgen-cli, npm packages
 #   scripts/setup.sh --test   the same, plus rustfmt, clippy, Debian chromium for the browser test,
-#                             and Debian parallel, slurm-wlm and munge for the campaign recipes' tests
+#                             Debian parallel, slurm-wlm and munge for the campaign recipes' tests,
+#                             and a Python virtual environment (target/py-venv) with maturin,
+#                             numpy, pytest and cma from PyPI for the Python package's tests
 set -euo pipefail
 
 cd "$(dirname "$0")/.."
@@ -114,11 +116,29 @@ cluster_tools() {
   fi
 }
 
+# The Python package's build and test tools, in their own virtual environment.
+PY_VENV=target/py-venv
+PY_PACKAGES=(maturin numpy pytest cma)
+python_tools() {
+  if ! command -v python3 >/dev/null || ! python3 -c 'import venv, ensurepip' 2>/dev/null; then
+    say "installing Debian python3 and python3-venv"
+    apt_install python3 python3-venv
+  fi
+  if [ ! -x "$PY_VENV/bin/python" ]; then
+    say "making the Python virtual environment $PY_VENV"
+    python3 -m venv "$PY_VENV"
+  fi
+  if ! "$PY_VENV/bin/python" -c 'import maturin, numpy, pytest, cma' 2>/dev/null; then
+    say "installing ${PY_PACKAGES[*]} (PyPI) into $PY_VENV"
+    "$PY_VENV/bin/pip" install --quiet --disable-pip-version-check "${PY_PACKAGES[@]}"
+  fi
+}
+
 require_rust
 require_node
 rust_tools
 wasm_pack
 wasm_bindgen_cli
 npm_packages
-if [ "$with_test" -eq 1 ]; then chromium; cluster_tools; fi
+if [ "$with_test" -eq 1 ]; then chromium; cluster_tools; python_tools; fi
 say "ok"

@@ -5,28 +5,12 @@
 //! after the last, over the elapsed time.
 
 use super::gait::PhaseGait;
-use crate::controllers::{Controller, Topology};
+pub use super::policy::Policy;
+use crate::controllers::Topology;
 use crate::error::{Error, Result};
 use crate::simulation::constants::{ACTUATION_HOLD_STEPS, DT};
 use crate::simulation::sensors::Sensors;
 use crate::simulation::{Shape, Terrain, World};
-
-/// What drives the voxels.
-pub enum Policy {
-    /// An open-loop phase gait.
-    Gait(PhaseGait),
-    /// A controller fed by the voxels' sensors.
-    Brain(Box<dyn Controller>),
-}
-
-impl std::fmt::Debug for Policy {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Policy::Gait(g) => write!(f, "Gait({g:?})"),
-            Policy::Brain(c) => write!(f, "Brain({} params)", c.param_count()),
-        }
-    }
-}
 
 /// The neighbour table of a shape, for controllers.
 pub fn topology(shape: &Shape) -> Topology {
@@ -144,6 +128,14 @@ impl Episode {
                 g.actuate(k as f64 * DT, &self.columns, &mut self.actuation);
             }
             Policy::Gait(_) => return,
+            // Read where a controller would be asked; the caller sets the actuation.
+            Policy::External => {
+                self.sensors.sense(&self.world);
+                if latch {
+                    self.sensors.read(&self.world);
+                }
+                return;
+            }
             Policy::Brain(c) => {
                 self.sensors.sense(&self.world);
                 if !(latch || c.needs_every_step()) {
@@ -211,6 +203,35 @@ impl Episode {
         &self.actuation
     }
 
+    /// Holds `actuation` (one value per voxel, in [-1, 1], as a controller's output is held)
+    /// from now on: how an [`Policy::External`] policy acts between control points. A gait or
+    /// a brain replaces it at its next control point. Fails, changing nothing, on a wrong
+    /// length or a non-finite value.
+    pub fn set_actuation(&mut self, actuation: &[f64]) -> Result<()> {
+        let n = self.voxel_count();
+        if actuation.len() != n {
+            return Err(Error::Input(format!(
+                "expected {n} actuations (one per voxel), got {}",
+                actuation.len()
+            )));
+        }
+        if let Some(i) = actuation.iter().position(|a| !a.is_finite()) {
+            return Err(Error::Input(format!(
+                "actuation {i} is {}, actuations must be finite numbers in [-1, 1]",
+                actuation[i]
+            )));
+        }
+        self.actuation.copy_from_slice(actuation);
+        self.world.set_actuation(&self.actuation);
+        Ok(())
+    }
+
+    /// The sensor readings of the last control point, what a controller is fed: 4 per voxel
+    /// (area, vx, vy, touch) in voxel index order, zeros before the first step.
+    pub fn observation(&self) -> &[f32] {
+        self.sensors.readings()
+    }
+
     /// The policy driving the voxels.
     pub fn policy(&self) -> &Policy {
         &self.policy
@@ -226,7 +247,7 @@ impl Episode {
     pub fn attention(&self) -> Option<&[f32]> {
         match &self.policy {
             Policy::Brain(c) => c.attention(),
-            Policy::Gait(_) => None,
+            Policy::Gait(_) | Policy::External => None,
         }
     }
 
@@ -258,35 +279,5 @@ impl Episode {
     /// Robot centre y (m).
     pub fn centre_y(&self) -> f64 {
         self.world.centre().1
-    }
-
-    /// Writes 8 floats per voxel: outer corners x, y in order SW, SE, NE, NW.
-    pub fn write_voxel_corners(&self, out: &mut [f32]) {
-        for (v, chunk) in out.chunks_exact_mut(8).enumerate().take(self.voxel_count()) {
-            for (c, (x, y)) in self.world.voxel_corners(v).into_iter().enumerate() {
-                chunk[2 * c] = x as f32;
-                chunk[2 * c + 1] = y as f32;
-            }
-        }
-    }
-
-    /// Writes one float per voxel: its area ratio.
-    pub fn write_area_ratios(&self, out: &mut [f32]) {
-        for (v, a) in out.iter_mut().enumerate().take(self.voxel_count()) {
-            *a = self.world.area_ratio(v) as f32;
-        }
-    }
-
-    /// Writes 12 floats per voxel: its 4 corner squares as centre x, y and angle,
-    /// order SW, SE, NE, NW.
-    pub fn write_corner_bodies(&self, out: &mut [f32]) {
-        for (s, chunk) in out
-            .chunks_exact_mut(3)
-            .enumerate()
-            .take(4 * self.voxel_count())
-        {
-            let (x, y, a) = self.world.square_pose(s);
-            chunk.copy_from_slice(&[x as f32, y as f32, a as f32]);
-        }
     }
 }

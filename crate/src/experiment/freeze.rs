@@ -37,6 +37,9 @@ impl Episode {
                 "the phase gait has no attention to freeze (give the robot an attention brain)"
                     .into(),
             )),
+            Policy::External => Err(Error::Input(
+                "an external policy has no attention to freeze".into(),
+            )),
         }
     }
 
@@ -44,7 +47,7 @@ impl Episode {
     pub fn attention_frozen(&self) -> bool {
         match self.policy() {
             Policy::Brain(c) => c.attention_frozen(),
-            Policy::Gait(_) => false,
+            Policy::Gait(_) | Policy::External => false,
         }
     }
 }

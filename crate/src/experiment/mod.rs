@@ -11,6 +11,7 @@ pub mod evolution;
 pub mod finetune;
 pub mod freeze;
 pub mod gait;
+pub mod policy;
 pub mod run;
 pub mod seeds;
 pub mod trajectory;

@@ -7,6 +7,9 @@
 //! following steps, as the reference's snapshots record it), both in voxel index
 //! order (SPEC 4); `squares` [x, y, angle] of every corner square, four per voxel in
 //! voxel index order, corners SW, SE, NE, NW.
+//!
+//! The same state as flat `f32` buffers (the page's frames, Python's arrays): the
+//! `write_*` methods of [`Episode`] below.
 
 use super::episode::Episode;
 
@@ -42,6 +45,39 @@ impl Frame {
                     [x, y, a]
                 })
                 .collect(),
+        }
+    }
+}
+
+/// The episode's state into flat buffers, for drawing it or handing it to another language.
+impl Episode {
+    /// Writes 8 floats per voxel: outer corners x, y in order SW, SE, NE, NW.
+    pub fn write_voxel_corners(&self, out: &mut [f32]) {
+        for (v, chunk) in out.chunks_exact_mut(8).enumerate().take(self.voxel_count()) {
+            for (c, (x, y)) in self.world().voxel_corners(v).into_iter().enumerate() {
+                chunk[2 * c] = x as f32;
+                chunk[2 * c + 1] = y as f32;
+            }
+        }
+    }
+
+    /// Writes one float per voxel: its area ratio.
+    pub fn write_area_ratios(&self, out: &mut [f32]) {
+        for (v, a) in out.iter_mut().enumerate().take(self.voxel_count()) {
+            *a = self.world().area_ratio(v) as f32;
+        }
+    }
+
+    /// Writes 12 floats per voxel: its 4 corner squares as centre x, y and angle,
+    /// order SW, SE, NE, NW.
+    pub fn write_corner_bodies(&self, out: &mut [f32]) {
+        for (s, chunk) in out
+            .chunks_exact_mut(3)
+            .enumerate()
+            .take(4 * self.voxel_count())
+        {
+            let (x, y, a) = self.world().square_pose(s);
+            chunk.copy_from_slice(&[x as f32, y as f32, a as f32]);
         }
     }
 }

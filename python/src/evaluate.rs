@@ -1,0 +1,78 @@
+//! `param_count` and `evaluate`: many genomes of one robot on one terrain, each row the
+//! episode `vsr evaluate` runs (`vsr::experiment::evaluate::evaluate`, sensor noise seeded
+//! by `noise_seed`), spread over a rayon pool with the GIL released. The velocities come
+//! back in row order whatever the number of threads: every episode is independent.
+
+use numpy::{PyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
+use pyo3::prelude::*;
+use rayon::prelude::*;
+use vsr::experiment::evaluate::evaluate as episode;
+
+use crate::args::{robot, rows, seconds as check_seconds, terrain as parse_terrain};
+use crate::errors::{input, to_py};
+
+/// Genome length of `controller` on `shape`.
+#[pyfunction]
+pub fn param_count(shape: &str, controller: &str) -> PyResult<usize> {
+    let (shape, kind) = robot(shape, controller)?;
+    Ok(kind.param_count(shape.voxel_count()))
+}
+
+/// Velocities (m/s) of each row of `genomes`; NaN where the episode became unstable (the
+/// command line reports an error there instead).
+#[pyfunction]
+#[pyo3(signature = (genomes, shape, controller, terrain, seconds=30.0, threads=None, noise_seed=0))]
+#[allow(clippy::too_many_arguments)]
+pub fn evaluate<'py>(
+    py: Python<'py>,
+    genomes: PyReadonlyArray2<'py, f32>,
+    shape: &str,
+    controller: &str,
+    terrain: &str,
+    seconds: f64,
+    threads: Option<usize>,
+    noise_seed: u64,
+) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    let (shape, kind) = robot(shape, controller)?;
+    let terrain = parse_terrain(terrain)?;
+    let seconds = check_seconds(seconds)?;
+    let noise = Some(noise_seed);
+    let (count, length) = (genomes.shape()[0], genomes.shape()[1]);
+    let data = rows(&genomes)?;
+    let row = |i: usize| &data[i * length..(i + 1) * length];
+    for i in 0..count {
+        let what = format!("genome {i}");
+        kind.check_genome(&what, shape.voxel_count(), row(i))
+            .map_err(to_py)?;
+    }
+    let pool = pool(threads)?;
+    let velocities = py.detach(|| {
+        let run = || {
+            (0..count)
+                .into_par_iter()
+                .map(|i| {
+                    let outcome = episode(&shape, terrain.clone(), kind, row(i), noise, seconds);
+                    outcome.map_or(f64::NAN, |o| o.velocity)
+                })
+                .collect::<Vec<f64>>()
+        };
+        match &pool {
+            Some(pool) => pool.install(run),
+            None => run(),
+        }
+    });
+    Ok(PyArray1::from_vec(py, velocities))
+}
+
+/// A pool of `threads` threads, or `None` for rayon's pool of all cores.
+fn pool(threads: Option<usize>) -> PyResult<Option<rayon::ThreadPool>> {
+    match threads {
+        None => Ok(None),
+        Some(0) => Err(input("threads must be at least 1".into())),
+        Some(t) => rayon::ThreadPoolBuilder::new()
+            .num_threads(t)
+            .build()
+            .map(Some)
+            .map_err(|e| input(format!("cannot start {t} threads: {e}"))),
+    }
+}

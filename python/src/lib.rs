@@ -1,0 +1,29 @@
+//! The native half of the `vsr` Python package (`vsr._vsr`): a thin pyo3 layer over the
+//! engine, the way `crate/src/wasm` is for the page. Arrays cross as numpy arrays, read in
+//! place where their dtype and layout allow (the Python half, `python/vsr/`, makes them so);
+//! long computations run with the GIL released; every engine error becomes a Python
+//! exception carrying the engine's message (see `errors`).
+
+mod args;
+mod controller;
+mod episode;
+mod errors;
+mod evaluate;
+mod runfile;
+mod simulate;
+
+use pyo3::prelude::*;
+
+#[pymodule]
+fn _vsr(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(evaluate::param_count, m)?)?;
+    m.add_function(wrap_pyfunction!(evaluate::evaluate, m)?)?;
+    m.add_function(wrap_pyfunction!(simulate::simulate, m)?)?;
+    m.add_function(wrap_pyfunction!(runfile::check_run, m)?)?;
+    m.add_function(wrap_pyfunction!(runfile::new_run, m)?)?;
+    m.add_class::<episode::Episode>()?;
+    m.add_class::<controller::Controller>()?;
+    m.add("UnstableError", m.py().get_type::<errors::UnstableError>())?;
+    m.add("ENGINE_VERSION", env!("CARGO_PKG_VERSION"))?;
+    Ok(())
+}

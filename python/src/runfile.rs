@@ -1,0 +1,37 @@
+//! Run files, the format `vsr evolve` writes and `vsr evaluate` and the page read
+//! (`vsr::experiment::run`): checked and printed by the engine, so Python reads and writes
+//! exactly what the command line does. File access stays in the Python half.
+
+use pyo3::prelude::*;
+use vsr::experiment::{Best, EvolutionConfig, RunFile};
+
+use crate::args::robot;
+use crate::errors::to_py;
+
+/// The run file `text` checked as `vsr evaluate` checks it, printed as `vsr` prints it.
+#[pyfunction]
+pub fn check_run(text: &str) -> PyResult<String> {
+    Ok(RunFile::from_json(text).map_err(to_py)?.to_json())
+}
+
+/// A run file for a genome evolved outside the engine (e.g. by CMA-ES): the paper's
+/// configuration for `shape` and `controller` with `seed` and a budget of `evaluations`
+/// (at least one GA population), no generation records, `genome` as the best with `fitness`.
+#[pyfunction]
+#[pyo3(signature = (genome, shape, controller, fitness=None, seed=0, evaluations=0))]
+pub fn new_run(
+    genome: Vec<f32>,
+    shape: &str,
+    controller: &str,
+    fitness: Option<f64>,
+    seed: u64,
+    evaluations: u64,
+) -> PyResult<String> {
+    let (shape, kind) = robot(shape, controller)?;
+    let mut config = EvolutionConfig::paper(shape.clone(), kind, evaluations, seed);
+    config.ga.budget_evals = evaluations.max(config.ga.population as u64);
+    let best = Best::new(kind, shape, genome, fitness.unwrap_or(f64::NAN));
+    let run = RunFile::new(config, vec![], best, None);
+    run.validate().map_err(to_py)?;
+    Ok(run.to_json())
+}

@@ -1,0 +1,71 @@
+"""vsr.Episode, stepped from Python: driven by the engine's own controller through
+vsr.Controller it walks exactly as vsr.evaluate; its rewards add up to the distance; it
+refuses what it cannot do."""
+
+import numpy as np
+import pytest
+
+import vsr
+
+SHAPE, TERRAIN, SECONDS = "biped-4x3", "hilly-1-10-5", 5.0
+
+
+def drive(controller, noise_seed=0):
+    episode = vsr.Episode(SHAPE, TERRAIN, seconds=SECONDS, noise_seed=noise_seed)
+    observation, info = episode.reset()
+    assert observation.shape == (10, 4) and observation.dtype == np.float32
+    rewards, truncated, actions = [], False, 0
+    while not truncated:
+        action = controller(observation)
+        observation, reward, terminated, truncated, info = episode.step(action)
+        assert not terminated
+        rewards.append(reward)
+        actions += 1
+    return episode, rewards, actions, info
+
+
+@pytest.mark.parametrize("kind", ["attention", "mlp"])
+def test_the_engines_controller_from_python_walks_as_evaluate(kind):
+    genome = np.random.default_rng(11).uniform(-1, 1, vsr.param_count(SHAPE, kind))
+    brain = vsr.Controller(SHAPE, kind, genome)
+    assert not brain.needs_every_step
+    episode, rewards, actions, info = drive(brain.control, noise_seed=3)
+    expected = vsr.simulate(genome, SHAPE, kind, TERRAIN, seconds=SECONDS, noise_seed=3)
+    assert actions == 15  # 301 steps: the first, then 15 holds of 20
+    assert episode.velocity == expected["velocity"] == info["velocity"]
+    assert sum(rewards) == pytest.approx(expected["distance"], abs=1e-12)
+
+
+def test_a_python_gait_moves_the_robot_and_observations_are_readings():
+    columns = np.array([0, 1, 2, 3, 0, 1, 2, 3, 0, 3])
+    clock = {"t": 0.0}
+
+    def gait(observation):
+        assert np.all((observation > -0.1) & (observation < 1.1))
+        clock["t"] += 20 / 60
+        return np.sin(2 * np.pi * clock["t"] - 1.5 * columns)
+
+    episode, rewards, _, _ = drive(gait)
+    assert abs(sum(rewards)) > 0.01
+    assert episode.corners().shape == (10, 4, 2)
+    assert episode.time == pytest.approx(301 / 60)
+
+
+def test_the_episode_refuses_what_it_cannot_do():
+    episode = vsr.Episode(SHAPE, "flat", seconds=1.0)
+    with pytest.raises(ValueError, match="call reset"):
+        episode.step(np.zeros(10))
+    episode.reset(seed=4)
+    with pytest.raises(ValueError, match="expected 10 actuations"):
+        episode.step(np.zeros(9))
+    with pytest.raises(ValueError, match="actuation 2 is NaN"):
+        episode.step([0, 0, np.nan, 0, 0, 0, 0, 0, 0, 0])
+    truncated = False
+    while not truncated:
+        *_, truncated, _ = episode.step(np.ones(10))
+    with pytest.raises(ValueError, match="the episode is over"):
+        episode.step(np.zeros(10))
+    with pytest.raises(ValueError, match="unknown terrain"):
+        vsr.Episode(SHAPE, "moon")
+    with pytest.raises(ValueError, match="expected 40 sensor readings"):
+        vsr.Controller(SHAPE, "mlp", np.zeros(41)).control(np.zeros((9, 4), dtype=np.float32))

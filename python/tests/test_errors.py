@@ -1,0 +1,79 @@
+"""Bad input raises ValueError with the command line's message, never a crash."""
+
+import json
+
+import numpy as np
+import pytest
+
+import vsr
+from conftest import cli
+
+GENOMES = np.zeros((2, 73), dtype=np.float32)
+
+
+def cli_message(vsr_bin, *args):
+    code, _, err = cli(vsr_bin, *args)
+    assert code == 2 and err.startswith("vsr: "), err
+    return err[len("vsr: "):].strip()
+
+
+def test_a_disconnected_shape_says_what_the_command_line_says(vsr_bin):
+    expected = cli_message(vsr_bin, "params", "--shape", "1001-1001", "--controller", "mlp")
+    with pytest.raises(ValueError) as e:
+        vsr.evaluate(GENOMES, "1001-1001", "attention", "flat")
+    assert str(e.value) == expected and "separate pieces" in expected
+    with pytest.raises(ValueError, match="separate pieces"):
+        vsr.param_count("1001-1001", "mlp")
+
+
+def test_an_unknown_controller_or_terrain(vsr_bin, tmp_path):
+    expected = cli_message(vsr_bin, "params", "--shape", "biped-4x3", "--controller", "lstm")
+    with pytest.raises(ValueError) as e:
+        vsr.evaluate(GENOMES, "biped-4x3", "lstm", "flat")
+    assert str(e.value) == expected
+    path = tmp_path / "run.json"
+    vsr.save_run(path, vsr.new_run(GENOMES[0], "biped-4x3", "attention"))
+    expected = cli_message(vsr_bin, "evaluate", "--genome", str(path), "--terrain", "moon")
+    with pytest.raises(ValueError) as e:
+        vsr.evaluate(GENOMES, "biped-4x3", "attention", "moon")
+    assert str(e.value) == expected and "unknown terrain" in expected
+
+
+def test_a_wrong_genome_length_names_the_row_and_both_lengths():
+    with pytest.raises(ValueError) as e:
+        vsr.evaluate(np.zeros((3, 72)), "biped-4x3", "attention", "flat")
+    assert str(e.value) == ("invalid input: genome 0 has 72 genes, but the attention "
+                            "controller of a 10-voxel robot has 73")
+    with pytest.raises(ValueError, match="the genome has 72 genes"):
+        vsr.simulate(np.zeros(72), "biped-4x3", "attention", "flat")
+    with pytest.raises(ValueError, match="must be a 2-D array, one genome per row"):
+        vsr.evaluate(np.zeros(73), "biped-4x3", "attention", "flat")
+
+
+def test_nan_genes_are_refused_by_row_and_gene(vsr_bin, tmp_path):
+    genomes = np.zeros((3, 73))
+    genomes[2, 5] = np.nan
+    with pytest.raises(ValueError) as e:
+        vsr.evaluate(genomes, "biped-4x3", "attention", "flat")
+    assert str(e.value) == "invalid input: gene 5 of genome 2 is NaN, genes must be finite numbers"
+    with pytest.raises(ValueError, match="gene 5 of the genome is NaN"):
+        vsr.simulate(genomes[2], "biped-4x3", "attention", "flat")
+    # the command line meets NaN as a null gene of a run file; so does load_run
+    run = json.loads(json.dumps(vsr.new_run(np.zeros(73), "biped-4x3", "attention"),
+                                default=lambda a: a.tolist()))
+    run["best"]["genome"][5] = None
+    path = tmp_path / "nan.json"
+    path.write_text(json.dumps(run))
+    expected = cli_message(vsr_bin, "evaluate", "--genome", str(path), "--terrain", "flat")
+    with pytest.raises(ValueError) as e:
+        vsr.load_run(path)
+    assert str(e.value) == expected and "gene 5 is null" in expected
+
+
+def test_bad_arguments():
+    with pytest.raises(ValueError, match=r"seconds must be in \(0, 3600\], got -1"):
+        vsr.evaluate(GENOMES, "biped-4x3", "attention", "flat", seconds=-1.0)
+    with pytest.raises(ValueError, match="threads must be at least 1"):
+        vsr.evaluate(GENOMES, "biped-4x3", "attention", "flat", threads=0)
+    with pytest.raises(OverflowError):
+        vsr.evaluate(GENOMES, "biped-4x3", "attention", "flat", noise_seed=-1)
