@@ -58,6 +58,7 @@ test-python:
 ## Evaluations per second through vsr.evaluate against `vsr evaluate` on the same batch, and a
 ## pycma run (the figures of docs/python.md); needs `make test-python` first.
 bench-python:
+	cargo build --release -p vsr-python --example native_batch
 	$(PY_VENV)/bin/python python/examples/bench_evaluate.py
 	$(PY_VENV)/bin/python python/examples/cma_evolve.py
 

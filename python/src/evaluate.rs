@@ -1,12 +1,13 @@
 //! `param_count` and `evaluate`: many genomes of one robot on one terrain, each row the
-//! episode `vsr evaluate` runs (`vsr::experiment::evaluate::evaluate`, sensor noise seeded
-//! by `noise_seed`), spread over a rayon pool with the GIL released. The velocities come
+//! episode `vsr evaluate` runs, scored as evolution scores it (`vsr::experiment::evaluate::
+//! fitness`: the velocity, NaN if the simulation exploded; sensor noise seeded by
+//! `noise_seed`), spread over a rayon pool with the GIL released. The velocities come
 //! back in row order whatever the number of threads: every episode is independent.
 
 use numpy::{PyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 use rayon::prelude::*;
-use vsr::experiment::evaluate::evaluate as episode;
+use vsr::experiment::evaluate::fitness;
 
 use crate::args::{robot, rows, seconds as check_seconds, terrain as parse_terrain};
 use crate::errors::{input, to_py};
@@ -50,10 +51,7 @@ pub fn evaluate<'py>(
         let run = || {
             (0..count)
                 .into_par_iter()
-                .map(|i| {
-                    let outcome = episode(&shape, terrain.clone(), kind, row(i), noise, seconds);
-                    outcome.map_or(f64::NAN, |o| o.velocity)
-                })
+                .map(|i| fitness(&shape, terrain.clone(), kind, row(i), noise, seconds))
                 .collect::<Vec<f64>>()
         };
         match &pool {

@@ -1,0 +1,20 @@
+"""The pycma example runs end to end (a tiny budget) and writes a run file vsr replays."""
+
+import subprocess
+import sys
+
+import vsr
+from conftest import ROOT
+
+
+def test_the_cma_example_evolves_validates_and_writes_a_run(tmp_path):
+    out = tmp_path / "cma.json"
+    done = subprocess.run(
+        [sys.executable, str(ROOT / "python" / "examples" / "cma_evolve.py"),
+         "--evaluations", "30", "--seconds", "1", "--out", str(out)],
+        capture_output=True, text=True, timeout=600,
+    )
+    assert done.returncode == 0, done.stderr
+    assert "validation on hilly-1-10-0..9: mean" in done.stdout
+    run = vsr.load_run(out)
+    assert run["best"]["genome"].shape == (73,) and run["config"]["ga"]["budget_evals"] == 100
