@@ -16,6 +16,17 @@ pub fn robot(shape: &str, controller: &str) -> PyResult<(Shape, ControllerKind)>
     Ok((shape, kind))
 }
 
+/// What an episode needs from its arguments: the robot, the terrain, the length (s).
+pub fn setup(
+    shape: &str,
+    controller: &str,
+    terrain_name: &str,
+    length: f64,
+) -> PyResult<(Shape, ControllerKind, Terrain, f64)> {
+    let (shape, kind) = robot(shape, controller)?;
+    Ok((shape, kind, terrain(terrain_name)?, seconds(length)?))
+}
+
 /// A terrain by name (flat, hilly-1-10-3, ...).
 pub fn terrain(name: &str) -> PyResult<Terrain> {
     Terrain::parse(name).map_err(to_py)

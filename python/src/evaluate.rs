@@ -9,7 +9,7 @@ use pyo3::prelude::*;
 use rayon::prelude::*;
 use vsr::experiment::evaluate::fitness;
 
-use crate::args::{robot, rows, seconds as check_seconds, terrain as parse_terrain};
+use crate::args::{robot, rows, setup};
 use crate::errors::{input, to_py};
 
 /// Genome length of `controller` on `shape`.
@@ -34,9 +34,7 @@ pub fn evaluate<'py>(
     threads: Option<usize>,
     noise_seed: u64,
 ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-    let (shape, kind) = robot(shape, controller)?;
-    let terrain = parse_terrain(terrain)?;
-    let seconds = check_seconds(seconds)?;
+    let (shape, kind, terrain, seconds) = setup(shape, controller, terrain, seconds)?;
     let noise = Some(noise_seed);
     let (count, length) = (genomes.shape()[0], genomes.shape()[1]);
     let data = rows(&genomes)?;

@@ -2,14 +2,14 @@
 //! (velocity, distance, steps, seconds) and, on request, recorded after every step: the time
 //! (s), the robot's centre (m) and every voxel's four outer corners (m; SW, SE, NE, NW).
 
-use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
+use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use vsr::experiment::evaluate::controller_for;
 use vsr::experiment::{steps_for, Episode, Policy};
 
-use crate::args::{robot, seconds as check_seconds, terrain as parse_terrain};
-use crate::errors::{input, to_py};
+use crate::args::setup;
+use crate::errors::to_py;
 
 /// What is recorded after every step: time, centre, corners (flat, in step order).
 #[derive(Default)]
@@ -28,7 +28,7 @@ impl Recording {
     }
 }
 
-/// One episode of `genome` driving `controller` on `shape` over `terrain`; a dict with
+/// One episode of `genome` (a few hundred genes at most: copied) driving `controller` on `shape` over `terrain`; a dict with
 /// `velocity`, `distance`, `steps`, `seconds` and, when `trajectory`, `time` (T,),
 /// `centre` (T, 2) and `corners` (T, voxels, 4, 2).
 #[pyfunction]
@@ -36,7 +36,7 @@ impl Recording {
 #[allow(clippy::too_many_arguments)]
 pub fn simulate<'py>(
     py: Python<'py>,
-    genome: PyReadonlyArray1<'py, f32>,
+    genome: Vec<f32>,
     shape: &str,
     controller: &str,
     terrain: &str,
@@ -44,13 +44,8 @@ pub fn simulate<'py>(
     noise_seed: u64,
     trajectory: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let (shape, kind) = robot(shape, controller)?;
-    let terrain = parse_terrain(terrain)?;
-    let seconds = check_seconds(seconds)?;
-    let genome = genome
-        .as_slice()
-        .map_err(|_| input("the genome must be a contiguous float32 array".into()))?;
-    let brain = controller_for(kind, &shape, genome).map_err(to_py)?;
+    let (shape, kind, terrain, seconds) = setup(shape, controller, terrain, seconds)?;
+    let brain = controller_for(kind, &shape, &genome).map_err(to_py)?;
     let n = shape.voxel_count();
     let (outcome, recording) = py
         .detach(|| {
