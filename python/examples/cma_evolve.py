@@ -13,9 +13,12 @@ evaluate --genome` and the page replay.
 
 import argparse
 import time
+import warnings
 
-import cma
 import numpy as np
+
+warnings.filterwarnings("ignore", message="Could not import matplotlib")  # pycma's plots
+import cma  # noqa: E402
 
 import vsr
 
