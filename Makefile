@@ -5,6 +5,7 @@
 #                      single-node Slurm started here (scripts/slurm-local.sh; needs root)
 #   make test-python the Python package (python/): wheel, install, pytest (docs/python.md)
 #   make bench-wasm  speed of the wasm build in Node (figures for the README)
+#   make web-package the npm-ready web package (wasm core + <vsr-robot>) in target/web-package
 #   make bench-native-v3  opt-in: native speed built for x86-64-v3 (AVX2) CPUs only
 
 SHELL := /bin/bash
@@ -16,7 +17,7 @@ WASM_PACK_BUILD := wasm-pack build --release --target web --out-dir www/pkg --ou
 .NOTPARALLEL:
 
 .PHONY: run test setup setup-test wasm serve lint test-native test-wasm test-web test-cluster \
-	test-parallel test-slurm test-python bench-wasm bench-native-v3 bench-python
+	test-parallel test-slurm test-python bench-wasm bench-native-v3 bench-python web-package
 
 run: setup wasm serve
 
@@ -79,6 +80,10 @@ test-wasm:
 ## The page in headless Chromium (needs `make wasm`).
 test-web:
 	node --test tests/web/
+
+## The wasm core and <vsr-robot> as an npm package, and its size (docs/embed.md).
+web-package: setup wasm
+	node scripts/web-package.mjs
 
 bench-wasm: setup wasm
 	node tests/bench/wasm_bench.mjs

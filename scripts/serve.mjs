@@ -102,6 +102,8 @@ async function handle(root, mounts, req, res) {
     // figure) and SharedArrayBuffer for later multi-worker runs. Everything is same-origin.
     'cross-origin-opener-policy': 'same-origin',
     'cross-origin-embedder-policy': 'require-corp',
+    // Other origins may load these files (an embedded <vsr-robot> from this server).
+    'access-control-allow-origin': '*',
   });
   if (req.method === 'HEAD') res.end();
   else createReadStream(file).pipe(res);

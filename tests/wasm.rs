@@ -6,17 +6,13 @@
 //! run file reads back through `RunFile::from_json`; `evaluateJob` refuses bad jobs.
 #![cfg(target_arch = "wasm32")]
 
+mod wasm_common;
+
 use vsr::experiment::RunFile;
 use vsr::wasm::{bench_episode, evaluate_job, Episode, Evolution};
-use wasm_bindgen::{JsCast, JsValue};
+use wasm_bindgen::JsValue;
 use wasm_bindgen_test::wasm_bindgen_test;
-
-/// The message of a JS error, after checking that it really is an `Error` object.
-fn error_message(error: wasm_bindgen::JsError) -> String {
-    let value = JsValue::from(error);
-    let error = value.dyn_ref::<js_sys::Error>().expect("a JS Error object");
-    String::from(error.message())
-}
+use wasm_common::{error_message, json};
 
 #[wasm_bindgen_test]
 fn preset_and_row_string_build_the_same_biped() {
@@ -206,11 +202,6 @@ fn tiny_settings(population: usize, budget: u64) -> JsValue {
 fn settings(value: serde_json::Value) -> JsValue {
     let serializer = serde_wasm_bindgen::Serializer::json_compatible();
     serde::Serialize::serialize(&value, &serializer).expect("a JS value")
-}
-
-/// A JS value read back as JSON, to look into.
-fn json(value: JsValue) -> serde_json::Value {
-    serde_wasm_bindgen::from_value(value).expect("plain data")
 }
 
 /// Evaluates every pending job of `evolution` in order, as an evaluation worker would.

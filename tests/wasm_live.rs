@@ -6,20 +6,16 @@
 //! `attentionTerms` gives the four numbers behind the matrices or refuses a short genome.
 #![cfg(target_arch = "wasm32")]
 
+mod wasm_common;
+
 use vsr::experiment::RunFile;
 use vsr::wasm::{attention_terms, Episode};
-use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::wasm_bindgen_test;
+use wasm_common::error_message;
 
 const ATTENTION_RUN: &str = include_str!("../pretrained/biped-4x3-attention.json");
 const MLP_RUN: &str = include_str!("../pretrained/biped-4x3-mlp.json");
 const TERRAIN: &str = "hilly-1-10-0";
-
-fn error_message(error: wasm_bindgen::JsError) -> String {
-    let value = JsValue::from(error);
-    let error = value.dyn_ref::<js_sys::Error>().expect("a JS Error object");
-    String::from(error.message())
-}
 
 /// The run's best on its own body, built as the page's viewer builds it.
 fn walking(text: &str) -> Episode {

@@ -6,6 +6,8 @@
 //! viewer's episode speed is the fitness bit for bit, and a budget's plan is the core's.
 #![cfg(target_arch = "wasm32")]
 
+mod wasm_common;
+
 use vsr::controllers::ControllerKind;
 use vsr::experiment::evaluate::fitness;
 use vsr::experiment::RunFile;
@@ -15,13 +17,10 @@ use vsr::wasm::{
 };
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::wasm_bindgen_test;
+use wasm_common::json;
 
 const ATTENTION_RUN: &str = include_str!("../pretrained/biped-4x3-attention.json");
 const MLP_RUN: &str = include_str!("../pretrained/biped-4x3-mlp.json");
-
-fn json(value: JsValue) -> serde_json::Value {
-    serde_wasm_bindgen::from_value(value).expect("plain data")
-}
 
 fn to_js(value: serde_json::Value) -> JsValue {
     let serializer = serde_wasm_bindgen::Serializer::json_compatible();

@@ -1,7 +1,8 @@
 // @ts-check
 /**
  * The one helper for starting workers and wording their failures, used by the page
- * (simulation worker, GA coordinator) and by the coordinator (evaluation workers).
+ * (simulation worker, GA coordinator), by the coordinator (evaluation workers) and by
+ * `<vsr-robot>` (embed/vsr-robot.js), whose scripts may come from another origin.
  */
 
 /**
@@ -12,7 +13,7 @@
  * @returns {Worker}
  */
 export function spawn(file, onMessage, onFailure) {
-  const worker = new Worker(new URL(`./${file}`, import.meta.url), { type: 'module' });
+  const worker = new Worker(startable(new URL(`./${file}`, import.meta.url)), { type: 'module' });
   worker.onmessage = (event) => onMessage(event.data);
   worker.onerror = (event) => {
     event.preventDefault();
@@ -20,6 +21,17 @@ export function spawn(file, onMessage, onFailure) {
   };
   worker.onmessageerror = () => onFailure('a message could not be read');
   return worker;
+}
+
+/**
+ * A worker script's URL as this page may start it: the URL itself on the page's origin; from
+ * another origin (the embedded robot's scripts on a CDN), a same-origin module that imports it,
+ * since a page may only start workers of its own origin.
+ * @param {URL} url @returns {URL | string}
+ */
+function startable(url) {
+  if (url.origin === self.location.origin) return url;
+  return URL.createObjectURL(new Blob([`import ${JSON.stringify(url.href)};`], { type: 'text/javascript' }));
 }
 
 /** The text of a thrown value. @param {unknown} error @returns {string} */

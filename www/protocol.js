@@ -86,10 +86,12 @@ export const DT = 1 / 60;
 /**
  * @typedef {object} EpisodeParams
  * @property {string} shape      the body as rows, top first (`1111-1111-1001`)
- * @property {string} terrain    terrain name (`hilly-1-10-0`)
- * @property {number} frequency  gait frequency f (Hz), used without a brain
- * @property {number} phase      gait phase phi (rad per column), used without a brain
+ * @property {string} [terrain]  terrain name (`hilly-1-10-0`; none: the viewer's default)
+ * @property {number} [frequency] gait frequency f (Hz), used without a brain (none: the core's default)
+ * @property {number} [phase]    gait phase phi (rad per column), used without a brain (none: the core's default)
  * @property {Brain | null} brain  the controller that drives the body, or null for the gait
+ * @property {string} [runFile]  a run file's JSON text: its best individual drives its own body
+ *                               (`shape` '' or that body's rows), as `vsr evaluate` runs it
  * @property {number} [until]    seconds: the episode ends there, at the step `vsr evaluate`
  *                               ends an episode of that length (a race); none: it walks on
  * @property {number} [seconds]  the episode's length (s): its speed is measured over it, as a

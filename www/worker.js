@@ -5,7 +5,7 @@
  * short slices so that control messages are handled promptly, and posts frames whose
  * buffers are transferred, not copied. Message types and buffer layouts: protocol.js.
  */
-import init, { Episode, start as installPanicHook } from './pkg/vsr.js';
+import init, { Episode, defaults, start as installPanicHook } from './pkg/vsr.js';
 import { loadWasm, messageOf } from './kit.js';
 import { DT, FromWorker, ToWorker } from './protocol.js';
 
@@ -72,15 +72,18 @@ function handle(msg) {
 /**
  * Replaces the episode. Bad parameters or a genome that does not fit throw before anything
  * is replaced, so the previous robot keeps running and the error goes back to the page.
- * @param {import('./protocol.js').EpisodeParams} next
+ * Parameters left out (terrain, gait) take the core's defaults.
+ * @param {import('./protocol.js').EpisodeParams} asked
  */
-function load(next) {
+function load(asked) {
+  const { gait, viewTerrain } = defaults();
+  const next = { terrain: viewTerrain, frequency: gait.frequency, phase: gait.phase, ...asked };
   // An edit of the walking robot rebuilds it where it stands, in its posture and motion, if
   // the robot walking is the one that was edited (not after a restart or a refused load).
   const edit = next.keepPlace && episode ? next.keepPlace : null;
   const left = edit ? episode.leftEdge() : NaN;
-  const fresh = next.brain
-    ? Episode.fromGenome(next.shape, next.terrain, next.brain.controller, next.brain.genome, left)
+  const fresh = next.runFile ? Episode.fromRunFile(next.runFile, next.terrain, next.shape)
+    : next.brain ? Episode.fromGenome(next.shape, next.terrain, next.brain.controller, next.brain.genome, left)
     : Episode.gaitAt(next.shape, next.terrain, next.frequency, next.phase, left);
   const carried = Boolean(edit && episode && edit.from === episode.shape && next.terrain === params?.terrain);
   if (carried && edit && episode) fresh.carryPose(episode, edit.dx, edit.dy);

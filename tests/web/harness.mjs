@@ -41,6 +41,18 @@ export async function start() {
  * @param {{width?: number, height?: number, touch?: boolean}} [options] screen size, a touch screen
  */
 export async function openPage(browser, url, options = {}) {
+  const opened = await openBare(browser, url, options);
+  await waitForText(opened.page, 'status', /voxels/);
+  return opened;
+}
+
+/**
+ * A new page (its own storage) at `url`, with its problems collected, once it has loaded:
+ * any page, not only the playground.
+ * @param {import('playwright-core').Browser} browser @param {string} url
+ * @param {{width?: number, height?: number, touch?: boolean}} [options] screen size, a touch screen
+ */
+export async function openBare(browser, url, options = {}) {
   const context = await browser.newContext({ viewport: { width: options.width ?? 1300, height: options.height ?? 1100 },
     acceptDownloads: true, hasTouch: options.touch ?? false });
   const page = await context.newPage();
@@ -53,7 +65,6 @@ export async function openPage(browser, url, options = {}) {
     if (msg.type() === 'error') problems.push(`worker console: ${msg.text()}`);
   }));
   await page.goto(url);
-  await waitForText(page, 'status', /voxels/);
   return { page, problems, context };
 }
 

@@ -60,7 +60,7 @@ pub fn replay(
     if let Some(other) = shape.filter(|s| **s != best.shape) {
         return Err(Error::Input(format!(
             "this {} controller needs shape {} ({} voxels), not {} ({} voxels); \
-             clear the shape field to use its own shape",
+             leave the shape out to use its own",
             best.controller,
             best.shape.to_rows(),
             best.shape.voxel_count(),

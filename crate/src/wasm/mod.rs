@@ -4,7 +4,8 @@
 //! [`Episode`] wraps `experiment::Episode` (built from a phase gait in `episode.rs`, from
 //! a run file in `controlled.rs`, measured as the fitness measures in `measure.rs`); [`Evolution`] wraps `experiment::Evolution` for the page's
 //! GA coordinator and [`evaluate_job`] is one evaluation of its workers (`evolution.rs`);
-//! freezing a walking robot's attention and its speed so far are in `live.rs`.
+//! freezing a walking robot's attention and its speed so far are in `live.rs`; [`evaluate`]
+//! runs one whole episode as `vsr evaluate` does, for users of the web package (`evaluate.rs`).
 //! Bulk per-frame data leaves linear memory as flat `Float32Array`s whose layouts are documented on the getters that fill them
 //! and, for the page, once in `www/protocol.js`. Core errors become JS `Error`s (never
 //! traps) so a worker can report bad input and keep its previous state.
@@ -13,6 +14,7 @@
 mod bench;
 mod controlled;
 mod episode;
+mod evaluate;
 mod evolution;
 mod live;
 mod measure;
@@ -22,6 +24,7 @@ mod plan;
 
 pub use bench::bench_episode;
 pub use episode::Episode;
+pub use evaluate::evaluate;
 pub use evolution::{evaluate_job, Evolution};
 pub use live::attention_terms;
 pub use module::{describe_run, run_genome};
