@@ -4,8 +4,8 @@
  * its three robots walk, each in its own worker (the centre's x grows by metres); a click holds
  * one (its x stays) and plays it again; a wrong attribute (a bad or disconnected shape, a module
  * file missing, malformed or for another body, an unknown terrain, no robot at all) shows its
- * message in place of the robot, and fixing it brings the robot back; a robot out of sight
- * pauses. Saves
+ * message in place of the robot, and fixing it brings the robot back (a shape alone walks with
+ * the phase gait); a robot out of sight pauses. Saves
  * screenshots/embed-{walking,errors}.png.
  */
 import assert from 'node:assert/strict';
@@ -17,11 +17,11 @@ import { openBare, screenshot, start } from './harness.mjs';
 before(async () => { env = await start(); });
 after(async () => { await env?.close(); });
 
-/** @param {import('playwright-core').Page} page @returns {Promise<{id: string, x: number, time: number, running: boolean, error: string}[]>} */
+/** @param {import('playwright-core').Page} page @returns {Promise<{id: string, x: number, distance: number, time: number, running: boolean, error: string}[]>} */
 function robots(page) {
   return page.$$eval('vsr-robot', (els) => els.map((el) => {
     const r = /** @type {any} */ (el);
-    return { id: el.id, x: r.x, time: r.time, running: r.running, error: r.error };
+    return { id: el.id, x: r.x, distance: r.distance, time: r.time, running: r.running, error: r.error };
   }));
 }
 
@@ -43,7 +43,10 @@ test('the example page: three robots walk, each on its own canvas; a click holds
   const first = await waitWalked(page, 2);
   const now = await robots(page);
   assert.deepEqual(now.map((r) => r.id), ['biped', 'comb', 'transplant']);
-  for (const r of now) assert.equal(r.error, '', `${r.id} shows no message`);
+  for (const r of now) {
+    assert.equal(r.error, '', `${r.id} shows no message`);
+    assert.ok(r.distance > 2, `${r.id} walked ${r.distance} m from its start`);
+  }
   console.log(`# walked: ${now.map((r, i) => `${r.id} ${(r.x - first[i].x).toFixed(1)} m in ${(r.time - first[i].time).toFixed(1)} s`).join(', ')}`);
   const canvases = await page.$$eval('vsr-robot', (els) => els.map((el) => {
     const canvas = /** @type {HTMLCanvasElement} */ (el.shadowRoot?.querySelector('canvas'));
@@ -106,6 +109,13 @@ test('a wrong attribute shows its message in place of the robot; fixing it bring
     return el.error === '' && el.running && el.time > 1;
   }, undefined, { timeout: 30_000 });
   assert.equal(await fixed.evaluate((el) => /** @type {HTMLElement} */ (el.shadowRoot?.querySelector('.error')).hidden), true);
+
+  // With a shape and nothing else, the phase gait drives it on the viewer's terrain.
+  await page.locator('#wrong-6').evaluate((el) => el.setAttribute('shape', 'biped-4x3'));
+  await page.waitForFunction(() => {
+    const el = /** @type {any} */ (document.getElementById('wrong-6'));
+    return el.error === '' && el.running && el.time > 1;
+  }, undefined, { timeout: 30_000 });
 
   // A robot out of sight pauses, and walks on when scrolled back into view.
   const biped = () => page.evaluate(() => /** @type {any} */ (document.getElementById('biped')).running);

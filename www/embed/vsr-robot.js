@@ -14,8 +14,8 @@
  * Renderer on the element's own canvas, sized by CSS (block, 2:1 by default). A click (or
  * Enter / Space) holds the robot and plays it again; a robot out of sight is paused. A wrong
  * attribute shows the core's message in place of the robot until it is fixed. For scripts:
- * `x` (the centre's x, m), `time` (s), `velocity` (m/s, as fitness defines it), `running`
- * and `error` ('' or the message shown). docs/embed.md.
+ * `x` (the centre's x, m), `distance` (m walked since the start), `time` (s), `velocity` (m/s,
+ * as fitness defines it), `running` and `error` ('' or the message shown). docs/embed.md.
  */
 import { messageOf, spawn } from '../kit.js';
 import { FromWorker, ToWorker, frameIsConsistent } from '../protocol.js';
@@ -72,6 +72,7 @@ export class VsrRobot extends HTMLElement {
     this.x = NaN;
     this.time = NaN;
     this.velocity = NaN;
+    this.distance = NaN;
     this.frameRequest = 0;
     this.pending = false;
     this.addEventListener('click', (e) => { if (!this.error) { e.preventDefault(); this.toggle(); } });
@@ -165,6 +166,8 @@ export class VsrRobot extends HTMLElement {
         this.x = msg.centreX;
         this.time = msg.time;
         this.velocity = msg.velocity;
+        this.distance = msg.distance;
+        if (Number.isFinite(msg.distance)) this.renderer.origin = msg.centreX - msg.distance; // the ruler counts from the start
         break;
       case FromWorker.STATE: this.running = msg.running; break;
       case FromWorker.ERROR:
