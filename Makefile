@@ -1,6 +1,8 @@
 # VSR Playground: the two commands of the README, and their parts.
 #   make run         install what is missing, build the page, serve it at http://127.0.0.1:8080
 #   make test        install what is missing (and chromium), then every check and test
+#   make test-cluster  the campaign recipes from a bare folder: GNU parallel, and Slurm on a
+#                      single-node Slurm started here (scripts/slurm-local.sh; needs root)
 #   make bench-wasm  speed of the wasm build in Node (figures for the README)
 #   make bench-native-v3  opt-in: native speed built for x86-64-v3 (AVX2) CPUs only
 
@@ -12,11 +14,12 @@ WASM_PACK_BUILD := wasm-pack build --release --target web --out-dir www/pkg --ou
 # The steps depend on each other's results (setup before builds, wasm before test-web).
 .NOTPARALLEL:
 
-.PHONY: run test setup setup-test wasm serve lint test-native test-wasm test-web bench-wasm bench-native-v3
+.PHONY: run test setup setup-test wasm serve lint test-native test-wasm test-web test-cluster \
+	test-parallel test-slurm bench-wasm bench-native-v3
 
 run: setup wasm serve
 
-test: setup-test lint test-native test-wasm wasm test-web
+test: setup-test lint test-native test-cluster test-wasm wasm test-web
 
 setup:
 	bash scripts/setup.sh
@@ -38,6 +41,16 @@ lint:
 
 test-native:
 	cargo test --release
+
+## The campaign recipes of docs/campaigns.md, as written, on campaigns/smoke.toml in an empty
+## folder: GNU parallel, then Slurm on a real single-node Slurm (about 80 s; needs root).
+test-cluster: test-parallel test-slurm
+
+test-parallel:
+	bash tests/cluster/parallel.sh
+
+test-slurm:
+	bash tests/cluster/slurm.sh
 
 ## The wasm boundary under Node (tests/wasm.rs).
 test-wasm:

@@ -3,7 +3,8 @@
  * A tiny static file server for www/ (module workers need http, and wasm needs the
  * application/wasm type for streaming compilation). Serves on 127.0.0.1 only, GET and
  * HEAD only. The repository's pretrained/ run files are also served, read-only, at
- * /pretrained/ (the page lists them from /pretrained/manifest.json), without a copy.
+ * /pretrained/ (the page lists them from /pretrained/manifest.json), without a copy, and
+ * its docs/ at /docs/ (the page links the study's results).
  *
  *   node scripts/serve.mjs          # http://127.0.0.1:8080, or PORT=9000 node ...
  *
@@ -19,7 +20,10 @@ const HERE = path.dirname(fileURLToPath(import.meta.url));
 /** The folder served by default. */
 export const WWW = path.resolve(HERE, '..', 'www');
 /** Folders served under a URL prefix instead of from `root`. */
-export const MOUNTS = Object.freeze({ '/pretrained/': path.resolve(HERE, '..', 'pretrained') });
+export const MOUNTS = Object.freeze({
+  '/pretrained/': path.resolve(HERE, '..', 'pretrained'),
+  '/docs/': path.resolve(HERE, '..', 'docs'), // the study's results, linked from the page
+});
 
 /** Content types by file extension. */
 const MIME = {
@@ -34,6 +38,7 @@ const MIME = {
   '.ico': 'image/x-icon',
   '.ts': 'text/plain; charset=utf-8',
   '.txt': 'text/plain; charset=utf-8',
+  '.md': 'text/plain; charset=utf-8',
 };
 
 /**

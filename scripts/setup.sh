@@ -4,7 +4,8 @@
 # machine (as root, or with sudo for apt); needs Rust (rustup) and Node.js >= 18.19.
 #
 #   scripts/setup.sh          wasm target, wasm-pack, the exact wasm-bindgen-cli, npm packages
-#   scripts/setup.sh --test   the same, plus rustfmt, clippy and Debian chromium for the browser test
+#   scripts/setup.sh --test   the same, plus rustfmt, clippy, Debian chromium for the browser test,
+#                             and Debian parallel, slurm-wlm and munge for the campaign recipes' tests
 set -euo pipefail
 
 cd "$(dirname "$0")/.."
@@ -101,11 +102,23 @@ chromium() {
   fi
 }
 
+# The campaign recipes' tests (tests/cluster/): GNU parallel, and a single-node Slurm.
+cluster_tools() {
+  local missing=()
+  command -v parallel >/dev/null || missing+=(parallel)
+  command -v slurmctld >/dev/null || missing+=(slurm-wlm)
+  command -v munged >/dev/null || missing+=(munge)
+  if [ ${#missing[@]} -gt 0 ]; then
+    say "installing Debian ${missing[*]}"
+    apt_install "${missing[@]}"
+  fi
+}
+
 require_rust
 require_node
 rust_tools
 wasm_pack
 wasm_bindgen_cli
 npm_packages
-if [ "$with_test" -eq 1 ]; then chromium; fi
+if [ "$with_test" -eq 1 ]; then chromium; cluster_tools; fi
 say "ok"

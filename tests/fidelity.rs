@@ -1,7 +1,8 @@
 #![cfg(not(target_arch = "wasm32"))]
 //! Fidelity against numbers measured on the reference simulator (fixtures copied from
 //! shared/reference): placement, a voxel's area-ratio response, and the distribution
-//! of gait velocities. The dynamics are chaotic, so trajectories are compared only
+//! of gait velocities (biped-4x3, and comb-7x2 against the reference with and without its
+//! continuous collision detection). The dynamics are chaotic, so trajectories are compared only
 //! before the first ground contact and gaits only as distributions.
 
 use serde_json::Value;
@@ -157,4 +158,62 @@ fn gait_ensembles_match_the_reference_distributions() {
     assert!(rho >= 0.6, "{summary}");
     assert!((avg - ref_avg).abs() <= 0.1, "{summary}");
     assert!((0.25..=4.0).contains(&median_ratio), "{summary}");
+}
+
+/// Mean absolute difference between two lists of ensemble means.
+fn mean_abs_difference(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| (x - y).abs()).sum::<f64>() / a.len() as f64
+}
+
+#[test]
+fn comb_ensembles_match_the_reference_and_its_ccd_free_variant_better() {
+    // The comb-7x2 under 21 phase gaits, 17 starts each, against the reference (dyn4j with
+    // continuous collision detection, the paper's simulator) and, for the gaits measured
+    // there, the reference with CCD switched off (an artefact we do not reproduce, SPEC).
+    // Like the biped: means within 2 sd, the gaits rank alike, the average speed matches.
+    // And the finding docs/RESULTS.md builds on: our comb is closer to the CCD-free variant.
+    let r = fixture("gaits-comb-flat.json");
+    let conditions = r["conditions"].as_array().expect("list");
+    let shape = Shape::parse("comb-7x2").expect("valid");
+    let flat = Terrain::parse("flat").expect("valid");
+    let (mut ours, mut theirs, mut report) = (vec![], vec![], vec![]);
+    let (mut ours_cf, mut ccd_free, mut ref_cf) = (vec![], vec![], vec![]);
+    let mut inside = 0;
+    for c in conditions {
+        let gait = PhaseGait::new(f(&c["f"]), f(&c["phi"])).expect("finite");
+        let e = gait_ensemble(&shape, &flat, gait, 30.0, 17, 0.0).expect("stable");
+        let (mean, sd) = (f(&c["mean_velocity"]), f(&c["sd_velocity"]));
+        inside += usize::from((e.mean - mean).abs() <= 2.0 * sd);
+        ours.push(e.mean);
+        theirs.push(mean);
+        let cf = c.get("ccd_free").map(|v| f(&v["mean_velocity"]));
+        if let Some(cf) = cf {
+            ours_cf.push(e.mean);
+            ccd_free.push(cf);
+            ref_cf.push(mean);
+        }
+        report.push(format!(
+            "f={} phi={}: {:.3} vs {mean:.3} +- {sd:.3} (CCD-free {cf:?})",
+            c["f"], c["phi"], e.mean
+        ));
+    }
+    let n = conditions.len() as f64;
+    let rho = rank_correlation(&ours, &theirs);
+    let (avg, ref_avg) = (ours.iter().sum::<f64>() / n, theirs.iter().sum::<f64>() / n);
+    let (to_ref, to_cf) = (
+        mean_abs_difference(&ours_cf, &ref_cf),
+        mean_abs_difference(&ours_cf, &ccd_free),
+    );
+    let summary = format!(
+        "{inside}/{n} within 2 sd, rank correlation {rho:.2}, mean {avg:.3} vs {ref_avg:.3}; \
+         on the {} CCD-free gaits mean |ours - reference| {to_ref:.3}, |ours - CCD-free| \
+         {to_cf:.3}\n{}",
+        ours_cf.len(),
+        report.join("\n")
+    );
+    assert!(inside as f64 >= 0.9 * n, "{summary}");
+    assert!(rho >= 0.6, "{summary}");
+    assert!((avg - ref_avg).abs() <= 0.1, "{summary}");
+    assert!(ours_cf.len() >= 10, "{summary}");
+    assert!(to_cf < to_ref, "{summary}");
 }

@@ -4,9 +4,9 @@
 //! best individual re-validates on both validation sets to exactly the velocities recorded
 //! when the campaign validated it.
 
-use vsr::experiment::campaign::export::{Manifest, FORMAT, VERSION};
 use vsr::experiment::run::RunFile;
 use vsr::experiment::validation::validate_on;
+use vsr::study::campaign::export::{Manifest, FORMAT, VERSION};
 
 fn pretrained(path: &str) -> String {
     let full = format!("{}/pretrained/{path}", env!("CARGO_MANIFEST_DIR"));

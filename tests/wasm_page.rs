@@ -2,11 +2,17 @@
 //! the core, a drawing's check names its pieces and parameter counts, a pretrained attention
 //! module transplants onto another body keeping its 32 attention genes (as `vsr finetune`
 //! starts), an MLP module is refused on another body, an edit of a walking robot keeps the
-//! genes of surviving voxels, and a fine-tuning run never touches the attention block.
+//! genes of surviving voxels, a fine-tuning run never touches the attention block, the
+//! viewer's episode speed is the fitness bit for bit, and a budget's plan is the core's.
 #![cfg(target_arch = "wasm32")]
 
+use vsr::controllers::ControllerKind;
+use vsr::experiment::evaluate::fitness;
 use vsr::experiment::RunFile;
-use vsr::wasm::{check_shape, defaults, describe_run, remap, transplant, Episode, Evolution};
+use vsr::simulation::{Shape, Terrain};
+use vsr::wasm::{
+    check_shape, defaults, describe_run, remap, run_plan, transplant, Episode, Evolution,
+};
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::wasm_bindgen_test;
 
@@ -77,6 +83,59 @@ fn a_transplant_keeps_the_attention_block_and_redraws_the_rest() {
     let info = json(describe_run(ATTENTION_RUN).expect("described"));
     assert_eq!(info["controller"], "attention");
     assert_eq!(info["genes"], 73);
+    assert_eq!(info["seconds"], run.config.seconds);
+    assert_eq!(info["terrain"], "hilly-1-10");
+    assert_eq!(
+        info["evaluations"], 30100,
+        "the budget of 30000 takes whole generations"
+    );
+}
+
+#[wasm_bindgen_test]
+fn the_viewer_measures_its_episode_as_the_fitness_does() {
+    let run = RunFile::from_json(ATTENTION_RUN).expect("pretrained");
+    let genome = &run.best.genome;
+    let mut episode =
+        Episode::from_genome("biped-4x3", "hilly-1-10-3", "attention", genome, f64::NAN)
+            .expect("walks");
+    episode.measure_over(2.5).expect("a length");
+    assert!(
+        episode.episode_speed().is_nan(),
+        "nothing measured before the end"
+    );
+    for _ in 0..50 {
+        episode.step(7).expect("steps"); // 350 steps, the episode's 151 inside one call
+    }
+    let shape = Shape::parse("biped-4x3").expect("a preset");
+    let terrain = Terrain::parse("hilly-1-10-3").expect("a terrain");
+    let noise = Some(0); // the viewer's noise seed
+    let fitness = fitness(
+        &shape,
+        terrain,
+        ControllerKind::Attention,
+        genome,
+        noise,
+        2.5,
+    );
+    assert_eq!(episode.episode_speed().to_bits(), fitness.to_bits());
+    assert!(
+        episode.distance() > 0.0 && episode.velocity() != fitness,
+        "it walked on past the episode"
+    );
+    assert_eq!(json(defaults().expect("defaults"))["viewNoiseSeed"], "0");
+}
+
+#[wasm_bindgen_test]
+fn a_budget_becomes_whole_generations() {
+    let quick = json(run_plan(20.0, 2000.0).expect("a plan"));
+    assert_eq!(quick["planned"], 2020);
+    assert_eq!(quick["generations"], 50);
+    assert_eq!(quick["perGeneration"], 40);
+    assert_eq!(
+        json(run_plan(100.0, 30000.0).expect("a plan"))["planned"],
+        30100
+    );
+    assert!(run_plan(0.0, 10.0).is_err());
 }
 
 #[wasm_bindgen_test]

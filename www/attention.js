@@ -3,7 +3,8 @@
  * The attention panel: each voxel's 4 x 4 attention matrix as a small heat map, the maps
  * laid out like the robot's grid (top row on top). Rows are queries and columns keys, in
  * sensor order area, vx, vy, touch; blue is -1, white 0, red +1. Hidden when the
- * controller has no attention. Redraws only when a new frame arrived.
+ * controller has no attention. Redraws only when a new frame arrived. `pick` finds the map
+ * under a click (the attention reader opens on it) and the `selected` one is outlined.
  */
 import { ATTENTION_FLOATS, SENSOR_NAMES } from './protocol.js';
 
@@ -47,6 +48,32 @@ export class AttentionPanel {
     /** @type {Float32Array} */
     this.attention = new Float32Array(0);
     this.dirty = false;
+    /** The last drawn layout, for {@link AttentionPanel.pick}. */
+    this.geometry = { pitchX: 0, pitchY: 0, rowLabel: 0, colLabel: 0, cell: 0 };
+    /** The voxel being read (its map outlined), or -1. */
+    this.selected = -1;
+  }
+
+  /**
+   * The voxel whose map is at (clientX, clientY), or -1.
+   * @param {number} clientX @param {number} clientY
+   */
+  pick(clientX, clientY) {
+    const rect = this.canvas.getBoundingClientRect();
+    const { pitchX, pitchY, rowLabel, colLabel, cell } = this.geometry;
+    if (cell === 0) return -1;
+    const x = clientX - rect.left;
+    const y = clientY - rect.top;
+    const column = Math.floor(x / pitchX);
+    const row = this.rows - 1 - Math.floor(y / pitchY);
+    const inX = x - column * pitchX - rowLabel;
+    const inY = y - (this.rows - 1 - row) * pitchY - colLabel;
+    const slack = cell; // a near miss on the labels or the gap still picks the map
+    if (inX < -slack || inY < -slack || inX > SIDE * cell + slack || inY > SIDE * cell + slack) return -1;
+    for (let v = 0; v < this.cells.length / 2; v++) {
+      if (this.cells[2 * v] === column && this.cells[2 * v + 1] === row) return v;
+    }
+    return -1;
   }
 
   /** A new episode: lays the maps out like its voxels. @param {Uint32Array} cells column, row per voxel */
@@ -92,6 +119,7 @@ export class AttentionPanel {
     const pitchY = colLabel + SIDE * cell + gap;
     const width = this.columns * pitchX;
     const height = this.rows * pitchY;
+    this.geometry = { pitchX, pitchY, rowLabel, colLabel, cell };
     if (canvas.width !== Math.round(width * dpr) || canvas.height !== Math.round(height * dpr)) {
       canvas.width = Math.round(width * dpr);
       canvas.height = Math.round(height * dpr);
@@ -105,6 +133,11 @@ export class AttentionPanel {
       const x = this.cells[2 * v] * pitchX + rowLabel;
       const y = (this.rows - 1 - this.cells[2 * v + 1]) * pitchY + colLabel;
       this.drawMap(this.attention.subarray(v * ATTENTION_FLOATS, (v + 1) * ATTENTION_FLOATS), x, y, cell, labelled);
+      if (v === this.selected) {
+        ctx.strokeStyle = '#2f6fb0';
+        ctx.lineWidth = 3;
+        ctx.strokeRect(x - 2.5, y - 2.5, SIDE * cell + 5, SIDE * cell + 5);
+      }
     }
   }
 

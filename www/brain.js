@@ -16,12 +16,23 @@ import { describeRun, remapGenome, runGenome, transplant } from './core.js';
  * @property {string} label          where it came from, in words
  * @property {string | null} module  the pretrained file it came from, if any
  * @property {string | null} source  the run file whose attention block it carries (fine-tuning), if any
+ * @property {number | null} [seconds] the episode length it was trained on (s), if known
+ * @property {Trained | null} [trained] its training figure, if it walks as it was trained
+ * @property {boolean} [oneShot]     a module put on a body it was not trained on, not fine-tuned yet
+ * @property {boolean} [run]         it comes from the run in the run panel
+ */
+
+/**
+ * @typedef {object} Trained  what training measured: the speed of its latest evaluation, on a
+ *   terrain of the training terrain (a family draws a fresh one for every evaluation)
+ * @property {number} speed   m/s
+ * @property {string} terrain the training terrain (family or name)
  */
 
 /** @typedef {{left: number, bottom: number}} Origin */
 
 /**
- * A module put on the body `rows`: SPEC 10's transplant (throws a readable Error when the
+ * A module put on the body `rows`: the core's transplant (throws a readable Error when the
  * module cannot go on this body).
  * @param {import('./modules.js').Module} module @param {string} rows @param {Origin} origin @param {number} seed
  * @returns {Brain}
@@ -29,10 +40,12 @@ import { describeRun, remapGenome, runGenome, transplant } from './core.js';
 export function transplanted(module, rows, origin, seed) {
   const info = describeRun(module.text);
   const genome = transplant(module.text, rows, seed);
+  const own = info.shape === rows;
   return {
     controller: info.controller, genome, rows, origin, module: pretrainedKey(module), source: attentionSource(info, module.text),
-    label: info.shape === rows ? `${module.label}, on its own body`
-      : `the attention block of a module evolved on ${info.shape}; downstream genes re-drawn for this body (seed ${seed})`,
+    seconds: info.seconds, trained: own ? { speed: info.fitness, terrain: info.terrain } : null, oneShot: !own,
+    label: own ? `${module.label}, on its own body`
+      : `a module transplanted from ${info.shape}: its attention as evolved there, the rest of its brain new for this body (seed ${seed})`,
   };
 }
 
@@ -46,6 +59,7 @@ export function ownBody(module, origin) {
   return {
     controller: info.controller, genome: runGenome(module.text), rows: info.shape, origin, module: pretrainedKey(module),
     source: attentionSource(info, module.text), label: `${module.label}, on its own body`,
+    seconds: info.seconds, trained: { speed: info.fitness, terrain: info.terrain }, oneShot: false,
   };
 }
 
@@ -57,7 +71,7 @@ export function ownBody(module, origin) {
 export function followEdit(brain, rows, origin, seed, edit) {
   const genome = remapGenome(brain.controller, brain.genome, brain.rows, rows,
     origin.left - brain.origin.left, origin.bottom - brain.origin.bottom, seed, edit);
-  return { ...brain, genome, rows, origin, label: `${brain.label.replace(/ · edited$/, '')} · edited` };
+  return { ...brain, genome, rows, origin, trained: null, label: `${brain.label.replace(/ · edited$/, '')} · edited` };
 }
 
 /**
@@ -69,20 +83,22 @@ export function followEdit(brain, rows, origin, seed, edit) {
 export function bestSoFar(genome, fitness, settings, kind, finetuning, source, origin) {
   return {
     controller: kind, genome, rows: settings.shape, origin, module: null, source: finetuning ? source : null,
+    seconds: settings.seconds, trained: { speed: fitness, terrain: settings.terrain }, run: true,
     label: `the best so far while ${finetuning ? 'fine-tuning' : 'evolving'} (${fitness.toFixed(2)} m/s in one evaluation, seed ${settings.seed})`,
   };
 }
 
 /**
  * A finished run's result: its run file's best.
- * @param {{controller: string, genome: number[]}} best @param {string} runFile @param {string} rows
- * @param {Origin} origin @param {string} label
+ * @param {{controller: string, genome: number[], fitness: number}} best @param {string} runFile
+ * @param {import('./protocol.js').EvolveSettings} settings @param {Origin} origin @param {string} label
  * @returns {Brain}
  */
-export function runResult(best, runFile, rows, origin, label) {
+export function runResult(best, runFile, settings, origin, label) {
   return {
-    controller: best.controller, genome: new Float32Array(best.genome), rows, origin, module: null,
+    controller: best.controller, genome: new Float32Array(best.genome), rows: settings.shape, origin, module: null,
     source: best.controller === 'attention' ? runFile : null, label,
+    seconds: settings.seconds, trained: { speed: best.fitness, terrain: settings.terrain }, run: true,
   };
 }
 

@@ -166,16 +166,17 @@ function tellGeneration() {
   const generation = batch;
   batch = null;
   let best = null;
+  const i = bestIndex(generation.fitness);
+  const len = evolution.genomeLength;
+  const top = { fitness: generation.fitness[i], genome: generation.genomes.slice(i * len, (i + 1) * len) };
   if (record.best !== null && record.best !== undefined && record.best > bestSoFar) {
     bestSoFar = record.best;
-    const i = bestIndex(generation.fitness);
-    const len = evolution.genomeLength;
-    best = { fitness: record.best, genome: generation.genomes.slice(i * len, (i + 1) * len) };
+    best = { fitness: record.best, genome: top.genome.slice() };
   }
   const evaluations = evolution.evaluations;
   self.postMessage({
     type: FromCoordinator.GENERATION, record, evaluations, planned: evolution.plannedEvaluations,
-    evalsPerSecond: seconds > 0 ? evaluations / seconds : NaN, best,
+    evalsPerSecond: seconds > 0 ? evaluations / seconds : NaN, best, top,
   });
   if (stepping) { stepping = false; setPaused(true); }
   nextGeneration();

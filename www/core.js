@@ -22,6 +22,7 @@ export const ready = loadWasm(init, wasm.start).then(() => /** @type {Defaults} 
  * @property {{frequency: number, phase: number}} gait
  * @property {number} maxSeed
  * @property {number} attentionGenes
+ * @property {string} viewNoiseSeed   the viewer's sensor noise seed (decimal)
  */
 /** @typedef {{population: number, seconds: number, budget: number}} RunPreset */
 /**
@@ -33,20 +34,28 @@ export const ready = loadWasm(init, wasm.start).then(() => /** @type {Defaults} 
  * @property {[string, number][]} params      genes per controller family
  */
 
+/**
+ * What a run of `population` and `budget` evaluations takes (the core's rule).
+ * @param {number} population @param {number} budget
+ * @returns {{planned: number, generations: number, perGeneration: number}} throws on a bad number
+ */
+export function runPlan(population, budget) { return wasm.runPlan(population, budget); }
+
 /** @param {string} rows @returns {ShapeCheck} */
 export function checkShape(rows) { return wasm.checkShape(rows); }
 
 /**
  * @param {string} runFile a run file's JSON text
- * @returns {{shape: string, controller: string, seed: number, budget: number, fitness: number,
- *   genes: number, finetunedFrom: string | null}} throws a readable Error when malformed
+ * @returns {{shape: string, controller: string, seed: number, budget: number, evaluations: number, fitness: number,
+ *   genes: number, finetunedFrom: string | null, seconds: number, terrain: string}} throws a
+ *   readable Error when malformed
  */
 export function describeRun(runFile) { return wasm.describeRun(runFile); }
 
 /** @param {string} runFile @returns {Float32Array} its best genome */
 export function runGenome(runFile) { return wasm.runGenome(runFile); }
 
-/** SPEC 10's transplant onto `rows`. @param {string} runFile @param {string} rows @param {number} seed */
+/** The transplant of a module onto `rows` (attention: its attention block kept). @param {string} runFile @param {string} rows @param {number} seed */
 export function transplant(runFile, rows, seed) { return wasm.transplant(runFile, rows, seed); }
 
 /**
@@ -70,3 +79,9 @@ export function checkTerrain(name) { return wasm.checkTerrain(name); }
 
 /** '' or why `name` is not a training terrain (family or name). @param {string} name @returns {string} */
 export function checkTrainingTerrain(name) { return wasm.checkTrainingTerrain(name); }
+
+/**
+ * The four numbers a, b, c, d of an attention genome that fix its matrices:
+ * A[r][c] = tanh(a s_r s_c + b s_r + c s_c + d). @param {Float32Array} genome @returns {number[]}
+ */
+export function attentionTerms(genome) { return Array.from(wasm.attentionTerms(genome)); }

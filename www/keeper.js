@@ -3,8 +3,14 @@
  * Keeping and sharing the page's state: kept in the browser's storage shortly after each
  * change (drafts too), put in a link by Share (address bar and clipboard), and read back at
  * start-up (a link first, else what was kept) or when a link is pasted into this tab. Every
- * state read is checked in full (share.js) before anything changes; a refused link says why.
+ * state read is checked in full (share.js) before anything changes; a refused link says why
+ * and what is shown instead, until the person closes the message.
+ *
+ * The latest state wins: a link in the address bar is read once. Once opened (or refused) it
+ * leaves the address bar, and Share's link leaves it at the next change, so that a reload
+ * shows the kept state, with every later edit, never an older link.
  */
+import { plain } from './message.js';
 import { decodeState, encodeState } from './share.js';
 import { keep, loadKept } from './storage.js';
 
@@ -15,6 +21,7 @@ const KEEP_DELAY_MS = 300;
  * @typedef {object} KeeperHooks
  * @property {() => import('./share.js').PageState} state  the state now
  * @property {(state: import('./share.js').PageState) => Promise<string>} apply  shows a state; '' or why not
+ * @property {() => string} shown                             the robot shown now, in words
  * @property {() => boolean} running                          a run uses the robot
  * @property {(text: string, kind?: import('./message.js').Kind) => void} say
  */
@@ -36,16 +43,19 @@ export class Keeper {
   schedule() {
     window.clearTimeout(this.timer);
     this.timer = window.setTimeout(() => {
-      const problem = keep(encodeState(this.hooks.state()));
+      const state = encodeState(this.hooks.state());
+      const problem = keep(state);
       if (problem) this.hooks.say(problem);
+      else if (location.hash.length > 1 && location.hash.slice(1) !== state) dropLink();
     }, KEEP_DELAY_MS);
   }
 
   /**
-   * Shows the state of the link this page was opened with, else the kept one.
-   * @returns {Promise<boolean>} whether a state was shown (else the caller shows its default)
+   * Shows the state of the link this page was opened with, else the kept one, else calls
+   * `fallback` (the page's first robot); a refused link says so, and what is shown instead.
+   * @param {() => void} fallback
    */
-  async restore() {
+  async restore(fallback) {
     const { controllers, grid } = this.defaults;
     const fromLink = location.hash.length > 1 ? decodeState(location.hash, controllers, grid) : null;
     let refused = '';
@@ -59,8 +69,9 @@ export class Keeper {
     const kept = loadKept();
     const fromStorage = !shown && kept ? decodeState(kept, controllers, grid, true) : null;
     if (fromStorage && 'state' in fromStorage) shown = (await this.hooks.apply(fromStorage.state)) === '';
-    if (refused) this.refuse(refused);
-    return shown;
+    if (!shown) fallback();
+    if (fromLink) dropLink(); // read once: from now on the kept state is the page's
+    if (refused) this.refuse(refused, shown ? 'the robot you had here before' : `the example robot ${this.defaults.presets[0].name}`);
   }
 
   /** A link pasted into this tab (only the part after '#' changed): open it, unless a run goes on. */
@@ -69,7 +80,8 @@ export class Keeper {
     if (this.hooks.running()) { this.hooks.say('Stop the run before opening another robot.'); return; }
     const opened = decodeState(location.hash, this.defaults.controllers, this.defaults.grid);
     const problem = 'error' in opened ? opened.error : await this.hooks.apply(opened.state);
-    if (problem) this.refuse(problem);
+    dropLink();
+    if (problem) this.refuse(problem, 'the robot you had before');
   }
 
   /** The Share button: the state in the address bar and on the clipboard. */
@@ -88,8 +100,14 @@ export class Keeper {
     }
   }
 
-  /** @param {string} why */
-  refuse(why) {
-    this.hooks.say(`This link could not be opened (${why}); your own robot is shown instead.`);
+  /** @param {string} why @param {string} instead whose robot is shown instead */
+  refuse(why, instead) {
+    this.hooks.say(`This link could not be opened: ${plain(why)}. It may have been cut short or changed on the way; `
+      + `ask for it again. Shown instead: ${instead}, ${this.hooks.shown()}.`, 'lasting');
   }
+}
+
+/** Takes the link out of the address bar (no reload, no new history entry). */
+function dropLink() {
+  history.replaceState(null, '', `${location.pathname}${location.search}`);
 }

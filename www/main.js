@@ -14,8 +14,12 @@ import { Editor } from './editor.js';
 import { messageOf } from './kit.js';
 import { MessageBox, plain } from './message.js';
 import { ModuleList } from './modules.js';
+import { SENSOR_NAMES } from './protocol.js';
+import { Race } from './race.js';
 import { RunPanel } from './run-panel.js';
 import { Keeper } from './keeper.js';
+import { Measurer } from './measure.js';
+import { SpeedNote } from './speed-note.js';
 import { Viewer } from './viewer.js';
 
 /** Least wall time between two switches of the viewer to a newer best (ms). */
@@ -62,17 +66,26 @@ const viewer = new Viewer(document, {
 const keeper = new Keeper(defaults, el('share-link'), {
   state: pageState,
   apply: restore,
+  shown: () => `${drawing.rows()} (${check.voxels} voxels) driven by ${brain ? brain.label : 'the phase gait'}`,
   running: () => running,
   say: (text, kind = 'error') => messages.show(text, kind),
 });
-const modules = new ModuleList(document, { loadOnto: loadModule, openOwn: openModule, message: showMessage });
+const speedNote = new SpeedNote(el('speed-note'), new Measurer(defaults.viewNoiseSeed));
+const modules = new ModuleList(document, { loadOnto: loadModule, openOwn: openModule, message: showMessage }, defaults.attentionGenes);
+const race = new Race(document, { module: () => modules.selected(), terrain: () => viewer.terrain.value.trim(), message: showMessage });
 const runs = new RunPanel(document, defaults, {
   body: () => ({ rows: drawing.rows(), ok: check.ok }),
   controller: () => controllerSelect.value,
   source: () => (brain && brain.controller === 'attention' ? brain.source : null),
   best: onBest,
   finished: onFinished,
-  running: (on) => { running = on; editor.setLocked(on); updateButtons(); },
+  generation: (top, generation, settings, kind, mode) => race.keepGeneration(top, generation, settings, kind, mode),
+  running: (on) => {
+    running = on;
+    editor.setLocked(on);
+    updateButtons();
+    if (!on) speedNote.show(brain, viewer.terrain.value.trim(), episodeSeconds()); // measured once the workers are free
+  },
   message: showMessage,
   note: (text) => messages.show(text, 'note'),
 });
@@ -111,8 +124,13 @@ function updateCheck() {
 function updateParams() {
   const kind = controllerSelect.value;
   const genes = check.params.find(([k]) => k === kind)?.[1] ?? 0;
-  const detail = kind === 'attention' && check.voxels > 0 ? ` (${defaults.attentionGenes} attention + ${genes - defaults.attentionGenes} downstream)` : '';
-  el('param-count').textContent = check.voxels > 0 ? `${genes} parameters${detail}` : '';
+  const n = check.voxels;
+  const detail = kind === 'attention' && n > 0
+    ? `: ${defaults.attentionGenes} for the attention block, shared by every voxel, and ${genes - defaults.attentionGenes} for the outputs, `
+      + `one set of weights per voxel position (each voxel adds ${SENSOR_NAMES.length}, one per sensor)` : '';
+  el('param-count').textContent = n > 0 ? `${genes} genes${detail}` : '';
+  el('param-count').title = 'Genes: the numbers evolution changes. Every voxel runs the same small network; '
+    + 'what differs between voxels is only the output weights of its position.';
   el('param-count').dataset.value = String(genes);
 }
 
@@ -156,12 +174,21 @@ function bodyChanged() {
 function showBrain() {
   if (brain) { controllerSelect.value = brain.controller; shelved = null; }
   updateParams();
-  viewer.show(drawing.rows(), brain ? { controller: brain.controller, genome: brain.genome } : null, keepPlace);
+  const seconds = episodeSeconds();
+  viewer.show(drawing.rows(), brain ? { controller: brain.controller, genome: brain.genome } : null, keepPlace, seconds);
+  speedNote.show(brain, viewer.terrain.value.trim(), seconds, !running);
+  runs.showWalking(brain?.run === true);
   keepPlace = false;
   el('driver').textContent = brain
     ? `Driven by: ${brain.label} (${brain.controller}, ${brain.genome.length} genes).`
-    : 'Driven by: the phase gait (no controller yet: evolve one, or load a module).';
+    : 'Driven by: the phase gait (no brain yet: evolve one, or load a module).';
   updateButtons();
+}
+
+/** The viewer's episode (s): the one its brain was trained on, else the run settings'. */
+function episodeSeconds() {
+  const typed = Number(runs.inputs.seconds.value);
+  return brain?.seconds ?? (typed > 0 && typed <= 3600 ? typed : defaults.quick.seconds);
 }
 
 /**
@@ -219,7 +246,7 @@ function editWalking(pick) {
   bodyChanged();
 }
 
-/** Puts a module on the drawn robot (SPEC 10's transplant for attention). @param {import('./modules.js').Module} module */
+/** Puts a module on the drawn robot (the core's transplant for attention). @param {import('./modules.js').Module} module */
 function loadModule(module) {
   if (!check.ok) { showMessage('draw a valid robot first'); return; }
   try {
@@ -289,17 +316,18 @@ function onFinished(run) {
   const what = { evolve: 'evolved', finetune: 'fine-tuned', scratch: 'from scratch' }[run.mode];
   const label = `${what} ${best.controller}, seed ${run.settings.seed}: ${best.fitness.toFixed(2)} m/s`;
   try {
-    modules.add({ key: `run:${run.mode}:${run.settings.seed}:${best.controller}:${run.settings.shape}`, label: `${label} (this page)`, text: run.runFile });
+    const module = { key: `run:${run.mode}:${run.settings.seed}:${best.controller}:${run.settings.shape}`, label: `${label} (this page)`, text: run.runFile };
+    modules.add(module, run.mode !== 'scratch'); // the comparison is listed; the fine-tuned module stays chosen
   } catch (error) {
     showMessage(`the finished run could not be listed: ${messageOf(error)}`);
   }
-  const peak = Number.isFinite(run.peak) ? `; best single evaluation on the way ${run.peak.toFixed(2)} m/s` : '';
-  const result = `the final population's best, ${best.fitness.toFixed(2)} m/s in its latest evaluation${peak}`;
+  const peak = Number.isFinite(run.peak) ? `; its best single evaluation on the way: ${run.peak.toFixed(2)} m/s` : '';
+  const result = `the best of its last generation, ${best.fitness.toFixed(2)} m/s in training${peak}`;
   if (run.mode === 'scratch' || !run.follow || run.settings.shape !== drawing.rows()) {
     messages.show(`The run ${run.stopped ? 'stopped' : 'finished'}: its result (${result}) is in the module list.`, 'note');
     return;
   }
-  brain = runResult(best, run.runFile, run.settings.shape, origin(), `the ${what} run's result: ${result}`);
+  brain = runResult(best, run.runFile, run.settings, origin(), `the ${what} run's result: ${result}`);
   showBrain();
   keeper.schedule();
 }
@@ -375,8 +403,14 @@ function wire() {
   });
   controllerSelect.addEventListener('change', controllerChosen);
   el('share').addEventListener('click', () => keeper.share());
+  el('glossary-open').addEventListener('click', () => { el('glossary').open = true; el('glossary').scrollIntoView({ behavior: 'smooth' }); });
   for (const input of Object.values(runs.inputs)) input.addEventListener('change', () => keeper.schedule());
-  viewer.terrain.addEventListener('change', () => keeper.schedule());
+  viewer.terrain.addEventListener('change', () => { speedNote.show(brain, viewer.terrain.value.trim(), episodeSeconds()); keeper.schedule(); });
+  runs.inputs.seconds.addEventListener('change', () => {
+    if (brain?.seconds) return; // a trained brain walks the episodes it was trained on
+    viewer.setSeconds(episodeSeconds());
+    speedNote.show(brain, viewer.terrain.value.trim(), episodeSeconds());
+  });
 }
 
 async function start() {
@@ -384,12 +418,12 @@ async function start() {
   viewer.terrain.value = defaults.viewTerrain;
   viewer.gait.frequency.value = String(defaults.gait.frequency);
   viewer.gait.phase.value = String(defaults.gait.phase);
-  if (!(await keeper.restore())) { // a link first, else what was kept, else the first preset
+  await keeper.restore(() => { // a link first, else what was kept, else the first preset
     drawing.setRows(defaults.presets[0].rows);
     drawing.undoStack = [];
     editor.draw();
     bodyChanged();
-  }
+  });
   modules.listPretrained().then(() => { if (brain?.module) modules.choose(brain.module); });
   window.addEventListener('hashchange', () => keeper.openLink());
   window.addEventListener('beforeunload', (event) => {

@@ -2,8 +2,8 @@
 /**
  * The module list: the controllers in pretrained/ (from its manifest: source shape,
  * controller, budget, validation median), run files imported from disk, and the runs
- * finished in this page. A module can be put on the drawn robot ("Load onto my robot":
- * SPEC 10's transplant for attention) or opened with its own body. Files are checked by
+ * finished in this page. A module can be put on the drawn robot ("Load onto my robot": the
+ * core's transplant for attention) or opened with its own body. Files are checked by
  * the core when read; a bad file shows a message and changes nothing.
  */
 import { describeRun } from './core.js';
@@ -22,12 +22,14 @@ const PRETRAINED_DIR = 'pretrained/';
  */
 
 export class ModuleList {
-  /** @param {Document} doc @param {ModuleHooks} hooks */
-  constructor(doc, hooks) {
+  /** @param {Document} doc @param {ModuleHooks} hooks @param {number} attentionGenes the core's attention block size */
+  constructor(doc, hooks, attentionGenes) {
+    this.attentionGenes = attentionGenes;
     const el = (/** @type {string} */ id) => /** @type {any} */ (doc.getElementById(id));
     this.select = /** @type {HTMLSelectElement} */ (el('module'));
     this.fileInput = /** @type {HTMLInputElement} */ (el('run-import'));
     this.details = /** @type {HTMLElement} */ (el('module-details'));
+    this.loadButton = /** @type {HTMLButtonElement} */ (el('module-load'));
     this.hooks = hooks;
     /** Run files already read, by key. @type {Map<string, Module>} */
     this.held = new Map();
@@ -46,7 +48,7 @@ export class ModuleList {
         const median = Number(m.validation?.unseen?.median);
         const speed = Number.isFinite(median) ? `, ${median.toFixed(2)} m/s on unseen terrain` : '';
         const from = m.finetuned_from ? ` fine-tuned from ${m.finetuned_from}` : '';
-        const label = `${m.controller} on ${m.shape}${from} (${m.evaluations} evals${speed})`;
+        const label = `${m.controller} on ${m.shape}${from} (${m.evaluations} evaluations${speed})`;
         this.select.append(new Option(label, PRETRAINED_DIR + m.file));
       }
       this.describe();
@@ -56,14 +58,15 @@ export class ModuleList {
   }
 
   /**
-   * Adds (or replaces) a module held in the page and selects it.
-   * @param {Module} module
+   * Adds (or replaces) a module held in the page and, unless `choose` is false, selects it.
+   * @param {Module} module @param {boolean} [choose]
    */
-  add(module) {
+  add(module, choose = true) {
     describeRun(module.text); // throws a readable Error when malformed
     this.held.set(module.key, module);
     const existing = [...this.select.options].find((o) => o.value === module.key);
     if (existing) existing.text = module.label; else this.select.append(new Option(module.label, module.key));
+    if (!choose) return;
     this.select.value = module.key;
     this.describe();
   }
@@ -103,9 +106,14 @@ export class ModuleList {
       const module = await this.selected();
       if (!module) { this.details.textContent = ''; return; }
       const info = describeRun(module.text);
-      this.details.textContent = `${info.controller}, ${info.genes} genes, evolved on ${info.shape}`
-        + `${info.finetunedFrom ? ` from ${info.finetunedFrom}` : ''} (seed ${info.seed}, budget ${info.budget}, `
-        + `training best ${Number.isFinite(info.fitness) ? info.fitness.toFixed(2) : '–'} m/s)`;
+      this.details.textContent = `${info.controller}, ${info.genes} genes, ${info.finetunedFrom ? 'fine-tuned' : 'evolved'} on ${info.shape}`
+        + `${info.finetunedFrom ? ` from a module evolved on ${info.finetunedFrom}` : ''} (seed ${info.seed}, budget ${info.budget} evaluations${info.evaluations > info.budget
+          ? ` (it took ${info.evaluations}: a run finishes its last generation)` : ''}, `
+        + `${info.seconds}-s episodes on ${info.terrain}; in training ${Number.isFinite(info.fitness) ? info.fitness.toFixed(2) : '–'} m/s)`;
+      this.loadButton.title = info.controller === 'attention'
+        ? `Put it on your robot: it keeps its ${this.attentionGenes} attention genes (the block every voxel shares); `
+          + 'the rest of its brain (each voxel position\'s output weights) is drawn new for your body'
+        : `An ${info.controller} module's genes belong to the voxels of its own body: it goes only onto that same body`;
     } catch (error) {
       this.details.textContent = '';
     }

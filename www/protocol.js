@@ -14,6 +14,9 @@
  *   {type: 'pause'}          stop stepping; the last frame stays on screen
  *   {type: 'reset'}          rebuild the current episode from its parameters (t = 0)
  *   {type: 'speed', speed}   simulated seconds per wall second; 0 means as fast as possible
+ *   {type: 'freeze', frozen} freeze every voxel's attention matrix where it is now (true) or
+ *                            release it (false); a brain without attention answers 'error'
+ *   {type: 'length', seconds} the episode's length from now on (its speed is measured over it)
  *
  * Worker -> page
  *   {type: 'ready'}                      the wasm module is instantiated
@@ -48,6 +51,8 @@ export const ToWorker = Object.freeze({
   PAUSE: 'pause',
   RESET: 'reset',
   SPEED: 'speed',
+  FREEZE: 'freeze',
+  LENGTH: 'length',
 });
 
 /** Message types sent by the worker to the page. */
@@ -85,6 +90,11 @@ export const DT = 1 / 60;
  * @property {number} frequency  gait frequency f (Hz), used without a brain
  * @property {number} phase      gait phase phi (rad per column), used without a brain
  * @property {Brain | null} brain  the controller that drives the body, or null for the gait
+ * @property {number} [until]    seconds: the episode ends there, at the step `vsr evaluate`
+ *                               ends an episode of that length (a race); none: it walks on
+ * @property {number} [seconds]  the episode's length (s): its speed is measured over it, as a
+ *                               fitness evaluation measures it; the robot walks on after it
+ *                               (unless `until` stops it)
  * @property {Shift | false} [keepPlace] an edit of the walking robot: build it in the posture
  *                               and motion of the current one (its cells the current ones
  *                               shifted by the Shift), not at rest on the start line
@@ -112,6 +122,11 @@ export const DT = 1 / 60;
  * @property {number} voxels       number of voxels n
  * @property {number} centreX      mean x of voxel centres (m)
  * @property {number} centreY      mean y of voxel centres (m)
+ * @property {number} velocity     mean forward speed so far (m/s), as fitness defines it
+ * @property {boolean} frozen      the attention matrices are frozen ('freeze')
+ * @property {number} distance     the centre's x since the start (m), as the fitness measures it
+ * @property {number} episodeSpeed `velocity` at the end of the episode (`seconds`), the
+ *                                 number `vsr evaluate` prints; NaN until the episode ended
  * @property {number} simPerWall   simulated s per wall s while running (achieved)
  * @property {number} simPerCompute simulated s per s spent inside `step` (engine speed)
  * @property {Float32Array} corners 8n floats, see the layout above
@@ -154,11 +169,13 @@ export function frameIsConsistent(frame) {
  *
  * Coordinator -> page
  *   {type: 'started', planned, workers}  the run began; planned = evaluations it will take
- *   {type: 'generation', record, evaluations, planned, evalsPerSecond, best}
+ *   {type: 'generation', record, evaluations, planned, evalsPerSecond, best, top}
  *                                        a generation was told: record is the run file's
  *                                        generation record (null for non-finite values);
  *                                        best = {fitness, genome (Float32Array)} when its best
- *                                        beat every earlier generation's, else null
+ *                                        beat every earlier generation's, else null; top =
+ *                                        {fitness, genome} of this generation's best evaluation
+ *                                        (kept by the page to race generations)
  *   {type: 'state', paused}              pause state changed
  *   {type: 'run-file', runFile}          the run so far (JSON text, format 'vsr-run'), or null
  *   {type: 'recovered', message}         an evaluation worker died; a new one re-runs its job

@@ -1,8 +1,12 @@
 // @ts-check
 /**
- * The live figures under the canvas: simulated time, the robot's x and velocity, and
- * the speed of the simulation. Each <output> also carries its raw number in
- * `data-value` so that tests read numbers, not formatted text.
+ * The live figures under the canvas: simulated time, the robot's distance from its start,
+ * its speed, its pace over the last second, and the speed of the simulation. Distance and
+ * speed are the core's, the fitness's own measure (protocol.js, Frame): the speed is the
+ * mean forward velocity since the start and, once the episode's length is reached, over the
+ * whole episode, the number training and `vsr evaluate` compute. After an edit of the walking
+ * robot the distance runs on from where it was; the speed counts from the edit. Each <output>
+ * also carries its raw number in `data-value` so that tests read numbers, not formatted text.
  */
 
 /** Window over which the velocity is measured (simulated s). */
@@ -17,6 +21,7 @@ export class Readout {
       time: field(doc, 'sim-time'),
       x: field(doc, 'robot-x'),
       velocity: field(doc, 'robot-v'),
+      speed: field(doc, 'robot-speed'),
       simPerWall: field(doc, 'sim-rate'),
       simPerCompute: field(doc, 'engine-rate'),
     };
@@ -26,11 +31,25 @@ export class Readout {
     this.shownAt = -Infinity;
     /** The latest frame received. @type {import('./protocol.js').Frame | null} */
     this.latest = null;
+    /** The episode walking: its length and terrain, and whether it went on from an edit. */
+    this.episode = { seconds: NaN, terrain: '', edited: false };
+    /**
+     * Where the walk started: the centre's x after the first step of its first episode (m),
+     * NaN until then. Edits of the walking robot keep it, so the distance runs on across them.
+     */
+    this.origin = NaN;
   }
 
-  /** Forgets the velocity history (a new episode starts). */
-  reset() {
+  /**
+   * A new episode starts: forgets the pace history; an edit of the walking robot (`carried`)
+   * keeps where the walk started.
+   * @param {import('./protocol.js').EpisodeParams} params @param {boolean} carried
+   */
+  reset(params, carried) {
+    if (!carried) this.origin = NaN;
+    this.episode = { seconds: params.seconds, terrain: params.terrain, edited: carried };
     this.history = [];
+    this.latest = null;
     this.shownAt = -Infinity;
   }
 
@@ -57,11 +76,22 @@ export class Readout {
   write(frame) {
     const first = this.history[0];
     const velocity = frame.time > first.t ? (frame.centreX - first.x) / (frame.time - first.t) : NaN;
+    const { seconds, terrain, edited } = this.episode;
+    // A fresh walk's distance is the core's; an edited robot's runs on from the walk's start.
+    if (!this.episode.edited) this.origin = frame.centreX - frame.distance;
+    const x = this.episode.edited && Number.isFinite(this.origin) ? frame.centreX - this.origin : frame.distance;
     show(this.fields.time, frame.time, `${frame.time.toFixed(2)} s`);
-    show(this.fields.x, frame.centreX, `${frame.centreX.toFixed(2)} m`);
+    show(this.fields.x, x, `${x.toFixed(2)} m`);
+    const ended = Number.isFinite(frame.episodeSpeed);
+    const speed = ended ? frame.episodeSpeed : frame.velocity;
+    const over = edited ? `since the edit, ${seconds}-s episode` : `${seconds}-s episode`;
+    show(this.fields.speed, speed, ended
+      ? `${speed.toFixed(2)} m/s over its ${over} on ${terrain}; walking on past it`
+      : `${speed.toFixed(2)} m/s so far (${over} on ${terrain})`);
+    this.fields.speed.dataset.ended = String(ended);
     show(this.fields.velocity, velocity, `${velocity.toFixed(2)} m/s`);
-    show(this.fields.simPerWall, frame.simPerWall, `${frame.simPerWall.toFixed(2)} sim s / wall s`);
-    show(this.fields.simPerCompute, frame.simPerCompute, `${Math.round(frame.simPerCompute)}x real time`);
+    show(this.fields.simPerWall, frame.simPerWall, `${frame.simPerWall.toFixed(2)}x`);
+    show(this.fields.simPerCompute, frame.simPerCompute, `${Math.round(frame.simPerCompute)}x`);
   }
 }
 

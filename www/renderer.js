@@ -46,6 +46,10 @@ export class Renderer {
     this.view = null;
     this.snapCamera = true;
     this.lastDraw = 0;
+    /** Where the ruler counts from (m): the walk's start, so it reads as the distance figure. */
+    this.origin = 0;
+    /** A voxel outlined on the robot (the one the attention reader shows), or -1. */
+    this.highlight = -1;
   }
 
   /**
@@ -157,7 +161,8 @@ export class Renderer {
     ctx.strokeStyle = 'rgba(40, 70, 100, 0.15)';
     ctx.lineWidth = 1 / view.s;
     ctx.beginPath();
-    for (let x = Math.ceil(view.left / 5) * 5; x <= view.right; x += 5) {
+    const o = this.origin;
+    for (let x = o + Math.ceil((view.left - o) / 5) * 5; x <= view.right; x += 5) {
       ctx.moveTo(x, view.bottom);
       ctx.lineTo(x, view.top);
     }
@@ -203,15 +208,25 @@ export class Renderer {
     ctx.beginPath();
     for (let b = 0; b < voxels * BODY_FLOATS; b += 3) squarePath(ctx, bodies[b], bodies[b + 1], bodies[b + 2]);
     ctx.stroke();
+    if (this.highlight >= 0 && this.highlight < voxels) {
+      const c = this.highlight * CORNER_FLOATS;
+      ctx.beginPath();
+      ctx.moveTo(corners[c], corners[c + 1]);
+      for (let k = 2; k < CORNER_FLOATS; k += 2) ctx.lineTo(corners[c + k], corners[c + k + 1]);
+      ctx.closePath();
+      ctx.strokeStyle = '#2f6fb0';
+      ctx.lineWidth = 5 / s;
+      ctx.stroke();
+    }
   }
 
-  /** Screen-space labels: grid metres along the top and a metre scale bar. */
+  /** Screen-space labels: metres from the start along the top and a metre scale bar. */
   drawLabels(/** @type {View} */ view, /** @type {number} */ dpr) {
     const { ctx, canvas } = this;
     ctx.fillStyle = 'rgba(30, 50, 70, 0.8)';
     ctx.font = `${12 * dpr}px system-ui, sans-serif`;
-    for (let x = Math.ceil(view.left / 10) * 10; x <= view.right; x += 10) {
-      ctx.fillText(`${x} m`, (x - view.left) * view.s + 3 * dpr, 14 * dpr);
+    for (let d = Math.ceil((view.left - this.origin) / 10) * 10; this.origin + d <= view.right; d += 10) {
+      ctx.fillText(d === 0 ? 'start' : `${d} m`, (this.origin + d - view.left) * view.s + 3 * dpr, 14 * dpr);
     }
     const metres = niceLength(120 * dpr / view.s);
     const px = metres * view.s;

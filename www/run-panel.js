@@ -11,7 +11,9 @@
  */
 import { checkTrainingTerrain, freshSeed } from './core.js';
 import { spawn } from './kit.js';
+import { download, runFileName } from './export.js';
 import { FitnessChart } from './fitness-chart.js';
+import { planWords } from './run-plan.js';
 import { FromCoordinator, MAX_EVALUATORS, ToCoordinator } from './protocol.js';
 
 const STYLE = {
@@ -29,6 +31,9 @@ const STYLE = {
  * @property {(genome: Float32Array, fitness: number, settings: import('./protocol.js').EvolveSettings, kind: string) => void} best
  *   a new best seen during a run (with "walk the best so far")
  * @property {(run: FinishedRun) => void} finished     a run ended with a run file
+ * @property {(top: {fitness: number, genome: Float32Array}, generation: number,
+ *   settings: import('./protocol.js').EvolveSettings, kind: string, mode: string) => void} [generation]
+ *   each generation's best evaluation (kept to race generations)
  * @property {(running: boolean) => void} running        a run started or ended
  * @property {(text: string) => void} message            shows an error ('' clears it)
  * @property {(text: string) => void} note               shows a note
@@ -71,7 +76,10 @@ export class RunPanel {
     this.out = {
       generation: el('run-generation'), evaluations: el('run-evaluations'), best: el('run-best'),
       genBest: el('run-gen-best'), median: el('run-median'), rate: el('run-rate'), status: el('run-status'),
+      plan: el('run-plan'), caption: el('run-caption'), progress: el('run-progress'),
     };
+    /** Generations after generation 0 that the running run takes. */
+    this.generations = NaN;
     this.chart = new FitnessChart(el('run-chart'));
     /** @type {Worker | null} */
     this.coordinator = null;
@@ -109,6 +117,22 @@ export class RunPanel {
     b.stop.addEventListener('click', () => { this.compareNext = false; this.send(ToCoordinator.STOP); });
     b.export.addEventListener('click', () => this.exportRunFile());
     for (const input of Object.values(this.inputs)) input.addEventListener('change', () => this.hooks.message(''));
+    for (const input of [this.inputs.population, this.inputs.budget]) input.addEventListener('input', () => this.describePlan());
+  }
+
+  /** Says what the population and budget in the form make. */
+  describePlan() {
+    this.out.plan.textContent = planWords(Number(this.inputs.population.value), Number(this.inputs.budget.value))?.text ?? '';
+  }
+
+  /**
+   * Whether the robot walking now has a brain from a run of this panel: if not, its figures
+   * are said to be the last run's, not the walking robot's. @param {boolean} fromRun
+   */
+  showWalking(fromRun) {
+    this.out.progress.dataset.other = String(!fromRun && this.started);
+    this.out.caption.textContent = !fromRun && this.started
+      ? 'These figures are the last run\'s: the robot walking now has another brain.' : '';
   }
 
   /** @param {string} type */
@@ -119,6 +143,7 @@ export class RunPanel {
     this.inputs.population.value = String(p.population);
     this.inputs.seconds.value = String(p.seconds);
     this.inputs.budget.value = String(p.budget);
+    this.describePlan();
   }
 
   /** The settings in the form as the page stores and shares them. */
@@ -130,6 +155,7 @@ export class RunPanel {
   /** @param {Partial<Record<string, string>>} values settings to put in the form */
   setValues(values) {
     for (const [k, value] of Object.entries(values)) if (this.inputs[k] && value !== undefined) this.inputs[k].value = String(value);
+    this.describePlan();
   }
 
   /**
@@ -168,6 +194,8 @@ export class RunPanel {
     this.mode = mode;
     this.compareNext = mode === 'finetune' && this.compare.checked;
     this.bestSoFar = -Infinity;
+    this.showWalking(true);
+    this.generations = planWords(read.settings.population, read.settings.budget)?.generations ?? NaN;
     const settings = read.settings;
     const coordinator = spawn('coordinator.js', (msg) => this.onMessage(msg, settings),
       (text) => this.end(`the evolution stopped: ${text}`, 'failed'));
@@ -198,7 +226,7 @@ export class RunPanel {
         this.update();
         break;
       case FromCoordinator.RUN_FILE:
-        if (this.exportWanted && msg.runFile) download(msg.runFile, RunPanel.fileName(msg.runFile));
+        if (this.exportWanted && msg.runFile) download(msg.runFile, runFileName(msg.runFile));
         this.exportWanted = false;
         break;
       case FromCoordinator.RECOVERED: this.hooks.message(msg.message); break;
@@ -226,7 +254,7 @@ export class RunPanel {
   onGeneration(msg, settings) {
     const { record } = msg;
     if (record.best !== null && record.best > this.bestSoFar) this.bestSoFar = record.best;
-    show(this.out.generation, record.generation, String(record.generation));
+    show(this.out.generation, record.generation, `${record.generation} of ${this.generations}`);
     show(this.out.evaluations, msg.evaluations, `${msg.evaluations} / ${msg.planned}`);
     show(this.out.best, this.bestSoFar, `${fixed(this.bestSoFar)} m/s`);
     show(this.out.genBest, record.best ?? NaN, `${fixed(record.best)} m/s`);
@@ -239,6 +267,7 @@ export class RunPanel {
       this.chart.add(this.mode, STYLE[this.mode], msg.evaluations, this.bestSoFar);
     }
     this.chart.draw();
+    this.hooks.generation?.(msg.top, record.generation, settings, this.kind(settings), this.mode);
     if (msg.best && this.follow.checked && this.mode !== 'scratch') {
       this.hooks.best(msg.best.genome, msg.best.fitness, settings, this.kind(settings));
     }
@@ -269,13 +298,7 @@ export class RunPanel {
       this.send(ToCoordinator.RUN_FILE);
       return;
     }
-    if (this.runFile) download(this.runFile, RunPanel.fileName(this.runFile));
-  }
-
-  /** A download name that says what the run file holds. @param {string} runFile */
-  static fileName(runFile) {
-    const { config } = JSON.parse(runFile);
-    return `${config.source ? `finetuned-${config.controller}` : `evolved-${config.controller}`}-seed${config.seed}.json`;
+    if (this.runFile) download(this.runFile, runFileName(this.runFile));
   }
 
   /** The run ended: an error message (or ''), and the status to show. @param {string} error @param {string} status */
@@ -304,7 +327,7 @@ export class RunPanel {
     b.finetune.disabled = running || !body.ok || this.hooks.source() === null;
     b.finetune.title = b.finetune.disabled && !running && this.hooks.source() === null
       ? 'First load an attention module onto your robot (Transplant a module, Load onto my robot)'
-      : 'Evolve only the downstream genes of the module on your robot; its attention stays frozen';
+      : 'Train the module on your robot: evolve the rest of its brain for this body while its attention stays as it is';
     for (const key of ['quick', 'paper', 'dice']) b[key].disabled = running;
     for (const input of Object.values(this.inputs)) input.disabled = running;
     b.pause.disabled = !running;
@@ -324,14 +347,4 @@ function fixed(v, digits = 2) {
 function show(el, value, text) {
   el.dataset.value = String(value);
   el.textContent = text;
-}
-
-/** @param {string} text @param {string} name */
-function download(text, name) {
-  const url = URL.createObjectURL(new Blob([text], { type: 'application/json' }));
-  const link = document.createElement('a');
-  link.href = url;
-  link.download = name;
-  link.click();
-  setTimeout(() => URL.revokeObjectURL(url), 1000);
 }

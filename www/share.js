@@ -121,7 +121,7 @@ export function base64ToGenome(text) {
   } catch {
     throw new Error('its genome is not valid base64');
   }
-  if (binary.length % 4 !== 0) throw new Error(`its genome has ${binary.length} bytes, not a whole number of float32 values`);
+  if (binary.length % 4 !== 0) throw new Error(`its genome is damaged (${binary.length} bytes, not a whole number of genes)`);
   const view = new DataView(new ArrayBuffer(binary.length));
   for (let i = 0; i < binary.length; i++) view.setUint8(i, binary.charCodeAt(i));
   return Float32Array.from({ length: binary.length / 4 }, (_, i) => view.getFloat32(i * 4, true));

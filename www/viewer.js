@@ -1,11 +1,15 @@
 // @ts-check
 /**
  * The viewer: the simulation worker that walks the robot, the scene canvas, the live
- * figures and the attention maps, with Play / Hold / Restart, speed and terrain. It shows
+ * figures and the attention maps (one of them read enlarged), with Play / Hold / Restart,
+ * Freeze the attention, speed and terrain. It shows
  * whatever body and brain the page gives it; the worker answers 'loaded' or 'error' and a
  * refused load leaves the previous robot walking. Messages: protocol.js.
  */
 import { AttentionPanel } from './attention.js';
+import { AttentionReader } from './attention-reader.js';
+import { attentionTerms } from './core.js';
+import { FreezeControl } from './freeze.js';
 import { spawn } from './kit.js';
 import { FromWorker, ToWorker, frameIsConsistent } from './protocol.js';
 import { Readout } from './readout.js';
@@ -30,6 +34,8 @@ export class Viewer {
     this.renderer = new Renderer(this.canvas);
     this.readout = new Readout(doc);
     this.attention = new AttentionPanel(el('attention-panel'), el('attention'));
+    this.reader = new AttentionReader(doc, (voxel) => { this.renderer.highlight = voxel; this.attention.selected = voxel; this.attention.dirty = true; });
+    this.freeze = new FreezeControl(doc, (frozen) => this.worker.postMessage({ type: ToWorker.FREEZE, frozen }));
     this.status = el('status');
     this.buttons = { play: el('sim-play'), hold: el('sim-hold'), restart: el('sim-restart') };
     this.speed = /** @type {HTMLSelectElement} */ (el('speed'));
@@ -63,6 +69,10 @@ export class Viewer {
       const pick = this.renderer.pick(e.clientX, e.clientY);
       if (pick) this.hooks.clicked(pick);
     });
+    this.attention.canvas.addEventListener('click', (e) => {
+      const voxel = this.attention.pick(e.clientX, e.clientY);
+      if (voxel >= 0) this.reader.open(voxel, this.attention.cells[2 * voxel], this.attention.cells[2 * voxel + 1]);
+    });
   }
 
   /** @returns {Worker} a new simulation worker, told to load the wanted episode */
@@ -77,15 +87,23 @@ export class Viewer {
   /**
    * Walks `rows` driven by `brain` (or the phase gait when null), from the start line or, with
    * `keepPlace` (an edit's shift), in the posture and motion of the robot walking now.
+   * Its speed is measured over an episode of `seconds`.
    * @param {string} rows @param {import('./protocol.js').Brain | null} brain
-   * @param {import('./protocol.js').Shift | false} [keepPlace]
+   * @param {import('./protocol.js').Shift | false} [keepPlace] @param {number} [seconds]
    */
-  show(rows, brain, keepPlace = false) {
+  show(rows, brain, keepPlace = false, seconds = this.wanted?.seconds ?? NaN) {
     this.wanted = {
-      shape: rows, terrain: this.terrain.value.trim(), brain, keepPlace,
+      shape: rows, terrain: this.terrain.value.trim(), brain, keepPlace, seconds,
       frequency: this.gait.frequency.valueAsNumber, phase: this.gait.phase.valueAsNumber,
     };
     this.worker.postMessage({ type: ToWorker.LOAD, params: this.wanted });
+  }
+
+  /** The episode's length from now on, without restarting the walk. @param {number} seconds */
+  setSeconds(seconds) {
+    if (this.wanted) this.wanted = { ...this.wanted, seconds };
+    this.readout.episode.seconds = seconds;
+    this.worker.postMessage({ type: ToWorker.LENGTH, seconds });
   }
 
   /** @param {any} msg a message from the worker */
@@ -96,13 +114,19 @@ export class Viewer {
         this.current = msg.params;
         this.renderer.setTerrain(msg.terrainXs, msg.terrainYs, !msg.carried);
         this.attention.setLayout(msg.cells);
-        this.readout.reset();
+        this.reader.setEpisode(msg.voxels, msg.params.brain?.controller === 'attention' ? attentionTerms(msg.params.brain.genome) : null);
+        this.freeze.loaded(msg.controller);
+        this.readout.reset(msg.params, msg.carried);
         this.status.textContent = `${msg.voxels} voxels, ${msg.controller}`;
         for (const input of Object.values(this.gait)) input.disabled = msg.params.brain !== null;
         this.hooks.loaded(msg.params, msg.voxels, msg.controller);
         break;
       case FromWorker.FRAME:
-        if (frameIsConsistent(msg)) { this.renderer.setFrame(msg); this.readout.update(msg); this.attention.setFrame(msg); }
+        if (frameIsConsistent(msg)) {
+          this.renderer.setFrame(msg); this.readout.update(msg); this.attention.setFrame(msg);
+          if (Number.isFinite(this.readout.origin)) this.renderer.origin = this.readout.origin; // the ruler reads as the distance
+          this.reader.setFrame(msg.attention); this.freeze.setFrame(msg);
+        }
         break;
       case FromWorker.STATE:
         this.running = msg.running;

@@ -53,7 +53,7 @@ self.onmessage = async (event) => {
   }
 };
 
-/** @param {{type: string, params?: import('./protocol.js').EpisodeParams, speed?: number}} msg */
+/** @param {{type: string, params?: import('./protocol.js').EpisodeParams, speed?: number, frozen?: boolean, seconds?: number}} msg */
 function handle(msg) {
   switch (msg.type) {
     case ToWorker.LOAD: if (msg.params) load(msg.params); break;
@@ -61,6 +61,10 @@ function handle(msg) {
     case ToWorker.START: setRunning(true); break;
     case ToWorker.PAUSE: setRunning(false); break;
     case ToWorker.SPEED: speed = Math.max(0, Number(msg.speed) || 0); restartClocks(); break;
+    case ToWorker.FREEZE: if (episode) { episode.freezeAttention(Boolean(msg.frozen)); postFrame(); } break;
+    case ToWorker.LENGTH:
+      if (episode && params) { episode.measureOver(Number(msg.seconds)); params = { ...params, seconds: Number(msg.seconds) }; }
+      break;
     default: reportError(`unknown message type ${JSON.stringify(msg.type)}`, false);
   }
 }
@@ -80,6 +84,7 @@ function load(next) {
     : Episode.gaitAt(next.shape, next.terrain, next.frequency, next.phase, left);
   const carried = Boolean(edit && episode && edit.from === episode.shape && next.terrain === params?.terrain);
   if (carried && edit && episode) fresh.carryPose(episode, edit.dx, edit.dy);
+  if (next.seconds > 0) fresh.measureOver(next.seconds); // the speed over the episode, taken when it ends
   episode?.free();
   episode = fresh;
   params = next;
@@ -129,6 +134,7 @@ function tick() {
     return;
   }
   const now = performance.now();
+  if (params?.until && episode.stepsLeft(params.until) === 0) { postFrame(); setRunning(false); return; }
   if (now - lastFramePosted >= FRAME_INTERVAL_MS) postFrame();
   if (speed > 0 && targetSteps(episode, now) === 0) {
     setTimeout(schedule, FRAME_INTERVAL_MS / 2);
@@ -141,6 +147,7 @@ function tick() {
 function stepSlice(ep) {
   const begin = performance.now();
   let budget = speed > 0 ? targetSteps(ep, begin) : Infinity;
+  if (params?.until) budget = Math.min(budget, ep.stepsLeft(params.until));
   while (budget > 0 && performance.now() - begin < SLICE_BUDGET_MS) {
     const n = Math.min(STEPS_PER_CALL, budget);
     ep.step(n);
@@ -168,7 +175,7 @@ function postFrame() {
   updateRates(episode, now);
   const frame = episode.frame();
   self.postMessage({
-    type: FromWorker.FRAME, ...frame,
+    type: FromWorker.FRAME, ...frame, velocity: episode.velocity, frozen: episode.attentionFrozen,
     simPerWall: running ? rate.simPerWall : NaN, simPerCompute: rate.simPerCompute,
   }, [frame.corners.buffer, frame.areas.buffer, frame.bodies.buffer, frame.attention.buffer]);
 }

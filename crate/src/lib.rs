@@ -2,16 +2,22 @@
 //! controller, evolved by a genetic algorithm.
 //!
 //! Layers point one way: `simulation` <- `controllers` <- `genetics` <- `experiment`
-//! <- (`wasm` for the page, `bin/vsr` for the command line). The core has no clock,
-//! no I/O and no ambient randomness: every random draw comes from an explicit seed.
+//! <- (`wasm` for the page, `bin/vsr` for the command line). These are the engine, what the
+//! wasm build compiles. `study` (campaigns, reports, statistics) sits on `experiment` for the
+//! command line only and is not compiled for wasm. The core has no clock, no I/O and no
+//! ambient randomness: every random draw comes from an explicit seed.
 
 pub mod controllers;
 pub mod error;
 pub mod experiment;
 pub mod genetics;
+mod quantiles;
 pub mod random;
 pub mod simulation;
-pub mod statistics;
+
+/// The study tooling (campaigns, reports, statistics): native only, never in the wasm build.
+#[cfg(not(target_arch = "wasm32"))]
+pub mod study;
 
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;

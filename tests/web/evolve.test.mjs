@@ -136,7 +136,7 @@ test('Evolve runs live on the chosen workers, the best walks, Export and Import 
   const best = await figure(page, 'run-best');
   assert.ok(best >= await figure(page, 'run-gen-best'), 'best so far is at least the last generation\'s best');
   await waitForText(page, 'status', /^10 voxels, attention$/);
-  await waitForText(page, 'driver', /the evolved run's result: the final population's best/);
+  await waitForText(page, 'driver', /the evolved run's result: the best of its last generation/);
   await page.locator('#attention-panel').waitFor({ state: 'visible', timeout: 10_000 });
 
   const [download] = await Promise.all([page.waitForEvent('download'), byTestId(page, 'export').click()]);

@@ -46,7 +46,7 @@ test('a pretrained attention module loads onto a drawn body and walks at once', 
   await byTestId(page, 'pretrained').selectOption(ATTENTION);
   await byTestId(page, 'load-pretrained').click();
   await waitForText(page, 'status', /^13 voxels, attention$/);
-  await waitForText(page, 'driver', /attention block of a module evolved on 1111-1111-1001; downstream genes re-drawn for this body/);
+  await waitForText(page, 'driver', /a module transplanted from 1111-1111-1001: its attention as evolved there, the rest of its brain new for this body/);
   assert.equal(await byTestId(page, 'finetune').isEnabled(), true);
   const t0 = await figure(page, 'sim-time');
   await waitForFigure(page, 'sim-time', `v >= ${t0 + 3}`, 30_000);

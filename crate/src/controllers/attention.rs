@@ -42,6 +42,21 @@ fn attention_matrix(block: &[f32], s: &[f32], a: &mut [f32]) {
     }
 }
 
+/// The four numbers that fix every entry of an attention matrix: with readings s_r (row,
+/// query) and s_c (column, key), A[r][c] = tanh(a s_r s_c + b s_r + c s_c + d), where
+/// a = w_q.w_k, b = w_q.b_k, c = b_q.w_k, d = b_q.b_k, each over sqrt 8 (expanding the dot
+/// product of Q's row r and K's row c). `block` is the 32-gene attention block; returns
+/// [a, b, c, d] (rounding aside, the matrix itself is computed as the dot product).
+pub fn attention_terms(block: &[f32]) -> Option<[f32; 4]> {
+    if block.len() < ATTENTION_PARAMS {
+        return None;
+    }
+    let part = |k: usize| &block[k * ATTENTION_DIM..(k + 1) * ATTENTION_DIM];
+    let dot = |x: &[f32], y: &[f32]| x.iter().zip(y).map(|(p, q)| p * q).sum::<f32>() / SQRT_DIM;
+    let (w_q, b_q, w_k, b_k) = (part(0), part(1), part(2), part(3));
+    Some([dot(w_q, w_k), dot(w_q, b_k), dot(b_q, w_k), dot(b_q, b_k)])
+}
+
 /// The downstream output of voxel `i` of `n`, from the downstream block `down` (4n + 1),
 /// the matrix `a` in use and the readings `s`.
 fn downstream(down: &[f32], n: usize, i: usize, a: &[f32], s: &[f32]) -> f32 {
@@ -159,6 +174,23 @@ mod tests {
         c.control(&[0.3, 0.4, 0.5, 1.0, 0.1, 0.2, 0.3, 0.0], &mut out);
         assert!(c.attention().unwrap().iter().all(|&a| a == 0.0));
         assert_eq!(out, [tanhf(0.5), tanhf(0.5)]);
+    }
+
+    #[test]
+    fn attention_terms_give_every_matrix_entry() {
+        let mut rng = ChaCha8Rng::seed_from_u64(21);
+        let block = random_vec(&mut rng, ATTENTION_PARAMS, 3.0);
+        let s = random_vec(&mut rng, 4, 1.0);
+        let mut a = [0.0; 16];
+        attention_matrix(&block, &s, &mut a);
+        let [ta, tb, tc, td] = attention_terms(&block).unwrap();
+        for r in 0..4 {
+            for c in 0..4 {
+                let expanded = tanhf(ta * s[r] * s[c] + tb * s[r] + tc * s[c] + td);
+                assert!((expanded - a[r * 4 + c]).abs() < 1e-4, "{r} {c}");
+            }
+        }
+        assert!(attention_terms(&block[..31]).is_none());
     }
 
     #[test]

@@ -91,6 +91,19 @@ impl Controller for FrozenAttention {
     fn attention(&self) -> Option<&[f32]> {
         self.inner.attention()
     }
+
+    fn set_attention_frozen(&mut self, frozen: bool) -> Result<()> {
+        if frozen {
+            self.freeze();
+        } else {
+            self.unfreeze();
+        }
+        Ok(())
+    }
+
+    fn attention_frozen(&self) -> bool {
+        self.is_frozen()
+    }
 }
 
 #[cfg(test)]

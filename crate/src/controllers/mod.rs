@@ -21,7 +21,7 @@ mod params;
 mod slow;
 mod topology;
 
-pub use attention::{Attention, ATTENTION_DIM, ATTENTION_PARAMS};
+pub use attention::{attention_terms, Attention, ATTENTION_DIM, ATTENTION_PARAMS};
 pub use frozen::FrozenAttention;
 pub use kind::{build, ControllerKind};
 pub use layout::{remap_genome, GenomeLayout};
@@ -68,6 +68,18 @@ pub trait Controller: Send {
     /// Each voxel's current attention matrix (16 floats per voxel), or `None` for
     /// controllers without attention.
     fn attention(&self) -> Option<&[f32]>;
+    /// Freezes (`true`) every voxel's attention matrix where it is now, or releases it
+    /// (`false`), as the ablation does (SPEC 7). Only [`FrozenAttention`] can; any other
+    /// controller answers an error saying it has no attention to freeze.
+    fn set_attention_frozen(&mut self, _frozen: bool) -> Result<()> {
+        Err(Error::Input(
+            "this brain has no attention to freeze (only an attention controller has)".into(),
+        ))
+    }
+    /// True while the attention matrices are frozen.
+    fn attention_frozen(&self) -> bool {
+        false
+    }
 }
 
 /// Checks that `sensors` and `out` have the lengths a controller for `n_voxels` expects.

@@ -4,13 +4,15 @@
 //! (0 ..= `last_second`) it takes a snapshot of every voxel's attention matrix (for s = 0, the
 //! matrix of the first control call, after step 1). For each snapshot, a fresh episode of
 //! `seconds` on the same terrain runs a [`FrozenAttention`] controller holding those matrices.
-//! Both kinds of episode use the sensor noise of validation terrain 0. Slow attention is
+//! Both kinds of episode use the sensor noise of the validation episode on the same terrain
+//! (`noise_seed_for`: validation terrain K for `hilly-1-10-K`): the validation episode on that
+//! terrain is the unfrozen reference of the ablation. Slow attention is
 //! ablated the same way: its A' is frozen and its alpha, eta genes are dropped.
 
 use super::episode::{steps_for, Episode, Policy};
 use super::evaluate::controller_for;
 use super::run::Best;
-use super::validation::validation_noise_seed;
+use super::validation::noise_seed_for;
 use crate::controllers::{
     split_slow_genome, Attention, Controller, ControllerKind, FrozenAttention,
 };
@@ -39,9 +41,9 @@ pub fn ablate(
     seconds: f64,
 ) -> Result<Vec<AblationPoint>> {
     let attention_genes = attention_genome(best)?;
+    let noise = Some(noise_seed_for(terrain));
     let terrain = Terrain::parse(terrain)?;
-    let snapshots = record_matrices(best, &terrain, last_second)?;
-    let noise = Some(validation_noise_seed(0));
+    let snapshots = record_matrices(best, &terrain, last_second, noise)?;
     let mut points = Vec::with_capacity(snapshots.len());
     for (s, matrices) in (0u32..).zip(snapshots) {
         let mut plain = Attention::new(best.shape.voxel_count());
@@ -76,9 +78,13 @@ fn attention_genome(best: &Best) -> Result<&[f32]> {
 
 /// Every voxel's matrices (16 floats per voxel) at each second 0 ..= `last_second` of one
 /// episode of `best` on `terrain`.
-fn record_matrices(best: &Best, terrain: &Terrain, last_second: u32) -> Result<Vec<Vec<f32>>> {
+fn record_matrices(
+    best: &Best,
+    terrain: &Terrain,
+    last_second: u32,
+    noise: Option<u64>,
+) -> Result<Vec<Vec<f32>>> {
     let controller = controller_for(best.controller, &best.shape, &best.genome)?;
-    let noise = Some(validation_noise_seed(0));
     let policy = Policy::Brain(controller);
     let mut episode = Episode::with_policy(&best.shape, terrain.clone(), policy, noise);
     let mut taken = 0u64;

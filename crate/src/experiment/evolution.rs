@@ -181,12 +181,12 @@ impl Evolution {
         self.ga.evaluations()
     }
 
-    /// Evaluations the whole run will take: the initial population plus two populations per
-    /// generation while the budget is not reached (30100 for the paper's 30000).
+    /// Evaluations the whole run will take ([`planned_evaluations`]).
     pub fn planned_evaluations(&self) -> u64 {
-        let pop = self.config.ga.population as u64;
-        let rest = self.config.ga.budget_evals.saturating_sub(pop);
-        pop + 2 * pop * rest.div_ceil(2 * pop)
+        planned_evaluations(
+            self.config.ga.population as u64,
+            self.config.ga.budget_evals,
+        )
     }
 
     /// The configuration.
@@ -221,4 +221,20 @@ impl Evolution {
             timing,
         ))
     }
+}
+
+/// Generations after generation 0 that a run of `population` and `budget` evaluations takes:
+/// each evaluates two populations (the parents again, on fresh terrains, and as many
+/// children), and the last one is completed even when it passes the budget.
+pub fn planned_generations(population: u64, budget: u64) -> u64 {
+    budget
+        .saturating_sub(population)
+        .div_ceil(2 * population.max(1))
+}
+
+/// Evaluations a run of `population` and `budget` evaluations takes: generation 0 (the
+/// first population) plus two populations per later generation (30100 for the paper's
+/// 30000 with 100, 2020 for 2000 with 20).
+pub fn planned_evaluations(population: u64, budget: u64) -> u64 {
+    population + 2 * population * planned_generations(population, budget)
 }

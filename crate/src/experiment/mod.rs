@@ -2,7 +2,6 @@
 //! seeds, evolutionary runs and their run files, fine-tuning, validation and the ablation.
 
 pub mod ablation;
-pub mod campaign;
 pub mod checkpoint;
 pub mod config;
 pub mod ensemble;
@@ -10,6 +9,7 @@ pub mod episode;
 pub mod evaluate;
 pub mod evolution;
 pub mod finetune;
+pub mod freeze;
 pub mod gait;
 pub mod run;
 pub mod seeds;
@@ -23,6 +23,7 @@ pub use ensemble::{check_start_offset, gait_ensemble, Ensemble, ENSEMBLE_SHIFT};
 pub use episode::{steps_for, topology, Episode, GaitEpisode, Outcome, Policy};
 pub use evolution::{Evolution, Job};
 pub use finetune::source_of;
+pub use freeze::freezable_policy;
 pub use gait::PhaseGait;
 pub use run::{Best, GenerationRecord, RunFile, Timing};
 pub use trajectory::Frame;

@@ -13,8 +13,8 @@ use super::evaluate::evaluate;
 use super::run::Best;
 use super::seeds::{evaluation_seed, Purpose, TERRAIN_SEEDS};
 use crate::error::{Error, Result};
+use crate::quantiles::median;
 use crate::simulation::Terrain;
-use crate::statistics::median;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 use std::str::FromStr;
@@ -42,6 +42,11 @@ impl ValidationSet {
             ValidationSet::Paper => "paper",
             ValidationSet::Unseen => "unseen",
         }
+    }
+
+    /// The set's first terrain, where the frozen-attention ablation of a run on this set runs.
+    pub fn first_terrain(self) -> String {
+        validation_terrain(self.terrain_seed(0))
     }
 
     /// The terrain seed of the set's terrain `i` (0..10).
@@ -75,7 +80,7 @@ impl FromStr for ValidationSet {
     }
 }
 
-/// The name of the paper set's validation terrain `i`.
+/// The name of validation terrain `i` (`hilly-1-10-i`; the unseen set's are i >= 10000).
 pub fn validation_terrain(i: u32) -> String {
     format!("hilly-1-10-{i}")
 }
@@ -83,6 +88,15 @@ pub fn validation_terrain(i: u32) -> String {
 /// The sensor-noise seed of validation terrain `hilly-1-10-K` (also used by the ablation).
 pub fn validation_noise_seed(k: u32) -> u64 {
     evaluation_seed(0, 0, k, Purpose::Validation)
+}
+
+/// The sensor-noise seed of an episode on `terrain` outside evolution: that of validation
+/// terrain K for `hilly-1-10-K`, that of terrain 0 for any other terrain.
+pub fn noise_seed_for(terrain: &str) -> u64 {
+    let k = terrain
+        .strip_prefix("hilly-1-10-")
+        .and_then(|k| k.parse().ok());
+    validation_noise_seed(k.unwrap_or(0))
 }
 
 /// One validation episode.

@@ -1,6 +1,6 @@
 //! Summary statistics of a surviving population's fitness, reported after each `tell`.
 
-use crate::statistics::quantile;
+use crate::quantiles::quantile;
 use serde::{Deserialize, Serialize};
 
 /// Fitness summary of the population that survived one generation. Quartiles use linear

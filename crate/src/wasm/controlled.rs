@@ -8,8 +8,8 @@ use wasm_bindgen::prelude::{wasm_bindgen, JsError, JsValue};
 use super::episode::GAIT_NAME;
 use super::Episode;
 use crate::controllers::ControllerKind;
-use crate::experiment::evaluate::{controller_for, replay};
-use crate::experiment::{check_start_offset, PhaseGait};
+use crate::experiment::evaluate::replay;
+use crate::experiment::{check_start_offset, freezable_policy, PhaseGait};
 use crate::experiment::{Episode as CoreEpisode, Policy, RunFile};
 use crate::simulation::constants::PLACEMENT_LEFT_X;
 use crate::simulation::{Shape, Terrain};
@@ -43,18 +43,16 @@ impl Episode {
             s => Some(Shape::parse(s)?),
         };
         let inner = replay(&run.best, wanted.as_ref(), terrain, Some(NOISE_SEED))?;
-        Ok(Episode {
-            inner,
-            shape: run.best.shape,
-            controller: run.best.controller.to_string(),
-        })
+        let controller = run.best.controller.to_string();
+        Ok(Episode::wrap(inner, run.best.shape, controller))
     }
 
     /// Builds the episode of a genome on a drawn body: a `controller` (`attention`, `mlp`,
     /// `mlp-comm`) with parameters `genome` drives the body `rows` on `terrain`, with sensor
     /// noise seed 0, its left edge placed at `left` metres (NaN: the start line; a place
-    /// off the ground between the walls also falls back to the start line). A genome that
-    /// does not fit the body throws an `Error` saying so.
+    /// off the ground between the walls also falls back to the start line). An attention
+    /// brain can be frozen (`freezeAttention`). A genome that does not fit the body throws
+    /// an `Error` saying so.
     #[wasm_bindgen(js_name = fromGenome)]
     pub fn from_genome(
         rows: &str,
@@ -65,16 +63,12 @@ impl Episode {
     ) -> Result<Episode, JsError> {
         let kind: ControllerKind = controller.parse()?;
         let shape = Shape::parse(rows)?;
-        let brain = Policy::Brain(controller_for(kind, &shape, genome)?);
+        let brain = freezable_policy(kind, &shape, genome)?;
         let terrain = Terrain::parse(terrain)?;
         let offset = placement_offset(&shape, &terrain, left);
         let inner =
             CoreEpisode::with_start_offset(&shape, terrain, brain, Some(NOISE_SEED), offset);
-        Ok(Episode {
-            inner,
-            shape,
-            controller: kind.to_string(),
-        })
+        Ok(Episode::wrap(inner, shape, kind.to_string()))
     }
 
     /// The phase-gait episode of `new`, its left edge placed at `left` metres (NaN: the start
@@ -92,11 +86,7 @@ impl Episode {
         let offset = placement_offset(&shape, &terrain, left);
         let gait = Policy::Gait(PhaseGait::new(frequency, phase)?);
         let inner = CoreEpisode::with_start_offset(&shape, terrain, gait, None, offset);
-        Ok(Episode {
-            inner,
-            shape,
-            controller: GAIT_NAME.to_string(),
-        })
+        Ok(Episode::wrap(inner, shape, GAIT_NAME.to_string()))
     }
 
     /// The left edge of the robot now: the smallest x of its voxels' outer corners (m).
@@ -120,9 +110,10 @@ impl Episode {
 #[wasm_bindgen]
 impl Episode {
     /// The whole current frame as one object, so the worker crosses the boundary once per
-    /// frame: `{time, voxels, centreX, centreY, corners, areas, bodies, attention}`, the
-    /// buffers as `Float32Array`s with the layouts of the getters above (attention empty
-    /// when the controller has none).
+    /// frame: `{time, voxels, centreX, centreY, distance, episodeSpeed, corners, areas,
+    /// bodies, attention}`, the buffers as `Float32Array`s with the layouts of the
+    /// getters above (attention empty when the controller has none); distance and
+    /// episodeSpeed as the getters of `measure.rs` say.
     pub fn frame(&self) -> Result<Object, JsError> {
         let frame = Object::new();
         let set = |key: &str, value: JsValue| {
@@ -134,6 +125,8 @@ impl Episode {
         set("voxels", (self.voxel_count() as f64).into())?;
         set("centreX", self.centre_x().into())?;
         set("centreY", self.centre_y().into())?;
+        set("distance", self.distance().into())?;
+        set("episodeSpeed", self.episode_speed().into())?;
         set("corners", Float32Array::from(&self.corners()[..]).into())?;
         set("areas", Float32Array::from(&self.area_ratios()[..]).into())?;
         set(

@@ -1,11 +1,12 @@
 //! [`Episode`]: a JS handle on one `experiment::Episode`, stepped by the page's worker in
 //! slices: its phase-gait constructor, the step and the frame getters. The run-file
-//! constructor and the attention getter are in `controlled.rs`; both kinds of episode
-//! are this one handle, so the worker steps and draws them with the same code.
+//! constructor and the attention getter are in `controlled.rs`, the episode's measured
+//! speed in `measure.rs`; both kinds of episode are this one handle, so the worker steps
+//! and draws them with the same code.
 
 use wasm_bindgen::prelude::{wasm_bindgen, JsError};
 
-use crate::experiment::{Episode as CoreEpisode, PhaseGait};
+use crate::experiment::{Episode as CoreEpisode, Outcome, PhaseGait};
 use crate::simulation::carry::voxel_map;
 use crate::simulation::{Shape, Terrain};
 
@@ -19,6 +20,23 @@ pub struct Episode {
     pub(super) inner: CoreEpisode,
     pub(super) shape: Shape,
     pub(super) controller: String,
+    /// The step at which the episode's length ends (see `measure.rs`), if one was set.
+    pub(super) end: Option<u64>,
+    /// The outcome (the fitness's measure) taken at that step, once it was reached.
+    pub(super) at_end: Option<Outcome>,
+}
+
+impl Episode {
+    /// The handle on a freshly built core episode, with no episode length set.
+    pub(super) fn wrap(inner: CoreEpisode, shape: Shape, controller: String) -> Episode {
+        Episode {
+            inner,
+            shape,
+            controller,
+            end: None,
+            at_end: None,
+        }
+    }
 }
 
 #[wasm_bindgen]
@@ -32,12 +50,7 @@ impl Episode {
         let shape = Shape::parse(shape)?;
         let gait = PhaseGait::new(frequency, phase)?;
         let inner = CoreEpisode::from_parts(&shape, Terrain::parse(terrain)?, gait);
-        let controller = GAIT_NAME.to_string();
-        Ok(Episode {
-            inner,
-            shape,
-            controller,
-        })
+        Ok(Episode::wrap(inner, shape, GAIT_NAME.to_string()))
     }
 
     /// What drives the voxels: `phase gait` or a controller family (`attention`, `mlp`, ...).
@@ -73,9 +86,20 @@ impl Episode {
         self.inner.carry_pose_from(&old.inner, &map);
     }
 
-    /// Advances the simulation by `steps` steps of 1/60 s. Throws if it became unstable.
+    /// Advances the simulation by `steps` steps of 1/60 s, stopping on the way at the end of
+    /// the episode's length (if set) to take its outcome. Throws if it became unstable.
     pub fn step(&mut self, steps: usize) -> Result<(), JsError> {
-        Ok(self.inner.step(steps)?)
+        let done = self.inner.world().steps();
+        let to_end = self.end.filter(|&e| e > done).map(|e| e - done);
+        match to_end.and_then(|n| usize::try_from(n).ok()) {
+            Some(n) if n <= steps => {
+                self.inner.step(n)?;
+                self.at_end = Some(self.inner.outcome());
+                self.inner.step(steps - n)?;
+            }
+            _ => self.inner.step(steps)?,
+        }
+        Ok(())
     }
 
     /// Simulated time in seconds.

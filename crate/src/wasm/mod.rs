@@ -2,8 +2,9 @@
 //!
 //! Thin handles over core types, one file per wrapped type, mirroring the core's tree:
 //! [`Episode`] wraps `experiment::Episode` (built from a phase gait in `episode.rs`, from
-//! a run file in `controlled.rs`); [`Evolution`] wraps `experiment::Evolution` for the page's
-//! GA coordinator and [`evaluate_job`] is one evaluation of its workers (`evolution.rs`).
+//! a run file in `controlled.rs`, measured as the fitness measures in `measure.rs`); [`Evolution`] wraps `experiment::Evolution` for the page's
+//! GA coordinator and [`evaluate_job`] is one evaluation of its workers (`evolution.rs`);
+//! freezing a walking robot's attention and its speed so far are in `live.rs`.
 //! Bulk per-frame data leaves linear memory as flat `Float32Array`s whose layouts are documented on the getters that fill them
 //! and, for the page, once in `www/protocol.js`. Core errors become JS `Error`s (never
 //! traps) so a worker can report bad input and keep its previous state.
@@ -13,15 +14,22 @@ mod bench;
 mod controlled;
 mod episode;
 mod evolution;
+mod live;
+mod measure;
+mod module;
 mod page;
+mod plan;
 
 pub use bench::bench_episode;
 pub use episode::Episode;
 pub use evolution::{evaluate_job, Evolution};
+pub use live::attention_terms;
+pub use module::{describe_run, run_genome};
 pub use page::{
-    check_genome, check_shape, check_terrain, check_training_terrain, defaults, describe_run,
-    fresh_seed, remap, run_genome, transplant,
+    check_genome, check_shape, check_terrain, check_training_terrain, defaults, fresh_seed, remap,
+    transplant,
 };
+pub use plan::run_plan;
 
 use wasm_bindgen::prelude::wasm_bindgen;
 

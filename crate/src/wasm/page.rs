@@ -87,11 +87,13 @@ struct Defaults {
     gait: Gait,
     max_seed: f64,
     attention_genes: usize,
+    view_noise_seed: String,
 }
 
 /// The page's defaults, from the core: `{grid: {width, height}, presets: [{name, rows}],
 /// controllers, quick and paper: {population, seconds, budget}, trainingTerrain, viewTerrain,
-/// gait: {frequency, phase}, maxSeed, attentionGenes}`.
+/// gait: {frequency, phase}, maxSeed, attentionGenes, viewNoiseSeed (the viewer's sensor
+/// noise seed, a decimal string, for measuring a brain as the viewer walks it)}`.
 #[wasm_bindgen]
 pub fn defaults() -> Result<JsValue, JsError> {
     let ga = GaConfig::default();
@@ -119,6 +121,7 @@ pub fn defaults() -> Result<JsValue, JsError> {
         gait: GAIT,
         max_seed: crate::experiment::config::MAX_SEED as f64,
         attention_genes: ATTENTION_PARAMS,
+        view_noise_seed: super::controlled::NOISE_SEED.to_string(),
     };
     to_js(&defaults)
 }
@@ -162,41 +165,6 @@ pub fn check_shape(rows: &str) -> Result<JsValue, JsError> {
     to_js(&check)
 }
 
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct ModuleInfo {
-    shape: String,
-    controller: String,
-    seed: u64,
-    budget: u64,
-    fitness: f64,
-    genes: usize,
-    finetuned_from: Option<String>,
-}
-
-/// Reads a run file (its JSON) and describes its best individual: `{shape (rows),
-/// controller, seed, budget, fitness, genes, finetunedFrom (source rows or null)}`. A
-/// malformed file throws an `Error` that says what is wrong.
-#[wasm_bindgen(js_name = describeRun)]
-pub fn describe_run(run_file: &str) -> Result<JsValue, JsError> {
-    let run = RunFile::from_json(run_file)?;
-    to_js(&ModuleInfo {
-        shape: run.best.shape.to_rows(),
-        controller: run.best.controller.to_string(),
-        seed: run.config.seed,
-        budget: run.config.ga.budget_evals,
-        fitness: run.best.fitness,
-        genes: run.best.genome.len(),
-        finetuned_from: run.config.source.as_ref().map(|s| s.shape.to_rows()),
-    })
-}
-
-/// The best genome of `run_file` itself (its own body).
-#[wasm_bindgen(js_name = runGenome)]
-pub fn run_genome(run_file: &str) -> Result<Vec<f32>, JsError> {
-    Ok(RunFile::from_json(run_file)?.best.genome)
-}
-
 /// SPEC 10's transplant, as `vsr finetune --seed SEED` starts it: the best individual of the
 /// attention run `run_file` put on the body `rows`; its 32 attention genes kept, the
 /// downstream genes re-drawn for the new body (unchanged when the body is its own). An MLP
@@ -213,8 +181,9 @@ pub fn transplant(run_file: &str, rows: &str, seed: f64) -> Result<Vec<f32>, JsE
             return Ok(source.genome);
         }
         return Err(JsError::new(&format!(
-            "only attention modules transfer to another body (SPEC 10): this {} controller's \
-             genes belong to the voxels of its own body ({})",
+            "only attention modules transfer to another body: this {} controller's genes \
+             belong to the voxels of its own body ({}); open it with its own body, or evolve \
+             one for yours",
             source.controller,
             source.shape.to_rows()
         )));

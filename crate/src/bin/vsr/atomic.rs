@@ -9,20 +9,21 @@ use std::path::{Path, PathBuf};
 
 use vsr::{Error, Result};
 
-/// The directory `path` will be written in; an error if it does not exist, so that a long
-/// run fails before it starts rather than at the end.
+/// The directory `path` will be written in, created with its parents if missing (every job
+/// makes the folders it writes in, so a campaign runs from a bare folder); an error if it
+/// cannot be made, so that a long run fails before it starts rather than at the end.
 pub fn check_writable(path: &Path) -> Result<PathBuf> {
     let dir = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
         _ => PathBuf::from("."),
     };
-    if !dir.is_dir() {
-        return Err(Error::Io(format!(
-            "cannot write {}: directory {} does not exist",
+    fs::create_dir_all(&dir).map_err(|e| {
+        Error::Io(format!(
+            "cannot write {}: cannot create directory {}: {e}",
             path.display(),
             dir.display()
-        )));
-    }
+        ))
+    })?;
     if path.is_dir() {
         return Err(Error::Io(format!(
             "cannot write {}: it is a directory",

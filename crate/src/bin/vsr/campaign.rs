@@ -6,9 +6,11 @@ use std::fs;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use vsr::experiment::campaign::{merge, plan, Campaign, Job, Results};
 use vsr::experiment::{RunFile, ValidationSet};
+use vsr::study::campaign::{merge, plan, Campaign, Job, Results};
 use vsr::{Error, Result};
+
+pub mod command;
 
 /// Where a campaign's outputs go.
 #[derive(clap::Args, Debug, Clone)]
@@ -92,7 +94,7 @@ pub struct Only {
 impl Only {
     /// The plan of `campaign`, cut down to this part; an error when nothing matches.
     pub fn plan(&self, campaign: &Campaign, out: &Path) -> Result<Vec<Job>> {
-        let jobs = vsr::experiment::campaign::select(plan(campaign, out), &self.only);
+        let jobs = vsr::study::campaign::select(plan(campaign, out), &self.only);
         if jobs.is_empty() {
             return Err(Error::Input(format!(
                 "no job's output name contains {} (see `vsr campaign plan` for the names)",
@@ -132,7 +134,7 @@ fn print_plan(args: PlanArgs) -> Result<()> {
     for job in args.only.plan(&campaign, &out)? {
         let stage_ok = args.stage.map_or(true, |s| s == job.stage);
         if stage_ok && !(args.pending && job.out.exists()) {
-            let line = job.command_line(&args.program, args.threads);
+            let line = command::line(&job, &args.program, args.threads);
             match writeln!(stdout, "{line}") {
                 Ok(()) => {}
                 // The reader stopped (`| head`): nothing more to say.
@@ -190,7 +192,12 @@ pub fn load_results(campaign: Campaign, out: &Path) -> Result<Results> {
                 validation.insert(set, v);
             }
         }
-        let ablation = read_json(&spec.ablation_path(out), json)?;
+        let mut ablation = std::collections::BTreeMap::new();
+        for set in ValidationSet::ALL {
+            if let Some(a) = read_json(&spec.ablation_path(out, set), json)? {
+                ablation.insert(set, a);
+            }
+        }
         if let Some(d) = results.of_mut(&spec) {
             (d.run, d.validation, d.ablation) = (run, validation, ablation);
         }

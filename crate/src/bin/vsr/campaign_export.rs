@@ -8,8 +8,8 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 use vsr::controllers::ControllerKind;
-use vsr::experiment::campaign::export::{choose, entry, file_name, Entry, Manifest};
-use vsr::experiment::campaign::plan;
+use vsr::study::campaign::export::{choose, entry, file_name, Entry, Manifest};
+use vsr::study::campaign::plan;
 use vsr::{Error, Result};
 
 use crate::campaign::{load_results, Target};
@@ -65,7 +65,8 @@ pub fn run(args: Args) -> Result<()> {
         };
         let run_path = choice.spec.run_path(&out);
         let job = jobs.iter().find(|j| j.out == run_path);
-        let entry = job.and_then(|job| entry(&choice, job, &campaign_file, &version));
+        let command = job.map(|job| crate::campaign::command::line(job, "vsr", 1));
+        let entry = command.and_then(|c| entry(&choice, &c, &campaign_file, &version));
         let Some(entry) = entry else {
             eprintln!(
                 "vsr: {name}: its run is not in the campaign's plan; the previous export kept"

@@ -16,7 +16,7 @@ use std::process::{Command, Stdio};
 use std::sync::{Condvar, Mutex};
 
 use indicatif::{ProgressBar, ProgressStyle};
-use vsr::experiment::campaign::Job;
+use vsr::study::campaign::Job;
 use vsr::{Error, Result};
 
 use crate::campaign::{create_folders, Only, Target};
@@ -166,10 +166,12 @@ impl Runner<'_> {
         let waiting = |i: &usize| states[*i] == State::Waiting && ready(*i);
         let mut candidates = (0..self.jobs.len()).filter(waiting);
         let first = candidates.next()?;
-        if !self.jobs[first].threaded {
+        if !self.jobs[first].threaded() {
             return Some(first);
         }
-        candidates.find(|&i| !self.jobs[i].threaded).or(Some(first))
+        candidates
+            .find(|&i| !self.jobs[i].threaded())
+            .or(Some(first))
     }
 
     /// Runs one job as a child process, its output and errors into its log file.
@@ -187,7 +189,7 @@ impl Runner<'_> {
             return false;
         };
         let status = Command::new(self.program)
-            .args(job.args_with_threads(self.threads))
+            .args(crate::campaign::command::args(job, self.threads))
             .stdin(Stdio::null())
             .stdout(log)
             .stderr(err)

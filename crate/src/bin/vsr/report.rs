@@ -1,11 +1,11 @@
 //! `vsr report FILE`: the campaign's statistics (`report.md`: medians, Mann-Whitney U tests,
 //! effect sizes, what is missing) and its figures (SVG) in one folder, from whatever runs
-//! exist so far (see `vsr::experiment::campaign::report`).
+//! exist so far (see `vsr::study::report`).
 
 use std::fs;
 use std::path::PathBuf;
 
-use vsr::experiment::campaign::report;
+use vsr::study::report::report;
 use vsr::{Error, Result};
 
 use crate::campaign::{load_results, Target};

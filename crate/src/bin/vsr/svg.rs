@@ -4,17 +4,47 @@
 
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
-use vsr::experiment::campaign::figures::{Band, BoxData, Figure, Plot};
+use vsr::study::report::figures::{Band, BoxData, Figure, Plot};
 use vsr::{Error, Result};
 
 const SIZE: (u32, u32) = (800, 500);
+
+/// The Okabe-Ito palette (Okabe and Ito 2008), safe for the common colour-vision
+/// deficiencies; black first, yellow last (faint on white).
+const OKABE_ITO: [RGBColor; 8] = [
+    RGBColor(0, 114, 178),   // blue
+    RGBColor(213, 94, 0),    // vermillion
+    RGBColor(0, 158, 115),   // bluish green
+    RGBColor(204, 121, 167), // reddish purple
+    RGBColor(86, 180, 233),  // sky blue
+    RGBColor(230, 159, 0),   // orange
+    RGBColor(0, 0, 0),       // black
+    RGBColor(240, 228, 66),  // yellow
+];
+
+/// The colour of series `i`.
+fn pick(i: usize) -> RGBAColor {
+    OKABE_ITO[i % OKABE_ITO.len()].to_rgba()
+}
+
+/// Height of one line of notes under the title (px).
+const NOTE_LINE: u32 = 16;
 
 /// The SVG text of `figure`.
 pub fn draw(figure: &Figure) -> Result<String> {
     let mut svg = String::new();
     {
-        let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
+        let height = SIZE.1 + NOTE_LINE * figure.notes.len() as u32;
+        let root = SVGBackend::with_string(&mut svg, (SIZE.0, height)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_error)?;
+        // The notes go under the chart.
+        let (root, notes) = root.split_vertically(SIZE.1);
+        for (i, line) in figure.notes.iter().enumerate() {
+            let at = (70, (i as u32 * NOTE_LINE) as i32);
+            notes
+                .draw_text(line, &("sans-serif", 13).into_font().color(&BLACK), at)
+                .map_err(plot_error)?;
+        }
         match &figure.plot {
             Plot::Lines(bands) => lines(&root, figure, bands)?,
             Plot::Boxes(boxes) => boxes_plot(&root, figure, boxes)?,
@@ -69,6 +99,9 @@ fn lines(root: &Area, figure: &Figure, bands: &[Band]) -> Result<()> {
             .iter()
             .flat_map(|b| b.q1.iter().chain(&b.q3).chain(&b.median).copied()),
     );
+    // Headroom above the data for the legend, so that it hides no curve.
+    let rows = bands.len() as f64;
+    let ys = ys.start..ys.end + (ys.end - ys.start) * (0.08 + 0.06 * rows);
     let mut chart = chart(root, figure, xs, ys)?;
     chart
         .configure_mesh()
@@ -79,7 +112,7 @@ fn lines(root: &Area, figure: &Figure, bands: &[Band]) -> Result<()> {
         .draw()
         .map_err(plot_error)?;
     for (i, b) in bands.iter().enumerate() {
-        let color = Palette99::pick(i).to_rgba();
+        let color = pick(i);
         let mut area: Vec<(f64, f64)> = b.x.iter().copied().zip(b.q3.iter().copied()).collect();
         area.extend(b.x.iter().copied().zip(b.q1.iter().copied()).rev());
         chart
@@ -98,7 +131,7 @@ fn lines(root: &Area, figure: &Figure, bands: &[Band]) -> Result<()> {
         .configure_series_labels()
         .background_style(WHITE.mix(0.8))
         .border_style(BLACK)
-        .position(SeriesLabelPosition::LowerRight)
+        .position(SeriesLabelPosition::UpperRight)
         .draw()
         .map_err(plot_error)
 }
@@ -126,7 +159,7 @@ fn boxes_plot(root: &Area, figure: &Figure, boxes: &[BoxData]) -> Result<()> {
         .draw()
         .map_err(plot_error)?;
     for (i, b) in boxes.iter().enumerate() {
-        let color = Palette99::pick(i).to_rgba();
+        let color = pick(i);
         let (x, w, s) = (i as f64, 0.2, &b.summary);
         let style = color.stroke_width(2);
         let shapes: Vec<PathElement<(f64, f64)>> = vec![

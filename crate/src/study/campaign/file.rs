@@ -1,0 +1,234 @@
+//! The campaign file (TOML): a study as a grid of runs, written once and rerun by one
+//! command. Parsing and checking only; the job list is `plan`'s.
+//!
+//! ```toml
+//! output = "../study"            # where every output goes, relative to the campaign file
+//! seeds = [1, 2, 3, 4, 5]        # default seeds of every group
+//! seconds = 30.0                 # episode length (evolution, validation, ablation)
+//! population = 100
+//! terrain = "hilly-1-10"         # training terrain family
+//! validate = ["paper", "unseen"] # validation sets assessed for every run
+//!
+//! [ablation]                     # settings of the frozen-attention ablation
+//! last_second = 30
+//! sets = ["paper", "unseen"]     # ablate on each set's first terrain (default: paper only)
+//!
+//! [[evolve]]                     # a grid: shapes x controllers x evals x seeds
+//! name = "rq1"
+//! shapes = ["biped-4x3", "comb-7x2"]
+//! controllers = ["attention", "mlp", "mlp-comm"]
+//! evals = [30000]
+//! ablate = true                  # ablate each best with attention (attention, slow-attention)
+//!
+//! [[finetune]]                   # SPEC 10: source runs, fine-tuned, against from scratch
+//! name = "rq2"
+//! pairs = [["biped-4x3", "biped-6x4"], ["biped-6x4", "biped-4x3"]]   # [source, target]
+//! controller = "attention"
+//! source_evals = 20000
+//! evals = 10000
+//! scratch_evals = 30000          # from-scratch runs on each target shape, for comparison
+//! ```
+
+use crate::controllers::ControllerKind;
+use crate::error::{Error, Result};
+use crate::experiment::config::{PAPER_SECONDS, PAPER_TERRAIN};
+use crate::experiment::{TrainingTerrain, ValidationSet};
+use crate::genetics::GaConfig;
+use crate::simulation::Shape;
+use serde::Deserialize;
+
+/// A whole campaign file; see the module doc.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Campaign {
+    /// Output folder, relative to the campaign file.
+    pub output: String,
+    /// Default seeds of every group.
+    pub seeds: Vec<u64>,
+    /// Episode seconds of every evaluation, validation and ablation episode.
+    #[serde(default = "paper_seconds")]
+    pub seconds: f64,
+    /// GA population.
+    #[serde(default = "paper_population")]
+    pub population: usize,
+    /// Training terrain family or name.
+    #[serde(default = "paper_terrain")]
+    pub terrain: String,
+    /// Validation sets assessed for every run.
+    #[serde(default = "both_sets")]
+    pub validate: Vec<ValidationSet>,
+    /// Ablation settings.
+    #[serde(default)]
+    pub ablation: AblationSettings,
+    /// Grids of runs from scratch.
+    #[serde(default)]
+    pub evolve: Vec<EvolveGroup>,
+    /// Fine-tuning studies.
+    #[serde(default)]
+    pub finetune: Vec<FinetuneGroup>,
+}
+
+/// The frozen-attention ablation's settings.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AblationSettings {
+    /// Freeze at every whole second 0 ..= `last_second`.
+    pub last_second: u32,
+    /// The sets on whose first terrain each ablated run is ablated (`paper`: hilly-1-10-0,
+    /// the paper's; `unseen`: hilly-1-10-10000, outside the training pool).
+    #[serde(default = "paper_only")]
+    pub sets: Vec<ValidationSet>,
+}
+
+fn paper_only() -> Vec<ValidationSet> {
+    vec![ValidationSet::Paper]
+}
+
+impl Default for AblationSettings {
+    fn default() -> Self {
+        AblationSettings {
+            last_second: 30,
+            sets: paper_only(),
+        }
+    }
+}
+
+/// A grid of runs from scratch: shapes x controllers x evals x seeds.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct EvolveGroup {
+    /// The group's name (titles of its figures and tables).
+    pub name: String,
+    /// Shapes: presets or rows.
+    pub shapes: Vec<String>,
+    /// Controller families.
+    pub controllers: Vec<ControllerKind>,
+    /// Evaluation budgets.
+    pub evals: Vec<u64>,
+    /// Seeds (default: the campaign's).
+    #[serde(default)]
+    pub seeds: Option<Vec<u64>>,
+    /// Ablate every best individual that has attention.
+    #[serde(default)]
+    pub ablate: bool,
+}
+
+/// Fine-tuning: for every pair and seed, a source run on the pair's first shape, its best
+/// fine-tuned on the second, and a from-scratch run on the second for comparison.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FinetuneGroup {
+    /// The group's name.
+    pub name: String,
+    /// `[source shape, target shape]` pairs.
+    pub pairs: Vec<[String; 2]>,
+    /// Controller of the source runs (attention or slow-attention).
+    pub controller: ControllerKind,
+    /// Budget of each source run.
+    pub source_evals: u64,
+    /// Budget of each fine-tuning run.
+    pub evals: u64,
+    /// Budget of the from-scratch comparison runs on the target shapes (none when absent).
+    #[serde(default)]
+    pub scratch_evals: Option<u64>,
+    /// Seeds (default: the campaign's).
+    #[serde(default)]
+    pub seeds: Option<Vec<u64>>,
+}
+
+fn paper_seconds() -> f64 {
+    PAPER_SECONDS
+}
+
+fn paper_population() -> usize {
+    GaConfig::default().population
+}
+
+fn paper_terrain() -> String {
+    PAPER_TERRAIN.to_string()
+}
+
+fn both_sets() -> Vec<ValidationSet> {
+    ValidationSet::ALL.to_vec()
+}
+
+impl Campaign {
+    /// Parses and checks a campaign file's text; errors say what is wrong and where.
+    pub fn parse(text: &str) -> Result<Campaign> {
+        let campaign: Campaign = toml::from_str(text)
+            .map_err(|e| Error::Input(format!("the campaign file is not valid: {e}")))?;
+        campaign.check()?;
+        Ok(campaign)
+    }
+
+    fn check(&self) -> Result<()> {
+        let bad = |m: String| Err(Error::Input(m));
+        if self.seeds.is_empty() {
+            return bad("the campaign's seeds are empty: give at least one".into());
+        }
+        if !(self.seconds > 0.0 && self.seconds <= 3600.0) {
+            return bad(format!(
+                "seconds must be in (0, 3600], got {}",
+                self.seconds
+            ));
+        }
+        TrainingTerrain::parse(&self.terrain)?;
+        for g in &self.evolve {
+            let shapes = g.shapes.iter().map(|s| Shape::parse(s).map(|_| ()));
+            shapes.collect::<Result<Vec<()>>>()?;
+            if g.shapes.is_empty() || g.controllers.is_empty() || g.evals.is_empty() {
+                return bad(format!(
+                    "group '{}' needs at least one shape, controller and budget",
+                    g.name
+                ));
+            }
+        }
+        for g in &self.finetune {
+            for pair in &g.pairs {
+                Shape::parse(&pair[0])?;
+                Shape::parse(&pair[1])?;
+            }
+            if !matches!(
+                g.controller,
+                ControllerKind::Attention | ControllerKind::SlowAttention
+            ) {
+                return bad(format!(
+                    "fine-tuning group '{}' transfers an attention block: its controller must \
+                     be attention or slow-attention, not {}",
+                    g.name, g.controller
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_are_the_papers() {
+        let c = Campaign::parse("output = \"out\"\nseeds = [1]\n").unwrap();
+        assert_eq!((c.seconds, c.population), (30.0, 100));
+        assert_eq!(c.terrain, "hilly-1-10");
+        assert_eq!(c.validate, ValidationSet::ALL);
+        assert_eq!(c.ablation.last_second, 30);
+    }
+
+    #[test]
+    fn errors_name_the_problem() {
+        let unknown = Campaign::parse("output = \"o\"\nseeds = [1]\nseed = 3\n");
+        assert!(unknown.unwrap_err().to_string().contains("seed"));
+        let shape = "output = \"o\"\nseeds = [1]\n[[evolve]]\nname = \"a\"\nshapes = [\"blob\"]\ncontrollers = [\"mlp\"]\nevals = [10]\n";
+        assert!(Campaign::parse(shape)
+            .unwrap_err()
+            .to_string()
+            .contains("blob"));
+        let mlp = "output = \"o\"\nseeds = [1]\n[[finetune]]\nname = \"f\"\npairs = [[\"biped-4x3\", \"comb-7x2\"]]\ncontroller = \"mlp\"\nsource_evals = 10\nevals = 10\n";
+        assert!(Campaign::parse(mlp)
+            .unwrap_err()
+            .to_string()
+            .contains("attention"));
+    }
+}

@@ -1,0 +1,116 @@
+//! What a campaign has produced so far: for every planned run, its run file, validations
+//! and ablation when they exist. The command line reads the files; this module only holds
+//! them and says what is missing.
+
+use super::file::Campaign;
+use super::plan::{runs, RunSpec};
+use crate::experiment::{AblationPoint, RunFile, Validation, ValidationSet};
+use std::collections::BTreeMap;
+use std::path::PathBuf;
+
+/// The outputs of one run found on disk.
+#[derive(Debug, Clone, Default)]
+pub struct RunData {
+    /// The run file, if it exists.
+    pub run: Option<RunFile>,
+    /// Validations found, by set.
+    pub validation: BTreeMap<ValidationSet, Validation>,
+    /// The ablations found, by the set on whose first terrain they ran.
+    pub ablation: BTreeMap<ValidationSet, Vec<AblationPoint>>,
+}
+
+impl RunData {
+    /// The mean validation velocity on `set` (the paper's re-assessment figure), if known.
+    pub fn validation_mean(&self, set: ValidationSet) -> Option<f64> {
+        self.validation.get(&set).map(|v| v.mean)
+    }
+
+    /// The unfrozen reference of the ablation on `set`: the velocity of the validation
+    /// episode on the set's first terrain (the same terrain and sensor noise), if known.
+    pub fn unfrozen(&self, set: ValidationSet) -> Option<f64> {
+        self.validation
+            .get(&set)?
+            .terrains
+            .first()
+            .map(|t| t.velocity)
+    }
+
+    /// The best fitness of the last generation, if the run exists.
+    pub fn final_best(&self) -> Option<f64> {
+        self.run.as_ref()?.generations.last().map(|g| g.best)
+    }
+
+    /// The best fitness of the last generation done within the first `evals` evaluations
+    /// (the measure `final_best` gives at the end: the curve of Fig. 3 and 7 read at
+    /// `evals`), if the run exists, had done a generation by then and went on that far (a
+    /// run that stopped earlier says nothing about `evals`).
+    pub fn best_at(&self, evals: u64) -> Option<f64> {
+        let generations = &self.run.as_ref()?.generations;
+        if generations.last()?.evaluations < evals {
+            return None;
+        }
+        let done = generations.iter().take_while(|g| g.evaluations <= evals);
+        done.last().map(|g| g.best)
+    }
+
+    /// Evaluations done by the last generation, if the run exists.
+    pub fn evaluations(&self) -> Option<u64> {
+        self.run.as_ref()?.generations.last().map(|g| g.evaluations)
+    }
+}
+
+/// Every run's data, and the expected files that do not exist.
+#[derive(Debug, Clone)]
+pub struct Results {
+    /// The campaign.
+    pub campaign: Campaign,
+    /// Data of every planned run, in plan order (possibly empty).
+    pub data: Vec<(RunSpec, RunData)>,
+    /// Planned output files not found.
+    pub missing: Vec<PathBuf>,
+}
+
+impl Results {
+    /// The data of `spec`, to fill in (`None` when the run is not planned).
+    pub fn of_mut(&mut self, spec: &RunSpec) -> Option<&mut RunData> {
+        self.data
+            .iter_mut()
+            .find(|(s, _)| s == spec)
+            .map(|(_, d)| d)
+    }
+
+    /// Empty results for every run of `campaign`.
+    pub fn new(campaign: Campaign) -> Self {
+        let data = runs(&campaign)
+            .into_iter()
+            .map(|r| (r, RunData::default()))
+            .collect();
+        Results {
+            campaign,
+            data,
+            missing: Vec::new(),
+        }
+    }
+
+    /// The data of `spec` (empty when the run is not planned).
+    pub fn of(&self, spec: &RunSpec) -> RunData {
+        let found = self.data.iter().find(|(s, _)| s == spec);
+        found.map(|(_, d)| d.clone()).unwrap_or_default()
+    }
+
+    /// The data of every seed of a run, in seed order, with the runs whose file exists.
+    pub fn seeds_of(&self, template: &RunSpec, seeds: &[u64]) -> Vec<RunData> {
+        seeds
+            .iter()
+            .map(|&seed| {
+                let mut spec = template.clone();
+                spec.seed = seed;
+                if let Some(source) = spec.source.as_mut() {
+                    source.seed = seed;
+                }
+                self.of(&spec)
+            })
+            .filter(|d| d.run.is_some())
+            .collect()
+    }
+}

@@ -1,0 +1,163 @@
+//! The data of the report's figures, ready to draw: lines with a band across seeds, and box
+//! plots. The command line draws them (SVG); nothing here knows about pixels.
+
+use crate::experiment::ValidationSet;
+use crate::study::campaign::RunData;
+use crate::study::statistics::{quantile, Summary};
+
+/// A line over x: the median across seeds and the interquartile band.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Band {
+    /// Legend entry.
+    pub label: String,
+    /// x of each point.
+    pub x: Vec<f64>,
+    /// Median across seeds at each x.
+    pub median: Vec<f64>,
+    /// Lower quartile across seeds.
+    pub q1: Vec<f64>,
+    /// Upper quartile across seeds.
+    pub q3: Vec<f64>,
+}
+
+/// One box of a box plot: a label and its sample.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BoxData {
+    /// The box's label.
+    pub label: String,
+    /// The sample.
+    pub values: Vec<f64>,
+    /// Its summary.
+    pub summary: Summary,
+}
+
+/// What a figure shows.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Plot {
+    /// Lines with bands (best fitness, ablation, alpha and eta against time or evaluations).
+    Lines(Vec<Band>),
+    /// Box plots (validation velocities).
+    Boxes(Vec<BoxData>),
+}
+
+/// A figure to draw into `file` (an SVG name, no folder).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Figure {
+    /// File name, e.g. `fig3-rq1-biped-4x3-30000.svg`.
+    pub file: String,
+    /// Title.
+    pub title: String,
+    /// Label of the x axis.
+    pub x_label: String,
+    /// Label of the y axis.
+    pub y_label: String,
+    /// The content.
+    pub plot: Plot,
+    /// Lines of text written under the title (e.g. the tests between the boxes).
+    pub notes: Vec<String>,
+}
+
+/// The band of several series of (x, y) points: point i of every series is aggregated (the
+/// series are cut to the shortest); x is taken from the first series. `None` when empty.
+pub fn band(label: &str, series: &[Vec<(f64, f64)>]) -> Option<Band> {
+    let len = series.iter().map(Vec::len).min().filter(|&n| n > 0)?;
+    let mut b = Band {
+        label: label.to_string(),
+        x: Vec::with_capacity(len),
+        median: Vec::with_capacity(len),
+        q1: Vec::with_capacity(len),
+        q3: Vec::with_capacity(len),
+    };
+    for i in 0..len {
+        let mut ys: Vec<f64> = series
+            .iter()
+            .map(|s| s[i].1)
+            .filter(|y| y.is_finite())
+            .collect();
+        ys.sort_by(f64::total_cmp);
+        b.x.push(series[0][i].0);
+        b.median.push(quantile(&ys, 0.5));
+        b.q1.push(quantile(&ys, 0.25));
+        b.q3.push(quantile(&ys, 0.75));
+    }
+    Some(b)
+}
+
+/// Best fitness against evaluations of each run, x shifted by `offset` evaluations.
+pub fn best_series(runs: &[RunData], offset: f64) -> Vec<Vec<(f64, f64)>> {
+    runs.iter()
+        .filter_map(|d| d.run.as_ref())
+        .map(|r| {
+            let points = r.generations.iter();
+            points
+                .map(|g| (offset + g.evaluations as f64, g.best))
+                .collect()
+        })
+        .collect()
+}
+
+/// Velocity against freeze second of each run's ablation on `set`.
+pub fn ablation_series(runs: &[RunData], set: ValidationSet) -> Vec<Vec<(f64, f64)>> {
+    runs.iter()
+        .filter_map(|d| d.ablation.get(&set))
+        .map(|a| {
+            let points = a.iter();
+            points
+                .map(|p| (f64::from(p.freeze_second), p.velocity))
+                .collect()
+        })
+        .collect()
+}
+
+/// The unfrozen reference of each run with an ablation on `set`, as a flat series over the
+/// same freeze seconds.
+pub fn unfrozen_series(runs: &[RunData], set: ValidationSet) -> Vec<Vec<(f64, f64)>> {
+    runs.iter()
+        .filter_map(|d| Some((d.ablation.get(&set)?, d.unfrozen(set)?)))
+        .map(|(a, v)| a.iter().map(|p| (f64::from(p.freeze_second), v)).collect())
+        .collect()
+}
+
+/// alpha (`eta` false) or eta (`eta` true) of each generation's best, against evaluations,
+/// for runs that recorded them.
+pub fn rate_series(runs: &[RunData], eta: bool) -> Vec<Vec<(f64, f64)>> {
+    runs.iter()
+        .filter_map(|d| d.run.as_ref())
+        .map(|r| {
+            let rate = |g: &crate::experiment::GenerationRecord| if eta { g.eta } else { g.alpha };
+            let points = r.generations.iter();
+            points
+                .filter_map(|g| rate(g).map(|v| (g.evaluations as f64, f64::from(v))))
+                .collect::<Vec<_>>()
+        })
+        .filter(|s| !s.is_empty())
+        .collect()
+}
+
+/// A box of `values`.
+pub fn box_of(label: &str, values: Vec<f64>) -> BoxData {
+    BoxData {
+        label: label.to_string(),
+        summary: Summary::of(&values),
+        values,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bands_aggregate_point_by_point_over_the_shortest_series() {
+        let series = vec![
+            vec![(100.0, 1.0), (300.0, 2.0)],
+            vec![(100.0, 3.0), (300.0, 4.0), (500.0, 9.0)],
+            vec![(100.0, 2.0), (300.0, 6.0)],
+        ];
+        let b = band("x", &series).unwrap();
+        assert_eq!(b.x, [100.0, 300.0]);
+        assert_eq!(b.median, [2.0, 4.0]);
+        assert_eq!((b.q1[0], b.q3[0]), (1.5, 2.5));
+        assert!(band("none", &[]).is_none());
+    }
+}

@@ -1,0 +1,228 @@
+//! `vsr report`: the campaign's statistics as Markdown and the figures to draw, from
+//! whatever runs exist (missing files are listed, never guessed).
+//!
+//! Measures per run: `best`, the best fitness of the last generation (training, one
+//! evaluation per individual); `SET mean`, the mean velocity of the run's best over the
+//! 10 terrains of a validation set (the paper's re-assessment figure). Every pair the paper
+//! compares is tested with the two-sided Mann-Whitney U test (exact for small samples without
+//! ties) and Vargha-Delaney A12 (`statistics`): the controllers of each shape and budget
+//! pairwise (RQ1), and fine-tuning against from scratch on each target shape (RQ2), both at
+//! the end and after the fine-tuning budget (the paper's claim is that fine-tuning converges
+//! faster).
+//!
+//! Figures (file names): `fig3-GROUP-SHAPE-EVALS.svg` best fitness against evaluations;
+//! `fig4-GROUP-SHAPE-EVALS-SET.svg` validation boxes; `fig6-GROUP-SHAPE-EVALS.svg`
+//! ablation; `fig7-GROUP-SOURCE-to-TARGET.svg` fine-tuning against from scratch over the
+//! evaluations on the target shape (`...-total.svg`: after the source's evaluations);
+//! `fig8-GROUP-SHAPE-EVALS.svg` alpha and eta of slow attention.
+
+use crate::controllers::ControllerKind;
+use crate::study::campaign::file::EvolveGroup;
+use crate::study::campaign::Results;
+use figures::{band, best_series, box_of, rate_series, Figure, Plot};
+use std::fmt::Write;
+
+mod ablation;
+mod families;
+pub mod figures;
+mod finetune;
+mod plateau;
+mod sets;
+mod tables;
+use families::{planned, Comparison};
+use finetune::finetune_section;
+use tables::{cell, comparisons, families_table, samples_of, summary_table, Sample};
+
+/// The report: Markdown text and the figures it links.
+#[derive(Debug, Clone)]
+pub struct Report {
+    /// The Markdown (figures linked by file name).
+    pub markdown: String,
+    /// The figures to draw next to it.
+    pub figures: Vec<Figure>,
+}
+
+/// Builds the report of `results`.
+pub fn report(results: &Results) -> Report {
+    let mut r = Report {
+        markdown: String::from("# Campaign report\n\n"),
+        figures: Vec::new(),
+    };
+    missing_section(results, &mut r.markdown);
+    let tests = planned(results);
+    families_table(&tests, &mut r.markdown);
+    sets::sets_section(results, &mut r.markdown);
+    for g in &results.campaign.evolve {
+        for shape in &g.shapes {
+            for &evals in &g.evals {
+                let mine: Vec<&Comparison> = tests
+                    .iter()
+                    .filter(|c| (&c.group, &c.shape, c.evals) == (&g.name, shape, evals))
+                    .collect();
+                evolve_section(results, g, (shape, evals), &mine, &mut r);
+            }
+        }
+    }
+    for g in &results.campaign.finetune {
+        for pair in &g.pairs {
+            let mine: Vec<&Comparison> = tests
+                .iter()
+                .filter(|c| (&c.group, &c.shape) == (&g.name, &finetune::transfer(pair)))
+                .collect();
+            finetune_section(results, g, pair, &mine, &mut r);
+        }
+    }
+    r
+}
+
+fn missing_section(results: &Results, md: &mut String) {
+    let found = results
+        .data
+        .iter()
+        .map(|(_, d)| d)
+        .filter(|d| d.run.is_some())
+        .count();
+    let _ = writeln!(md, "Run files found: {found} of {}.", results.data.len());
+    if results.missing.is_empty() {
+        md.push_str("Every planned output exists.\n\n");
+        return;
+    }
+    let _ = writeln!(
+        md,
+        "\n**Missing: {} planned outputs** (the tables use what exists):\n",
+        results.missing.len()
+    );
+    for path in results.missing.iter().take(40) {
+        let _ = writeln!(md, "- `{}`", path.display());
+    }
+    if results.missing.len() > 40 {
+        let _ = writeln!(md, "- ... and {} more", results.missing.len() - 40);
+    }
+    md.push('\n');
+}
+
+fn evolve_section(
+    results: &Results,
+    g: &EvolveGroup,
+    (shape, evals): (&str, u64),
+    tests: &[&Comparison],
+    r: &mut Report,
+) {
+    let samples = samples_of(results, g, shape, evals);
+    let id = format!("{}-{shape}-{evals}", g.name);
+    let md = &mut r.markdown;
+    let _ = writeln!(md, "## {} · {shape} · {evals} evaluations\n", g.name);
+    let sets = &results.campaign.validate;
+    summary_table(&samples, sets, md);
+    comparisons(tests, md);
+    plateau::plateau_table(&samples, md);
+    let bands = samples
+        .iter()
+        .filter_map(|s| band(&s.label, &best_series(&s.runs, 0.0)));
+    push_lines(
+        r,
+        format!("fig3-{id}.svg"),
+        format!("{shape}: best fitness"),
+        "evaluations",
+        "best fitness (m/s)",
+        bands.collect(),
+    );
+    for &set in sets {
+        let boxes = samples.iter().map(|s| {
+            let means = s.runs.iter().filter_map(|d| d.validation_mean(set));
+            box_of(&s.label, means.collect())
+        });
+        let boxes: Vec<_> = boxes.filter(|b| !b.values.is_empty()).collect();
+        if !boxes.is_empty() {
+            let file = format!("fig4-{id}-{set}.svg");
+            let _ = writeln!(r.markdown, "![validation on the {set} set]({file})\n");
+            r.figures.push(Figure {
+                file,
+                title: format!("{shape}: mean velocity on the {set} terrains"),
+                x_label: "controller".into(),
+                y_label: "velocity (m/s)".into(),
+                plot: Plot::Boxes(boxes),
+                notes: box_notes(tests, &format!("{set} mean")),
+            });
+        }
+    }
+    if g.ablate {
+        ablation::ablation_part(&samples, &id, shape, r);
+    }
+    slow_part(&samples, &id, shape, r);
+}
+
+/// Pushes a line figure (and its link) when it has at least one band.
+fn push_lines(
+    r: &mut Report,
+    file: String,
+    title: String,
+    x: &str,
+    y: &str,
+    bands: Vec<figures::Band>,
+) {
+    if bands.is_empty() {
+        return;
+    }
+    let _ = writeln!(r.markdown, "![{title}]({file})\n");
+    r.figures.push(Figure {
+        file,
+        title,
+        x_label: x.into(),
+        y_label: y.into(),
+        plot: Plot::Lines(bands),
+        notes: Vec::new(),
+    });
+}
+
+fn slow_part(samples: &[Sample], id: &str, shape: &str, r: &mut Report) {
+    let slow = ControllerKind::SlowAttention.to_string();
+    let Some(s) = samples
+        .iter()
+        .find(|s| s.label == slow && !s.runs.is_empty())
+    else {
+        return;
+    };
+    let finals = |f: fn(&crate::experiment::Best) -> Option<f32>| -> Vec<f64> {
+        s.runs
+            .iter()
+            .filter_map(|d| d.run.as_ref().and_then(|r| f(&r.best)))
+            .map(f64::from)
+            .collect()
+    };
+    let _ = writeln!(
+        r.markdown,
+        "Slow attention, final best: alpha {}, eta {}.\n",
+        cell(&finals(|b| b.alpha)),
+        cell(&finals(|b| b.eta))
+    );
+    let bands = [("alpha", false), ("eta", true)]
+        .into_iter()
+        .filter_map(|(name, eta)| band(name, &rate_series(&s.runs, eta)));
+    push_lines(
+        r,
+        format!("fig8-{id}.svg"),
+        format!("{shape}: slow attention's alpha and eta"),
+        "evaluations",
+        "value",
+        bands.collect(),
+    );
+}
+
+/// The tests between the boxes of a measure, one line each, for the figure.
+fn box_notes(tests: &[&Comparison], measure: &str) -> Vec<String> {
+    tests
+        .iter()
+        .filter(|c| c.measure == measure)
+        .map(|c| {
+            format!(
+                "{} vs {}: p = {:.4}, Holm {:.4} ({})",
+                c.a,
+                c.b,
+                c.test.p,
+                c.holm.0,
+                c.outcome()
+            )
+        })
+        .collect()
+}

@@ -1,0 +1,23 @@
+//! Statistics for comparing runs (the paper's "5 runs per configuration, Mann-Whitney U"):
+//! summaries and order statistics of small samples, the two-sided Mann-Whitney U test with
+//! its effect size, Holm's correction, the Hodges-Lehmann shift with its exact interval, the
+//! paired signed-rank test, and bootstrap intervals and power from fixed seeds. Plain
+//! functions over `&[f64]`; no I/O.
+
+mod holm;
+mod mann_whitney;
+mod normal;
+mod order_ci;
+mod resample;
+mod shift;
+mod summary;
+mod wilcoxon;
+
+pub use crate::quantiles::{median, quantile};
+pub use holm::holm;
+pub use mann_whitney::{mann_whitney, Method, UTest};
+pub use order_ci::{median_interval, Interval};
+pub use resample::{a12_interval, detectable_a12, Detectable};
+pub use shift::{hodges_lehmann, Shift};
+pub use summary::Summary;
+pub use wilcoxon::{wilcoxon_signed_rank, SignedRank};

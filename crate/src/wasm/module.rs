@@ -1,0 +1,55 @@
+//! What the page asks the core about a module (a run file): its description and its best
+//! genome on its own body.
+
+use serde::Serialize;
+use wasm_bindgen::prelude::{wasm_bindgen, JsError, JsValue};
+
+use super::page::to_js;
+use crate::experiment::evolution::planned_evaluations;
+use crate::experiment::RunFile;
+
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct ModuleInfo {
+    shape: String,
+    controller: String,
+    seed: u64,
+    budget: u64,
+    evaluations: u64,
+    fitness: f64,
+    genes: usize,
+    finetuned_from: Option<String>,
+    seconds: f64,
+    terrain: String,
+}
+
+/// Reads a run file (its JSON) and describes its best individual: `{shape (rows),
+/// controller, seed, budget, evaluations (what that budget took: whole generations),
+/// fitness, genes, finetunedFrom (source rows or null), seconds
+/// (its training episodes' length), terrain (its training terrain: a family such as
+/// hilly-1-10, or a name)}`. A malformed file throws an `Error` that says what is wrong.
+#[wasm_bindgen(js_name = describeRun)]
+pub fn describe_run(run_file: &str) -> Result<JsValue, JsError> {
+    let run = RunFile::from_json(run_file)?;
+    to_js(&ModuleInfo {
+        shape: run.best.shape.to_rows(),
+        controller: run.best.controller.to_string(),
+        seed: run.config.seed,
+        budget: run.config.ga.budget_evals,
+        evaluations: planned_evaluations(
+            run.config.ga.population as u64,
+            run.config.ga.budget_evals,
+        ),
+        fitness: run.best.fitness,
+        genes: run.best.genome.len(),
+        finetuned_from: run.config.source.as_ref().map(|s| s.shape.to_rows()),
+        seconds: run.config.seconds,
+        terrain: run.config.terrain.clone().into(),
+    })
+}
+
+/// The best genome of `run_file` itself (its own body).
+#[wasm_bindgen(js_name = runGenome)]
+pub fn run_genome(run_file: &str) -> Result<Vec<f32>, JsError> {
+    Ok(RunFile::from_json(run_file)?.best.genome)
+}

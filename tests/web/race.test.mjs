@@ -1,0 +1,102 @@
+// @ts-check
+/**
+ * Browser test of the side-by-side race (node --test): the three pretrained brains of
+ * biped-4x3 race on the viewer's terrain for one 30-s episode, all in their own workers;
+ * each ends with exactly the speed `vsr evaluate` gives that module on that terrain (when
+ * the native CLI is built), and their order is the study's (attention > MLP-Comm > MLP);
+ * a fifth cannot be added, one can be taken out; after a small run, the best of a chosen generation and the best
+ * so far join a race. Saves screenshots/race-{1400,420,420-panel}.png.
+ */
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { existsSync } from 'node:fs';
+import path from 'node:path';
+import { after, before, test } from 'node:test';
+import { BIN, ROOT, SCREENSHOTS, byTestId, openPage, screenshot, start, waitForFigure, waitForText } from './harness.mjs';
+
+const BRAINS = ['attention', 'mlp-comm', 'mlp'];
+const file = (/** @type {string} */ c) => `pretrained/biped-4x3-${c}.json`;
+
+/** @type {Awaited<ReturnType<typeof start>>} */ let env;
+
+before(async () => { env = await start(); });
+after(async () => { await env?.close(); });
+
+/** @param {import('playwright-core').Page} page @param {string} module */
+async function addModule(page, module) {
+  const before = await byTestId(page, 'race-robot').count();
+  await byTestId(page, 'pretrained').selectOption(module);
+  await byTestId(page, 'race-add').click();
+  await page.waitForFunction((n) => document.querySelectorAll('[data-testid="race-robot"]').length === n, before + 1);
+}
+
+/** @param {import('playwright-core').Page} page @returns {Promise<{controller: string, speed: number, time: number}[]>} */
+async function speeds(page) {
+  return byTestId(page, 'race-robot').evaluateAll((robots) => robots.map((r) => {
+    const out = /** @type {HTMLElement} */ (r.querySelector('[data-testid="race-speed"]'));
+    return { controller: String(/** @type {HTMLElement} */ (r).dataset.controller), speed: Number(out.dataset.value), time: Number(out.dataset.time) };
+  }));
+}
+
+test('three pretrained brains race on biped-4x3: vsr evaluate\'s speeds, in the study\'s order', async () => {
+  const { page, problems } = await openPage(env.browser, env.url, { width: 1400, height: 900 });
+  const terrain = await page.locator('#terrain').inputValue();
+  await page.locator('#race-speed-select').selectOption('4');
+  for (const c of BRAINS) await addModule(page, file(c));
+  await waitForText(page, 'race-status', /^3 robots on .+, 30 s\.$/);
+  await page.locator('#race-panel[data-state="finished"]').waitFor({ timeout: 90_000 });
+  const raced = await speeds(page);
+  assert.deepEqual(raced.map((r) => r.controller), BRAINS);
+  for (const r of raced) assert.ok(Math.abs(r.time - 1801 / 60) < 1e-9, `${r.controller} ran 1801 steps: ${r.time}`);
+  const figures = raced.map((r) => `${r.controller} ${r.speed.toFixed(3)} m/s`).join(', ');
+  console.log(`# race on ${terrain}, 30 s: ${figures}`);
+  if (existsSync(BIN)) {
+    for (const r of raced) {
+      const out = execFileSync(BIN, ['evaluate', '--genome', path.join(ROOT, file(r.controller)), '--terrain', terrain, '--seconds', '30'], { encoding: 'utf8' });
+      const cli = JSON.parse(out.trim().split('\n').pop() ?? '{}').velocity;
+      assert.ok(Math.abs(r.speed - cli) < 1e-9, `${r.controller}: the race's ${r.speed} against vsr evaluate's ${cli}`);
+    }
+  } else {
+    console.log(`# ${BIN} not built: the speeds were not compared with vsr evaluate`);
+  }
+  const [attention, comm, mlp] = raced.map((r) => r.speed);
+  assert.ok(attention > comm && comm > mlp, `the study's order attention > MLP-Comm > MLP: ${figures}`);
+  await screenshot(page, 'race-1400.png');
+
+  await addModule(page, file('attention'));
+  assert.equal(await byTestId(page, 'race-add').isDisabled(), true, 'four robots at most');
+  await page.locator('.race-robot .close').first().click();
+  await page.waitForFunction(() => document.querySelectorAll('[data-testid="race-robot"]').length === 3);
+  assert.equal(await byTestId(page, 'race-add').isEnabled(), true);
+  assert.deepEqual(problems, []);
+  await page.context().close();
+});
+
+test('the bests of a run\'s generations join a race (on a phone)', async () => {
+  const { page, problems } = await openPage(env.browser, env.url, { width: 420, height: 860, touch: true });
+  for (const [key, value] of Object.entries({ population: '4', seconds: '2', budget: '20', seed: '3', workers: '2' })) {
+    await page.locator(`#run-${key}`).fill(value);
+  }
+  await byTestId(page, 'evolve').click();
+  await waitForText(page, 'run-status', /^finished$/, 60_000);
+  await waitForFigure(page, 'run-generation', 'v >= 2');
+  const options = await byTestId(page, 'race-generation').locator('option').allTextContents();
+  assert.ok(options.length >= 3 && /^generation 0 \(/.test(options[0]), `one entry per generation: ${options}`);
+  await byTestId(page, 'race-generation').selectOption('0');
+  await byTestId(page, 'race-add-generation').click();
+  await page.waitForFunction(() => Number(/** @type {HTMLElement} */ (document.querySelector('[data-testid="race-speed"]'))?.dataset.time) > 2);
+  await page.locator('#race-best').click(); // 2 s later: the race starts again, both together
+  await page.waitForFunction(() => document.querySelectorAll('[data-testid="race-robot"]').length === 2);
+  const names = await page.locator('.race-name').allTextContents();
+  assert.match(names[0], /generation 0's best/);
+  assert.match(names[1], /best so far \(generation \d+\)/);
+  await page.waitForFunction(() => [...document.querySelectorAll('[data-testid="race-speed"]')]
+    .every((o) => Number(/** @type {HTMLElement} */ (o).dataset.time) > 1), undefined, { timeout: 30_000 });
+  const times = (await speeds(page)).map((r) => r.time);
+  assert.ok(Math.max(...times) - Math.min(...times) < 1, `started together, they walk in step: ${times}`);
+  await byTestId(page, 'race').scrollIntoViewIfNeeded();
+  await screenshot(page, 'race-420.png');
+  await byTestId(page, 'race').screenshot({ path: path.join(SCREENSHOTS, 'race-420-panel.png') });
+  assert.deepEqual(problems, []);
+  await page.context().close();
+});

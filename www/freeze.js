@@ -1,0 +1,95 @@
+// @ts-check
+/**
+ * Freeze the attention (the paper's Fig. 6, live): a button that freezes every voxel's
+ * attention matrix where it is now (the core's freeze, the one the ablation uses; the worker
+ * does it) and releases it, and a line with the robot's speed over the seconds before
+ * freezing and since. Both speeds are the same measure: the centre's forward distance over
+ * the time it took (as fitness, over a window). Only an attention brain can be frozen.
+ */
+/** Seconds of walking before the freeze that its "before" speed is measured over. */
+export const BEFORE_WINDOW_S = 5;
+
+/** @typedef {{t: number, x: number}} Sample  simulated time (s) and the centre's x (m) */
+
+export class FreezeControl {
+  /**
+   * @param {Document} doc
+   * @param {(frozen: boolean) => void} send asks the simulation worker to freeze or release
+   */
+  constructor(doc, send) {
+    this.button = /** @type {HTMLButtonElement} */ (doc.getElementById('freeze-attention'));
+    this.report = /** @type {HTMLElement} */ (doc.getElementById('freeze-report'));
+    this.send = send;
+    /** Recent samples, the last {@link BEFORE_WINDOW_S} s. @type {Sample[]} */
+    this.recent = [];
+    /** The moment of freezing, the speed before it and over how long, while frozen. @type {{at: Sample, before: number, window: number} | null} */
+    this.mark = null;
+    this.frozen = false;
+    this.button.addEventListener('click', () => this.send(!this.frozen));
+    this.loaded('phase gait');
+  }
+
+  /** A new episode (frozen matrices do not carry over). @param {string} controller what drives it */
+  loaded(controller) {
+    this.recent = [];
+    this.mark = null;
+    this.setFrozen(false);
+    const can = controller === 'attention';
+    this.button.disabled = !can;
+    this.button.title = can
+      ? 'Freeze every voxel\'s attention matrix as it is now (as the paper\'s ablation does), and watch the speed'
+      : 'Only a robot with an attention brain has attention to freeze';
+    this.report.textContent = '';
+    this.show(NaN, NaN);
+  }
+
+  /** @param {import('./protocol.js').Frame} frame */
+  setFrame(frame) {
+    const now = { t: frame.time, x: frame.centreX };
+    if (!Number.isFinite(now.t) || !Number.isFinite(now.x)) return;
+    if (this.recent.length > 0 && now.t < this.recent[this.recent.length - 1].t) this.recent = [];
+    this.recent.push(now);
+    while (this.recent.length > 2 && now.t - this.recent[1].t >= BEFORE_WINDOW_S) this.recent.shift();
+    if (frame.frozen && !this.mark) {
+      const from = this.recent[0];
+      this.mark = { at: now, before: speedBetween(from, now), window: now.t - from.t };
+    } else if (!frame.frozen && this.mark) {
+      this.mark = null;
+    }
+    this.setFrozen(Boolean(frame.frozen));
+    if (!this.mark) return;
+    const { at, before, window } = this.mark;
+    const seconds = now.t - at.t;
+    const after = speedBetween(at, now);
+    this.report.textContent = `Before freezing: ${metres(before)} over the last ${window.toFixed(1)} s. `
+      + `Frozen for ${seconds.toFixed(1)} s: ${seconds > 0 ? metres(after) : '…'}.`;
+    this.show(before, after);
+  }
+
+  /** @param {boolean} frozen */
+  setFrozen(frozen) {
+    this.frozen = frozen;
+    this.button.textContent = frozen ? 'Release the attention' : 'Freeze the attention';
+    this.button.setAttribute('aria-pressed', String(frozen));
+  }
+
+  /** @param {number} before @param {number} after the speeds shown (NaN: none), kept for tests in data- */
+  show(before, after) {
+    this.report.hidden = !this.report.textContent;
+    this.report.dataset.before = String(before);
+    this.report.dataset.after = String(after);
+  }
+}
+
+/** @param {number} v a speed (m/s) @returns {string} */
+function metres(v) {
+  return Number.isFinite(v) ? `${v.toFixed(2)} m/s` : '–';
+}
+
+/**
+ * The centre's forward speed between two samples (m/s): distance over time.
+ * @param {Sample} from @param {Sample} to
+ */
+export function speedBetween(from, to) {
+  return to.t > from.t ? (to.x - from.x) / (to.t - from.t) : NaN;
+}

@@ -1,0 +1,140 @@
+// @ts-check
+/**
+ * One robot of the race: its own simulation worker (worker.js, the viewer's: the wasm core
+ * steps it), its own lane (a canvas drawn by a Renderer whose camera follows it) and its
+ * label: the brain, its live speed (the mean forward speed since the start, as fitness
+ * defines it) and the distance walked. The race (race.js) loads and starts every lane.
+ */
+import { spawn } from './kit.js';
+import { FromWorker, ToWorker, frameIsConsistent } from './protocol.js';
+import { Renderer } from './renderer.js';
+
+/**
+ * @typedef {object} Racer  what a lane runs
+ * @property {string} label       its brain, in words
+ * @property {string} shape       rows
+ * @property {string} controller
+ * @property {Float32Array} genome
+ */
+
+export class Lane {
+  /**
+   * @param {HTMLElement} parent where the lane goes
+   * @param {Racer} racer
+   * @param {{loaded: (lane: Lane) => void, finished: (lane: Lane) => void, remove: (lane: Lane) => void,
+   *   failed: (lane: Lane, text: string) => void}} hooks
+   */
+  constructor(parent, racer, hooks) {
+    const doc = parent.ownerDocument;
+    this.racer = racer;
+    this.hooks = hooks;
+    this.root = doc.createElement('div');
+    this.root.className = 'race-robot';
+    this.root.dataset.testid = 'race-robot';
+    this.root.dataset.controller = racer.controller;
+    const head = doc.createElement('div');
+    head.className = 'race-head';
+    this.name = doc.createElement('span');
+    this.name.className = 'race-name';
+    this.name.textContent = racer.label;
+    this.speed = doc.createElement('output');
+    this.speed.dataset.testid = 'race-speed';
+    this.speed.title = 'Mean forward speed since the start: distance walked over time, as fitness measures it';
+    this.distance = doc.createElement('output');
+    this.distance.className = 'race-distance';
+    const remove = doc.createElement('button');
+    remove.type = 'button';
+    remove.className = 'close';
+    remove.textContent = '×';
+    remove.title = 'Take this robot out of the race';
+    remove.setAttribute('aria-label', `Take ${racer.label} out of the race`);
+    remove.addEventListener('click', () => hooks.remove(this));
+    head.append(this.name, this.speed, this.distance, remove);
+    this.canvas = doc.createElement('canvas');
+    this.canvas.setAttribute('aria-label', `${racer.label} walking`);
+    this.root.append(head, this.canvas);
+    parent.append(this.root);
+    this.renderer = new Renderer(this.canvas);
+    this.loaded = false;
+    this.finished = false;
+    /** 'idle', 'started' (asked to run), 'running' (the worker said so): a stop then is the finish. */
+    this.phase = 'idle';
+    /** A frame came since the lane was last drawn. */
+    this.dirty = true;
+    /** The centre's x at the start line (m). */
+    this.start = NaN;
+    this.worker = spawn('worker.js', (msg) => this.onMessage(msg), (text) => hooks.failed(this, text));
+    this.show(NaN, NaN, NaN);
+  }
+
+  /**
+   * Builds the robot afresh at the start line, paused.
+   * @param {string} terrain @param {number} seconds the race's length @param {number} speed simulated s per wall s
+   */
+  load(terrain, seconds, speed) {
+    this.loaded = false;
+    this.finished = false;
+    this.phase = 'idle';
+    this.start = NaN;
+    this.worker.postMessage({ type: ToWorker.PAUSE });
+    this.worker.postMessage({ type: ToWorker.SPEED, speed });
+    const brain = { controller: this.racer.controller, genome: this.racer.genome };
+    this.worker.postMessage({ type: ToWorker.LOAD,
+      params: { shape: this.racer.shape, terrain, brain, frequency: 0, phase: 0, keepPlace: false, until: seconds } });
+  }
+
+  /** @param {boolean} run */
+  run(run) {
+    this.phase = run ? 'started' : 'idle';
+    this.worker.postMessage({ type: run ? ToWorker.START : ToWorker.PAUSE });
+  }
+
+  /** @param {any} msg */
+  onMessage(msg) {
+    switch (msg.type) {
+      case FromWorker.LOADED:
+        this.renderer.setTerrain(msg.terrainXs, msg.terrainYs, true);
+        this.loaded = true;
+        this.hooks.loaded(this);
+        break;
+      case FromWorker.FRAME:
+        if (!frameIsConsistent(msg)) break;
+        this.renderer.setFrame(msg);
+        this.dirty = true;
+        this.show(msg.velocity, msg.time, msg.centreX);
+        break;
+      case FromWorker.STATE:
+        if (msg.running && this.phase === 'started') this.phase = 'running';
+        if (!msg.running && this.phase === 'running') {
+          this.phase = 'idle';
+          this.finished = true;
+          this.hooks.finished(this);
+        }
+        break;
+      case FromWorker.ERROR: this.hooks.failed(this, msg.message); break;
+      default: break;
+    }
+  }
+
+  /** @param {number} velocity @param {number} time @param {number} x */
+  show(velocity, time, x) {
+    if (!Number.isFinite(this.start) || time === 0) this.start = x;
+    this.speed.dataset.value = String(velocity);
+    this.speed.dataset.time = String(time);
+    this.speed.textContent = Number.isFinite(velocity) && time > 0 ? `${velocity.toFixed(2)} m/s` : '– m/s';
+    const walked = x - this.start;
+    this.distance.textContent = Number.isFinite(walked) ? `${walked.toFixed(1)} m in ${time.toFixed(1)} s` : '';
+  }
+
+  /** Draws the lane if a new frame came (a finished robot costs nothing). @param {number} now */
+  draw(now) {
+    if (!this.dirty && this.canvas.width === Math.round(this.canvas.clientWidth * (window.devicePixelRatio || 1))) return;
+    this.dirty = false;
+    this.renderer.draw(now);
+  }
+
+  dispose() {
+    this.worker.terminate();
+    this.root.remove();
+  }
+}

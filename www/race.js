@@ -1,0 +1,156 @@
+// @ts-check
+/**
+ * Side by side: up to four robots race on the same terrain, each in its own lane and its
+ * own simulation worker, all started together, for the length of a training episode (they
+ * stop where `vsr evaluate` ends one, so the speed shown at the end is that command's
+ * figure). Any brain can race: the module chosen in the module list (pretrained, imported,
+ * finished here), the current run's best so far, or the best of any generation of the
+ * current run, which the page keeps for every generation (race generation 1 against 10
+ * against 50 and see evolution at work). Adding or removing a robot restarts the race.
+ */
+import { describeRun, runGenome } from './core.js';
+import { messageOf } from './kit.js';
+import { Lane } from './race-lane.js';
+
+/** Most robots in one race. */
+export const MAX_RACERS = 4;
+
+/** @typedef {import('./race-lane.js').Racer} Racer */
+/** @typedef {{generation: number, fitness: number, genome: Float32Array}} GenerationBest */
+
+/**
+ * @typedef {object} RaceHooks
+ * @property {() => Promise<import('./modules.js').Module | null>} module  the module chosen in the list
+ * @property {() => string} terrain                                        the terrain to race on
+ * @property {(text: string, kind?: string) => void} message
+ */
+
+export class Race {
+  /** @param {Document} doc @param {RaceHooks} hooks */
+  constructor(doc, hooks) {
+    const el = (/** @type {string} */ id) => /** @type {any} */ (doc.getElementById(id));
+    this.hooks = hooks;
+    this.section = /** @type {HTMLElement} */ (el('race-panel'));
+    this.lanesBox = /** @type {HTMLElement} */ (el('race-lanes'));
+    this.status = /** @type {HTMLElement} */ (el('race-status'));
+    this.seconds = /** @type {HTMLInputElement} */ (el('race-seconds'));
+    this.speed = /** @type {HTMLSelectElement} */ (el('race-speed-select'));
+    this.generation = /** @type {HTMLSelectElement} */ (el('race-generation'));
+    this.buttons = { add: el('race-add'), best: el('race-best'), generation: el('race-add-generation'),
+      restart: el('race-restart'), clear: el('race-clear') };
+    /** @type {Lane[]} */
+    this.lanes = [];
+    /** The current run's best evaluation of every generation, and what it evolved. */
+    this.run = { bests: /** @type {GenerationBest[]} */ ([]), shape: '', controller: '', what: '' };
+    this.terrainName = '';
+    this.wire();
+    this.update();
+    requestAnimationFrame(function loop(/** @type {number} */ now) {
+      for (const lane of this.lanes) lane.draw(now);
+      requestAnimationFrame(loop.bind(this));
+    }.bind(this));
+  }
+
+  wire() {
+    const b = this.buttons;
+    b.add.addEventListener('click', () => this.addModule());
+    b.best.addEventListener('click', () => this.addGeneration(-1));
+    b.generation.addEventListener('click', () => this.addGeneration(Number(this.generation.value)));
+    b.restart.addEventListener('click', () => this.restart());
+    b.clear.addEventListener('click', () => { for (const lane of this.lanes) lane.dispose(); this.lanes = []; this.restart(); });
+    this.speed.addEventListener('change', () => this.restart());
+  }
+
+  /** Adds the module chosen in the module list, on its own body with its own genome. */
+  async addModule() {
+    try {
+      const module = await this.hooks.module();
+      if (!module) { this.hooks.message('choose a module in the list first (3 · Give it a brain, Transplant a module)'); return; }
+      const info = describeRun(module.text);
+      this.add({ label: module.label.replace(/ \([^()]*\)$/, ''), shape: info.shape,
+        controller: info.controller, genome: runGenome(module.text) });
+    } catch (error) {
+      this.hooks.message(`could not race this module: ${messageOf(error)}`);
+    }
+  }
+
+  /**
+   * Adds the best of generation `generation` of the current run (-1: its best so far).
+   * @param {number} generation
+   */
+  addGeneration(generation) {
+    const { bests } = this.run;
+    if (bests.length === 0) { this.hooks.message('evolve or fine-tune first: the race takes the bests of the current run'); return; }
+    const pick = generation < 0
+      ? bests.reduce((a, b) => (b.fitness > a.fitness ? b : a))
+      : bests.find((b) => b.generation === generation);
+    if (!pick) { this.hooks.message(`the current run has no generation ${generation}`); return; }
+    const which = generation < 0 ? `best so far (generation ${pick.generation})` : `generation ${pick.generation}'s best`;
+    this.add({ label: `${this.run.what}, ${which}`, shape: this.run.shape, controller: this.run.controller, genome: pick.genome });
+  }
+
+  /** @param {Racer} racer */
+  add(racer) {
+    if (this.lanes.length >= MAX_RACERS) {
+      this.hooks.message(`a race holds ${MAX_RACERS} robots: take one out (×) first`);
+      return;
+    }
+    this.hooks.message('');
+    const lane = new Lane(this.lanesBox, racer, {
+      loaded: () => this.startIfLoaded(),
+      finished: () => this.update(),
+      remove: (l) => { l.dispose(); this.lanes = this.lanes.filter((x) => x !== l); this.restart(); },
+      failed: (l, text) => { this.hooks.message(`${l.racer.label} cannot race: ${text}`); l.dispose(); this.lanes = this.lanes.filter((x) => x !== l); this.restart(); },
+    });
+    this.lanes.push(lane);
+    this.restart();
+  }
+
+  /**
+   * Keeps each generation's best evaluation of the run under way (a new run starts afresh).
+   * @param {{fitness: number, genome: Float32Array}} top @param {number} generation
+   * @param {import('./protocol.js').EvolveSettings} settings @param {string} kind @param {string} mode
+   */
+  keepGeneration(top, generation, settings, kind, mode) {
+    if (generation === 0) {
+      const what = { evolve: 'evolved', finetune: 'fine-tuned', scratch: 'from scratch' }[mode] ?? mode;
+      this.run = { bests: [], shape: settings.shape, controller: kind, what: `${what} ${kind} (seed ${settings.seed})` };
+      this.generation.replaceChildren();
+    }
+    if (!top || !Number.isFinite(top.fitness)) return;
+    this.run.bests.push({ generation, fitness: top.fitness, genome: top.genome });
+    this.generation.append(new Option(`generation ${generation} (${top.fitness.toFixed(2)} m/s in training)`, String(generation)));
+    this.update();
+  }
+
+  /** Every robot back to the start line, paused until all are built; then all start together. */
+  restart() {
+    const seconds = Number(this.seconds.value);
+    if (!(seconds > 0 && seconds <= 600)) { this.hooks.message(`the race lasts from 1 to 600 s, not "${this.seconds.value}"`); return; }
+    this.terrainName = this.hooks.terrain();
+    for (const lane of this.lanes) lane.load(this.terrainName, seconds, Number(this.speed.value));
+    this.update();
+  }
+
+  startIfLoaded() {
+    if (this.lanes.length === 0 || !this.lanes.every((l) => l.loaded)) return;
+    for (const lane of this.lanes) lane.run(true);
+    this.update();
+  }
+
+  update() {
+    const n = this.lanes.length;
+    const b = this.buttons;
+    b.add.disabled = n >= MAX_RACERS;
+    b.best.disabled = n >= MAX_RACERS || this.run.bests.length === 0;
+    b.generation.disabled = b.best.disabled;
+    this.generation.disabled = this.run.bests.length === 0;
+    b.restart.disabled = n === 0;
+    b.clear.disabled = n === 0;
+    const done = n > 0 && this.lanes.every((l) => l.finished);
+    this.section.dataset.state = n === 0 ? 'empty' : done ? 'finished' : 'racing';
+    this.status.textContent = n === 0
+      ? 'No robot in the race yet.'
+      : `${n} robot${n === 1 ? '' : 's'} on ${this.terrainName}, ${this.seconds.value} s${done ? ': finished' : ''}.`;
+  }
+}

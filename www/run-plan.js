@@ -1,0 +1,23 @@
+// @ts-check
+/**
+ * What a run's settings mean, in words, from the core's rule (core.js runPlan): a budget
+ * becomes whole generations, each of which measures two populations (the parents again, on
+ * fresh terrains, and as many new children), so a run can pass its budget.
+ */
+import { runPlan } from './core.js';
+
+/**
+ * @param {number} population @param {number} budget
+ * @returns {{text: string, generations: number} | null} null when the numbers are not valid
+ */
+export function planWords(population, budget) {
+  let plan;
+  try { plan = runPlan(population, budget); } catch { return null; }
+  const extra = plan.planned > budget ? `; the last generation is finished, so the run takes ${plan.planned}` : '';
+  return {
+    generations: plan.generations,
+    text: `A budget of ${budget} evaluations: generation 0 measures ${population} random brains, then each of `
+      + `${plan.generations} generations measures ${plan.perGeneration} (${population} new children, and the ${population} `
+      + `parents again on fresh terrains, so that luck on one terrain does not last)${extra}.`,
+  };
+}

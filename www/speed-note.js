@@ -1,0 +1,64 @@
+// @ts-check
+/**
+ * The line under the viewer that puts the walking brain's speed in context: its speed on the
+ * viewer's terrain over the viewer's episode, measured at once (measure.js, the fitness's own
+ * evaluation), beside what training measured and why the two differ; for a module just
+ * transplanted, that this one-shot speed is expected to be poor and what to do next.
+ * Its raw number is in `data-value` (NaN while measuring or with no brain).
+ */
+import { checkTerrain } from './core.js';
+import { messageOf } from './kit.js';
+
+export class SpeedNote {
+  /** @param {HTMLElement} el @param {import('./measure.js').Measurer} measurer */
+  constructor(el, measurer) {
+    this.el = el;
+    this.measurer = measurer;
+  }
+
+  /**
+   * @param {import('./brain.js').Brain | null} brain @param {string} terrain the viewer's
+   * @param {number} seconds the viewer's episode length
+   * @param {boolean} [now] measure it now (while a run uses the workers, the viewer's own measure is enough)
+   */
+  show(brain, terrain, seconds, now = true) {
+    this.set(NaN, '');
+    if (!brain) {
+      this.set(NaN, `The phase gait has no brain: each voxel squeezes and swells on a clock. Its speed is measured as it walks, over a ${seconds}-s episode.`);
+      return;
+    }
+    if (!now) {
+      const trained = brain.trained && Number.isFinite(brain.trained.speed) ? `In training: ${brain.trained.speed.toFixed(2)} m/s. ` : '';
+      this.set(NaN, `${trained}The viewer measures its speed as it walks, over a ${seconds}-s episode on ${terrain}; the run goes on.`);
+      return;
+    }
+    this.set(NaN, `Measuring its speed over a ${seconds}-s episode on ${terrain}…`);
+    const what = { rows: brain.rows, controller: brain.controller, genome: brain.genome, terrain, seconds };
+    this.measurer.measure(what).then((speed) => this.set(speed, this.words(brain, speed, terrain, seconds)), (error) => {
+      if (messageOf(error) !== 'stale') this.set(NaN, `Its speed could not be measured: ${messageOf(error)}`);
+    });
+  }
+
+  /** @param {import('./brain.js').Brain} brain @param {number} speed @param {string} terrain @param {number} seconds */
+  words(brain, speed, terrain, seconds) {
+    const here = `Speed here: ${speed.toFixed(2)} m/s over a ${seconds}-s episode on ${terrain}.`;
+    if (brain.oneShot) {
+      return `${here} That is its one-shot speed: the module moved to your robot with no training for this body. `
+        + 'A transplanted module usually walks badly at first (the paper found the same); '
+        + 'press Fine-tune to train the rest of its brain for this body, its attention kept: it recovers fast.';
+    }
+    const trained = brain.trained;
+    if (!trained || !Number.isFinite(trained.speed)) return here;
+    const fresh = checkTerrain(trained.terrain) !== ''; // a family (hilly-1-10), not one terrain
+    const where = fresh ? `a ${trained.terrain} terrain drawn fresh for that evaluation` : trained.terrain;
+    const why = fresh ? 'Training draws a fresh terrain for every evaluation, each generation; the viewer keeps one terrain, so the two differ.'
+      : 'Training used other sensor noise (or another terrain), so the two can differ.';
+    return `${here} In training: ${trained.speed.toFixed(2)} m/s (its latest evaluation, on ${where}, ${brain.seconds ?? seconds}-s episodes). ${why}`;
+  }
+
+  /** @param {number} value @param {string} text */
+  set(value, text) {
+    this.el.dataset.value = String(value);
+    this.el.textContent = text;
+  }
+}
