@@ -22,6 +22,16 @@ pub const MAX_SECONDS: f64 = 3600.0;
 /// so the page reads the same seed as the command line.
 pub const MAX_SEED: u64 = (1 << 53) - 1;
 
+/// The one check of an episode's length: in (0, [`MAX_SECONDS`]] s.
+pub fn check_seconds(seconds: f64) -> Result<()> {
+    if seconds > 0.0 && seconds <= MAX_SECONDS {
+        return Ok(());
+    }
+    Err(Error::Input(format!(
+        "episode seconds must be in (0, {MAX_SECONDS}], got {seconds}"
+    )))
+}
+
 /// Where the evaluations of a run take place. Serialized as a string: a family such as
 /// `hilly-1-10` (each evaluation appends its own derived seed, `hilly-1-10-4821`), or one
 /// fixed terrain name such as `flat` used for every evaluation.
@@ -153,12 +163,7 @@ impl EvolutionConfig {
     /// Checks every setting; messages say what is accepted.
     pub fn validate(&self) -> Result<()> {
         let bad = |m: String| Err(Error::Input(m));
-        if !(self.seconds > 0.0 && self.seconds <= MAX_SECONDS) {
-            return bad(format!(
-                "episode seconds must be in (0, {MAX_SECONDS}], got {}",
-                self.seconds
-            ));
-        }
+        check_seconds(self.seconds)?;
         if self.seed > MAX_SEED {
             return bad(format!(
                 "seed {} is too large: at most 2^53 - 1 = {MAX_SEED}",

@@ -3,6 +3,7 @@
 
 use std::path::PathBuf;
 
+use vsr::experiment::config::{check_seconds, MAX_SECONDS};
 use vsr::experiment::{ablate, ABLATION_TERRAIN};
 use vsr::{Error, Result};
 
@@ -31,10 +32,10 @@ pub struct Args {
 
 /// Runs the command.
 pub fn run(args: Args) -> Result<()> {
-    crate::validate::check_seconds(args.seconds)?;
-    if args.last_second > 3600 {
+    check_seconds(args.seconds)?;
+    if f64::from(args.last_second) > MAX_SECONDS {
         return Err(Error::Input(format!(
-            "--last-second must be at most 3600, got {}",
+            "--last-second must be at most {MAX_SECONDS}, got {}",
             args.last_second
         )));
     }

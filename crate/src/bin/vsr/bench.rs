@@ -6,6 +6,8 @@ use std::time::Instant;
 use vsr::experiment::{steps_for, GaitEpisode, PhaseGait};
 use vsr::simulation::{Shape, Terrain};
 
+mod evolution;
+
 /// Arguments of `vsr bench`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -55,10 +57,7 @@ pub fn run(args: Args) -> vsr::Result<()> {
         }));
     }
     let evolution = match args.evolution {
-        true => Some(crate::bench_evolution::measure(
-            args.population,
-            args.repeats.min(3),
-        )?),
+        true => Some(evolution::measure(args.population, args.repeats.min(3))?),
         false => None,
     };
     match (args.json, evolution) {
@@ -71,7 +70,7 @@ pub fn run(args: Args) -> vsr::Result<()> {
             print_rows(&args, rows);
             if let Some(e) = evolution {
                 println!();
-                crate::bench_evolution::print(&e);
+                evolution::print(&e);
             }
         }
     }

@@ -36,7 +36,7 @@ enum Command {
     #[command(subcommand)]
     Campaign(crate::campaign::Command),
     /// Statistics (Mann-Whitney U) and SVG figures of a campaign's results so far.
-    Report(crate::report::Args),
+    Report(crate::campaign::report::Args),
 }
 
 /// Parses arguments, runs the command and returns the process exit code.
@@ -60,7 +60,7 @@ pub fn run() -> i32 {
         Command::Finetune(args) => crate::finetune::run(args),
         Command::Ablate(args) => crate::ablate::run(args),
         Command::Campaign(command) => crate::campaign::run(command),
-        Command::Report(args) => crate::report::run(args),
+        Command::Report(args) => crate::campaign::report::run(args),
     };
     match result {
         Ok(()) => 0,

@@ -4,6 +4,7 @@
 
 use std::path::PathBuf;
 
+use vsr::experiment::config::check_seconds;
 use vsr::experiment::evaluate::controller_for;
 use vsr::experiment::{steps_for, Episode, Policy};
 use vsr::simulation::{Shape, Terrain};
@@ -36,7 +37,7 @@ pub struct Args {
 
 /// Runs the command.
 pub fn run(args: Args) -> vsr::Result<()> {
-    crate::validate::check_seconds(args.seconds)?;
+    check_seconds(args.seconds)?;
     let best = crate::runfile::load(&args.genome)?.best;
     let shape = match &args.shape {
         Some(s) => Shape::parse(s)?,

@@ -6,7 +6,8 @@ use std::path::PathBuf;
 use vsr::experiment::{source_of, EvolutionConfig};
 use vsr::simulation::Shape;
 
-use crate::evolve::{execute, RunOptions};
+use crate::args::RunOptions;
+use crate::evolution::execute;
 
 /// Arguments of `vsr finetune`.
 #[derive(clap::Args, Debug)]

@@ -1,29 +1,31 @@
-//! `vsr`: the command-line face of VSR Playground. Each subcommand lives in its own
-//! file; all of them are thin shells over the library. Bad arguments exit with code 2
-//! and a message on stderr.
+//! `vsr`: the command-line face of VSR Playground, thin shells over the library. Bad
+//! arguments exit with code 2 and a message on stderr.
+//!
+//! Layout: `cli.rs` parses and dispatches; one file per subcommand (`simulate`, `terrain`,
+//! `bench` with `bench/evolution.rs`, `params`, `evolve`, `evaluate`, `validate`, `finetune`,
+//! `ablate`); the campaign subcommands and `vsr report` in `campaign/`; what several share in
+//! one place each: `args.rs` (argument types), `evolution.rs` (running an evolution),
+//! `checkpoint.rs`, `trajectory.rs`, `runfile.rs` and `atomic.rs` (files). Subcommands never
+//! import each other.
 
 #[cfg(not(target_arch = "wasm32"))]
 mod ablate;
+#[cfg(not(target_arch = "wasm32"))]
+mod args;
 #[cfg(not(target_arch = "wasm32"))]
 mod atomic;
 #[cfg(not(target_arch = "wasm32"))]
 mod bench;
 #[cfg(not(target_arch = "wasm32"))]
-mod bench_evolution;
-#[cfg(not(target_arch = "wasm32"))]
 mod campaign;
-#[cfg(not(target_arch = "wasm32"))]
-mod campaign_export;
-#[cfg(not(target_arch = "wasm32"))]
-mod campaign_run;
 #[cfg(not(target_arch = "wasm32"))]
 mod checkpoint;
 #[cfg(not(target_arch = "wasm32"))]
 mod cli;
 #[cfg(not(target_arch = "wasm32"))]
-mod ensemble;
-#[cfg(not(target_arch = "wasm32"))]
 mod evaluate;
+#[cfg(not(target_arch = "wasm32"))]
+mod evolution;
 #[cfg(not(target_arch = "wasm32"))]
 mod evolve;
 #[cfg(not(target_arch = "wasm32"))]
@@ -31,13 +33,9 @@ mod finetune;
 #[cfg(not(target_arch = "wasm32"))]
 mod params;
 #[cfg(not(target_arch = "wasm32"))]
-mod report;
-#[cfg(not(target_arch = "wasm32"))]
 mod runfile;
 #[cfg(not(target_arch = "wasm32"))]
 mod simulate;
-#[cfg(not(target_arch = "wasm32"))]
-mod svg;
 #[cfg(not(target_arch = "wasm32"))]
 mod terrain;
 #[cfg(not(target_arch = "wasm32"))]

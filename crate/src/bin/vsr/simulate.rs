@@ -1,15 +1,18 @@
 //! `vsr simulate`: one episode of a shape on a terrain under a phase gait, optionally
 //! started off the reference placement, recorded step by step, or run as an ensemble
-//! of shifted starts (`ensemble.rs`).
+//! of shifted starts (`simulate/ensemble.rs`).
 
 use std::path::PathBuf;
 use std::time::Instant;
 
+use vsr::experiment::config::check_seconds;
 use vsr::experiment::{check_start_offset, steps_for, Episode, PhaseGait, Policy};
 use vsr::simulation::{Shape, Terrain};
 
-use crate::ensemble::{self, Setup};
 use crate::trajectory::Writer;
+use ensemble::Setup;
+
+mod ensemble;
 
 /// Arguments of `vsr simulate`.
 #[derive(clap::Args, Debug)]
@@ -55,7 +58,7 @@ pub struct Args {
 
 /// Runs the command.
 pub fn run(args: Args) -> vsr::Result<()> {
-    crate::validate::check_seconds(args.seconds)?;
+    check_seconds(args.seconds)?;
     let shape = Shape::parse(&args.shape)?;
     let terrain = Terrain::parse(&args.terrain)?;
     let gait = PhaseGait::parse(&args.gait)?;

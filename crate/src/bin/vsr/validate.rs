@@ -4,6 +4,7 @@
 
 use std::path::PathBuf;
 
+use vsr::experiment::config::check_seconds;
 use vsr::experiment::{validate_on, ValidationSet};
 use vsr::{Error, Result};
 
@@ -26,16 +27,6 @@ pub struct Args {
     /// Also write that JSON object to this file (atomically).
     #[arg(long)]
     out: Option<PathBuf>,
-}
-
-/// Rejects episode lengths outside (0, 3600] s.
-pub fn check_seconds(seconds: f64) -> Result<()> {
-    if seconds > 0.0 && seconds <= 3600.0 {
-        return Ok(());
-    }
-    Err(Error::Input(format!(
-        "--seconds must be in (0, 3600], got {seconds}"
-    )))
 }
 
 /// Runs the command.

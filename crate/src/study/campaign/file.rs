@@ -31,7 +31,7 @@
 
 use crate::controllers::ControllerKind;
 use crate::error::{Error, Result};
-use crate::experiment::config::{PAPER_SECONDS, PAPER_TERRAIN};
+use crate::experiment::config::{check_seconds, PAPER_SECONDS, PAPER_TERRAIN};
 use crate::experiment::{TrainingTerrain, ValidationSet};
 use crate::genetics::GaConfig;
 use crate::simulation::Shape;
@@ -166,12 +166,7 @@ impl Campaign {
         if self.seeds.is_empty() {
             return bad("the campaign's seeds are empty: give at least one".into());
         }
-        if !(self.seconds > 0.0 && self.seconds <= 3600.0) {
-            return bad(format!(
-                "seconds must be in (0, 3600], got {}",
-                self.seconds
-            ));
-        }
+        check_seconds(self.seconds)?;
         TrainingTerrain::parse(&self.terrain)?;
         for g in &self.evolve {
             let shapes = g.shapes.iter().map(|s| Shape::parse(s).map(|_| ()));

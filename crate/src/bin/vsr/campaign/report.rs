@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use vsr::study::report::report;
 use vsr::{Error, Result};
 
-use crate::campaign::{load_results, Target};
+use super::target::{load_results, Target};
 
 /// Arguments of `vsr report`.
 #[derive(clap::Args, Debug)]
@@ -29,7 +29,7 @@ pub fn run(args: Args) -> Result<()> {
         .map_err(|e| Error::Io(format!("cannot create {}: {e}", dir.display())))?;
     let built = report(&results);
     for figure in &built.figures {
-        let svg = crate::svg::draw(figure)?;
+        let svg = super::svg::draw(figure)?;
         crate::atomic::write(&dir.join(&figure.file), svg.as_bytes(), "figure")?;
     }
     let path = dir.join("report.md");

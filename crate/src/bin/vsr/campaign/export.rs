@@ -12,7 +12,8 @@ use vsr::study::campaign::export::{choose, entry, file_name, Entry, Manifest};
 use vsr::study::campaign::plan;
 use vsr::{Error, Result};
 
-use crate::campaign::{load_results, Target};
+use super::command;
+use super::target::{load_results, Target};
 
 /// Arguments of `vsr campaign export`.
 #[derive(clap::Args, Debug)]
@@ -65,7 +66,7 @@ pub fn run(args: Args) -> Result<()> {
         };
         let run_path = choice.spec.run_path(&out);
         let job = jobs.iter().find(|j| j.out == run_path);
-        let command = job.map(|job| crate::campaign::command::line(job, "vsr", 1));
+        let command = job.map(|job| command::line(job, "vsr", 1));
         let entry = command.and_then(|c| entry(&choice, &c, &campaign_file, &version));
         let Some(entry) = entry else {
             eprintln!(

@@ -1,16 +1,13 @@
-//! `vsr campaign plan|run|merge|export FILE`: a campaign file's job list, run on local cores, and its
-//! run files collected into one CSV. Outputs go under the campaign's `output` folder,
-//! resolved relative to the campaign file, or under `--out-dir`.
+//! What every campaign subcommand shares: the campaign file and its output folder
+//! ([`Target`]), a part of its plan (`--only`), the folders its jobs write to, and the
+//! outputs that exist so far ([`load_results`]).
 
 use std::fs;
-use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use vsr::experiment::{RunFile, ValidationSet};
-use vsr::study::campaign::{merge, plan, Campaign, Job, Results};
+use vsr::study::campaign::{plan, Campaign, Job, Results};
 use vsr::{Error, Result};
-
-pub mod command;
 
 /// Where a campaign's outputs go.
 #[derive(clap::Args, Debug, Clone)]
@@ -45,42 +42,6 @@ impl Target {
     }
 }
 
-/// `vsr campaign` subcommands.
-#[derive(clap::Subcommand, Debug)]
-pub enum Command {
-    /// Print the job list: one complete vsr command per line, in dependency order.
-    Plan(PlanArgs),
-    /// Run the jobs on local cores, skipping those whose output exists (resumable).
-    Run(crate::campaign_run::Args),
-    /// Collect the run files and validations into one CSV (OUT/campaign.csv by default).
-    Merge(MergeArgs),
-    /// Copy the best module of each shape, controller and source into the pretrained folder.
-    Export(crate::campaign_export::Args),
-}
-
-/// Arguments of `vsr campaign plan`.
-#[derive(clap::Args, Debug)]
-pub struct PlanArgs {
-    #[command(flatten)]
-    target: Target,
-    /// Only the jobs of this stage: 1 runs that need no other run; a fine-tuning run or a run
-    /// continuing a shorter one comes a stage after the run it needs, assessments a stage
-    /// after their run (the paper's study: 1 to 3; past the last stage nothing is printed).
-    #[arg(long)]
-    stage: Option<u32>,
-    /// Only the jobs whose output does not exist yet.
-    #[arg(long)]
-    pending: bool,
-    #[command(flatten)]
-    only: Only,
-    /// --threads of each evolution job.
-    #[arg(long, default_value_t = 1)]
-    threads: usize,
-    /// The program name printed at the start of each line.
-    #[arg(long, default_value = "vsr")]
-    program: String,
-}
-
 /// A part of a campaign: the jobs whose output names contain a text, and what they need.
 #[derive(clap::Args, Debug, Clone)]
 pub struct Only {
@@ -103,63 +64,6 @@ impl Only {
         }
         Ok(jobs)
     }
-}
-
-/// Arguments of `vsr campaign merge`.
-#[derive(clap::Args, Debug)]
-pub struct MergeArgs {
-    #[command(flatten)]
-    target: Target,
-    /// The CSV file (default: OUT/campaign.csv).
-    #[arg(long)]
-    csv: Option<PathBuf>,
-}
-
-/// Runs a `vsr campaign` subcommand.
-pub fn run(command: Command) -> Result<()> {
-    match command {
-        Command::Plan(args) => print_plan(args),
-        Command::Run(args) => crate::campaign_run::run(args),
-        Command::Merge(args) => write_merge(args),
-        Command::Export(args) => crate::campaign_export::run(args),
-    }
-}
-
-fn print_plan(args: PlanArgs) -> Result<()> {
-    if args.threads == 0 {
-        return Err(Error::Input("--threads must be at least 1".into()));
-    }
-    let (campaign, out) = args.target.load()?;
-    let mut stdout = std::io::stdout().lock();
-    for job in args.only.plan(&campaign, &out)? {
-        let stage_ok = args.stage.map_or(true, |s| s == job.stage);
-        if stage_ok && !(args.pending && job.out.exists()) {
-            let line = command::line(&job, &args.program, args.threads);
-            match writeln!(stdout, "{line}") {
-                Ok(()) => {}
-                // The reader stopped (`| head`): nothing more to say.
-                Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => return Ok(()),
-                Err(e) => return Err(Error::Io(format!("cannot print the plan: {e}"))),
-            }
-        }
-    }
-    Ok(())
-}
-
-fn write_merge(args: MergeArgs) -> Result<()> {
-    let (campaign, out) = args.target.load()?;
-    let results = load_results(campaign, &out)?;
-    let path = args.csv.unwrap_or_else(|| out.join("campaign.csv"));
-    crate::atomic::write(&path, merge::csv(&results).as_bytes(), "table")?;
-    let found = results.data.iter().filter(|(_, d)| d.run.is_some()).count();
-    println!(
-        "{} runs of {} in {}; {} planned outputs missing",
-        found,
-        results.data.len(),
-        path.display(),
-        results.missing.len()
-    );
-    Ok(())
 }
 
 /// The folders of a campaign's outputs (see `plan`).

@@ -19,7 +19,8 @@ use indicatif::{ProgressBar, ProgressStyle};
 use vsr::study::campaign::Job;
 use vsr::{Error, Result};
 
-use crate::campaign::{create_folders, Only, Target};
+use super::command;
+use super::target::{create_folders, Only, Target};
 
 /// Arguments of `vsr campaign run`.
 #[derive(clap::Args, Debug)]
@@ -189,7 +190,7 @@ impl Runner<'_> {
             return false;
         };
         let status = Command::new(self.program)
-            .args(crate::campaign::command::args(job, self.threads))
+            .args(command::args(job, self.threads))
             .stdin(Stdio::null())
             .stdout(log)
             .stderr(err)

@@ -21,7 +21,7 @@ use vsr::simulation::sensors::Sensors;
 use vsr::simulation::{Shape, Terrain};
 use vsr::Result;
 
-use crate::evolve::thread_pool;
+use crate::evolution::thread_pool;
 
 /// Terrains used for the controller-cost comparison.
 const COST_TERRAINS: u32 = 4;

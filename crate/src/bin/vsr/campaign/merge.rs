@@ -1,0 +1,35 @@
+//! `vsr campaign merge FILE`: the run files and assessments that exist, as one CSV.
+
+use std::path::PathBuf;
+
+use vsr::study::campaign::merge;
+use vsr::Result;
+
+use super::target::{load_results, Target};
+
+/// Arguments of `vsr campaign merge`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    target: Target,
+    /// The CSV file (default: OUT/campaign.csv).
+    #[arg(long)]
+    csv: Option<PathBuf>,
+}
+
+/// Runs the command.
+pub fn run(args: Args) -> Result<()> {
+    let (campaign, out) = args.target.load()?;
+    let results = load_results(campaign, &out)?;
+    let path = args.csv.unwrap_or_else(|| out.join("campaign.csv"));
+    crate::atomic::write(&path, merge::csv(&results).as_bytes(), "table")?;
+    let found = results.data.iter().filter(|(_, d)| d.run.is_some()).count();
+    println!(
+        "{} runs of {} in {}; {} planned outputs missing",
+        found,
+        results.data.len(),
+        path.display(),
+        results.missing.len()
+    );
+    Ok(())
+}
