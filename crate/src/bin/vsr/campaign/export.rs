@@ -43,7 +43,10 @@ pub fn run(args: Args) -> Result<()> {
     let campaign_file = args.target.file.display().to_string();
     fs::create_dir_all(&args.to)
         .map_err(|e| Error::Io(format!("cannot create {}: {e}", args.to.display())))?;
-    let previous = previous_entries(&args.to);
+    let Previous {
+        listed,
+        entries: previous,
+    } = previous_manifest(&args.to)?;
     let mut modules = Vec::new();
     let mut pending = Vec::new();
     for (category, choice) in choose(&results, &args.controllers) {
@@ -90,7 +93,7 @@ pub fn run(args: Args) -> Result<()> {
         .filter(|e| !args.controllers.contains(&e.controller));
     modules.extend(others.filter(|e| args.to.join(&e.file).exists()).cloned());
     let manifest = Manifest::new(modules);
-    remove_unlisted(&args.to, &manifest)?;
+    remove_unlisted(&args.to, &listed, &manifest)?;
     let json = serde_json::to_string_pretty(&manifest)
         .map_err(|e| Error::Io(format!("cannot encode the manifest: {e}")))?;
     crate::atomic::write(
@@ -108,14 +111,46 @@ pub fn run(args: Args) -> Result<()> {
     Ok(())
 }
 
-/// The entries of the folder's previous manifest in this format (none if there is none;
-/// a manifest that cannot be read as this format is reported and its entries not kept).
-fn previous_entries(dir: &Path) -> Vec<Entry> {
+/// The folder's previous manifest: the files it lists and its entries in this format.
+struct Previous {
+    listed: Vec<String>,
+    entries: Vec<Entry>,
+}
+
+/// The folder's previous manifest (nothing if there is none). One that is not JSON with a
+/// list of modules, each naming its file, is an error that names it: exporting over it
+/// could lose the modules it lists. One of an older format is reported and only its file
+/// list is used (its modules are not kept unless this campaign chooses them again).
+fn previous_manifest(dir: &Path) -> Result<Previous> {
     let path = dir.join("manifest.json");
-    let Ok(text) = fs::read_to_string(&path) else {
-        return Vec::new();
+    if !path.exists() {
+        return Ok(Previous {
+            listed: Vec::new(),
+            entries: Vec::new(),
+        });
+    }
+    let bad = |why: String| {
+        Error::Input(format!(
+            "{} {why}; fix it or move it away, then export again",
+            path.display()
+        ))
     };
-    match serde_json::from_str::<Manifest>(&text) {
+    let text = fs::read_to_string(&path)
+        .map_err(|e| Error::Io(format!("cannot read {}: {e}", path.display())))?;
+    let value: serde_json::Value =
+        serde_json::from_str(&text).map_err(|e| bad(format!("is not JSON ({e})")))?;
+    let modules = value["modules"].as_array();
+    let modules = modules.ok_or_else(|| bad("has no list of modules".into()))?;
+    let listed = modules
+        .iter()
+        .enumerate()
+        .map(|(i, m)| {
+            let file = m["file"].as_str();
+            file.map(str::to_string)
+                .ok_or_else(|| bad(format!("names no file for module {}", i + 1)))
+        })
+        .collect::<Result<Vec<String>>>()?;
+    let entries = match serde_json::from_value::<Manifest>(value) {
         Ok(manifest) => manifest.modules,
         Err(e) => {
             eprintln!(
@@ -125,20 +160,27 @@ fn previous_entries(dir: &Path) -> Vec<Entry> {
             );
             Vec::new()
         }
-    }
+    };
+    Ok(Previous { listed, entries })
 }
 
-/// Removes the module files the folder's previous manifest listed and this one does not.
-fn remove_unlisted(dir: &Path, manifest: &Manifest) -> Result<()> {
-    let Ok(text) = fs::read_to_string(dir.join("manifest.json")) else {
-        return Ok(()); // no previous manifest
-    };
-    let previous: serde_json::Value = serde_json::from_str(&text).unwrap_or_default();
-    let listed = previous["modules"].as_array().cloned().unwrap_or_default();
-    for file in listed.iter().filter_map(|m| m["file"].as_str()) {
-        let kept = manifest.modules.iter().any(|m| m.file == file);
+/// Removes the module files the folder's previous manifest listed and `manifest` does not;
+/// a listed name that is not a plain file name of the folder is refused, never removed.
+fn remove_unlisted(dir: &Path, listed: &[String], manifest: &Manifest) -> Result<()> {
+    for file in listed {
+        if manifest.modules.iter().any(|m| &m.file == file) {
+            continue;
+        }
+        if !is_plain_file_name(file) {
+            eprintln!(
+                "vsr: refused to remove {file:?}, listed by the previous manifest: not a file \
+                 name in {}",
+                dir.display()
+            );
+            continue;
+        }
         let path = dir.join(file);
-        if !kept && is_plain_file_name(file) && path.exists() {
+        if path.exists() {
             fs::remove_file(&path)
                 .map_err(|e| Error::Io(format!("cannot remove {}: {e}", path.display())))?;
             println!("removed {file} (no longer chosen)");
@@ -147,10 +189,12 @@ fn remove_unlisted(dir: &Path, manifest: &Manifest) -> Result<()> {
     Ok(())
 }
 
-/// Whether `name` names a file inside the folder (no separators, not `.` or `..`): the
+/// Whether `name` names a file inside the folder (no separators, no `..`, not `.`): the
 /// previous manifest is not trusted to point elsewhere.
 fn is_plain_file_name(name: &str) -> bool {
-    Path::new(name).file_name().and_then(|n| n.to_str()) == Some(name) && !name.contains('\\')
+    Path::new(name).file_name().and_then(|n| n.to_str()) == Some(name)
+        && !name.contains('\\')
+        && !name.contains("..")
 }
 
 /// The version of the code exporting (and replaying) the modules: the crate version and the
@@ -181,4 +225,26 @@ fn readme(manifest: &Manifest, pending: &[String], campaign: &str, dir: &Path) -
         selection = manifest.selection,
         table = manifest.table()
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn only_plain_file_names_of_the_folder_are_removed() {
+        assert!(is_plain_file_name("biped-4x3-attention.json"));
+        for name in [
+            "..",
+            ".",
+            "../x.json",
+            "a/b.json",
+            "/etc/x",
+            "a\\b.json",
+            "x..json",
+            "",
+        ] {
+            assert!(!is_plain_file_name(name), "{name:?}");
+        }
+    }
 }
