@@ -6,7 +6,8 @@
 //! a killed job leaves no partial file.
 
 use std::fs;
-use std::path::Path;
+use std::path::{Path, PathBuf};
+use std::process::Command;
 
 mod cli_util;
 use cli_util::{files_in, smoke, text, vsr};
