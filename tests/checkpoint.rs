@@ -23,8 +23,8 @@ fn step(evolution: &mut Evolution) -> bool {
     if jobs.is_empty() {
         return false;
     }
-    let fitness: Vec<f64> = jobs.iter().map(Job::fitness).collect();
-    evolution.tell(&fitness, 0.0).unwrap();
+    let fitness: vsr::Result<Vec<f64>> = jobs.iter().map(Job::fitness).collect();
+    evolution.tell(&fitness.unwrap(), 0.0).unwrap();
     true
 }
 

@@ -245,8 +245,8 @@ fn fine_tuning_keeps_the_attention_block_bit_identical() {
             );
             downstream_seen.insert(job.genome[32].to_bits());
         }
-        let fitness: Vec<f64> = jobs.iter().map(Job::fitness).collect();
-        evolution.tell(&fitness, 0.0).unwrap();
+        let fitness: vsr::Result<Vec<f64>> = jobs.iter().map(Job::fitness).collect();
+        evolution.tell(&fitness.unwrap(), 0.0).unwrap();
     }
     assert!(
         downstream_seen.len() > 50,

@@ -1,6 +1,7 @@
 //! The controller families a user can pick by name, their parameter-count formulas, and
 //! the factory that builds one for a topology.
 
+use super::params::check_genes;
 use super::{Attention, Controller, Mlp, MlpComm, SlowAttention, Topology};
 use crate::{Error, Result};
 use serde::{Deserialize, Serialize};
@@ -61,21 +62,8 @@ impl ControllerKind {
     /// The one genome check: `genome` (named `what` in messages, e.g. "the best genome")
     /// must have exactly this family's length for `n_voxels` voxels, and only finite genes.
     pub fn check_genome(self, what: &str, n_voxels: usize, genome: &[f32]) -> Result<()> {
-        let expected = self.param_count(n_voxels);
-        if genome.len() != expected {
-            return Err(Error::Input(format!(
-                "{what} has {} genes, but the {self} controller of a {n_voxels}-voxel robot \
-                 has {expected}",
-                genome.len()
-            )));
-        }
-        match genome.iter().position(|g| !g.is_finite()) {
-            Some(i) => Err(Error::Input(format!(
-                "gene {i} of {what} is {}, genes must be finite numbers",
-                genome[i]
-            ))),
-            None => Ok(()),
-        }
+        let whose = format!("the {self} controller of a {n_voxels}-voxel robot");
+        check_genes(what, &whose, self.param_count(n_voxels), genome)
     }
 }
 

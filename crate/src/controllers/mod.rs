@@ -100,23 +100,6 @@ pub fn check_io(n_voxels: usize, sensors: &[f32], out: &[f32]) -> Result<()> {
     Ok(())
 }
 
-/// Checks a genome before `set_params` accepts it: right length, every value finite.
-pub(crate) fn validate_params(expected: usize, p: &[f32]) -> Result<()> {
-    if p.len() != expected {
-        return Err(Error::Input(format!(
-            "expected {expected} controller parameters, got {}",
-            p.len()
-        )));
-    }
-    match p.iter().position(|v| !v.is_finite()) {
-        Some(i) => Err(Error::Input(format!(
-            "controller parameter {i} is {}, parameters must be finite",
-            p[i]
-        ))),
-        None => Ok(()),
-    }
-}
-
 /// True when the lengths fit; otherwise zeroes `out` so a bad call actuates nothing.
 pub(crate) fn io_fits(n_voxels: usize, sensors: &[f32], out: &mut [f32]) -> bool {
     let fits = check_io(n_voxels, sensors, out).is_ok();
@@ -129,17 +112,6 @@ pub(crate) fn io_fits(n_voxels: usize, sensors: &[f32], out: &mut [f32]) -> bool
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn validate_params_names_the_problem() {
-        let err = validate_params(3, &[0.0, 1.0]).unwrap_err().to_string();
-        assert!(err.contains("expected 3") && err.contains("got 2"), "{err}");
-        let err = validate_params(2, &[0.0, f32::INFINITY])
-            .unwrap_err()
-            .to_string();
-        assert!(err.contains("parameter 1"), "{err}");
-        assert!(validate_params(2, &[0.0, -1.0]).is_ok());
-    }
 
     #[test]
     fn bad_io_lengths_zero_the_output() {

@@ -164,6 +164,8 @@ impl EvolutionConfig {
     pub fn validate(&self) -> Result<()> {
         let bad = |m: String| Err(Error::Input(m));
         check_seconds(self.seconds)?;
+        // The ground of the first evaluation: a bad terrain fails here, before generation 0.
+        Terrain::parse(&self.terrain.name_for(0))?;
         if self.seed > MAX_SEED {
             return bad(format!(
                 "seed {} is too large: at most 2^53 - 1 = {MAX_SEED}",

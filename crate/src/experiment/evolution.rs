@@ -10,7 +10,7 @@
 //! `evaluation_seed(run seed, 0, 0, Genetics)`. Hence the result never depends on the number
 //! of threads or workers. The core has no clock: wall times come from the caller.
 
-use super::config::EvolutionConfig;
+use super::config::{check_seconds, EvolutionConfig};
 use super::evaluate::fitness;
 use super::finetune::initial_population;
 use super::run::{Best, GenerationRecord, RunFile, Timing};
@@ -26,14 +26,19 @@ fn ga_seed(config: &EvolutionConfig) -> u64 {
     evaluation_seed(config.seed, 0, 0, Purpose::Genetics)
 }
 
-/// One evaluation to perform, self-contained.
+/// One evaluation to perform, self-contained. Serialized (for the page's workers) as
+/// `{generation, index, shape (rows), controller, terrain, noiseSeed (decimal string: a JS
+/// number cannot hold every 64-bit seed), seconds}`, without the genome, which travels
+/// separately as f32 bits.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "camelCase")]
 pub struct Job {
     /// Generation of the batch.
     pub generation: u32,
     /// Index in the batch (parents first, then offspring).
     pub index: u32,
     /// The genome to evaluate.
+    #[serde(skip)]
     pub genome: Vec<f32>,
     /// The robot's shape.
     pub shape: Shape,
@@ -42,25 +47,48 @@ pub struct Job {
     /// The terrain name, e.g. `hilly-1-10-4821`.
     pub terrain: String,
     /// Seed of the sensor-noise stream.
+    #[serde(with = "decimal")]
     pub noise_seed: u64,
     /// Simulated seconds.
     pub seconds: f64,
 }
 
 impl Job {
-    /// The fitness of this job: the episode's velocity, NaN (the worst) if it exploded.
-    pub fn fitness(&self) -> f64 {
-        match Terrain::parse(&self.terrain) {
-            Ok(terrain) => fitness(
-                &self.shape,
-                terrain,
-                self.controller,
-                &self.genome,
-                Some(self.noise_seed),
-                self.seconds,
-            ),
-            Err(_) => f64::NAN,
-        }
+    /// The fitness of this job: the episode's velocity, NaN (the worst) if it exploded. A
+    /// terrain that does not parse, a genome that does not fit or a bad episode length is an
+    /// error, never a fitness.
+    pub fn fitness(&self) -> Result<f64> {
+        let terrain = Terrain::parse(&self.terrain)?;
+        check_seconds(self.seconds)?;
+        let n_voxels = self.shape.voxel_count();
+        self.controller
+            .check_genome("the job's genome", n_voxels, &self.genome)?;
+        Ok(fitness(
+            &self.shape,
+            terrain,
+            self.controller,
+            &self.genome,
+            Some(self.noise_seed),
+            self.seconds,
+        ))
+    }
+}
+
+/// A `u64` as a decimal string (a JS number holds integers exactly only up to 2^53).
+mod decimal {
+    use serde::{de::Error, Deserialize, Deserializer, Serializer};
+
+    pub fn serialize<S: Serializer>(value: &u64, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(&value.to_string())
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<u64, D::Error> {
+        let text = String::deserialize(d)?;
+        text.trim().parse().map_err(|_| {
+            D::Error::custom(format!(
+                "noise seed {text:?} is not an unsigned 64-bit integer"
+            ))
+        })
     }
 }
 
@@ -150,13 +178,14 @@ impl Evolution {
         Ok(record)
     }
 
-    /// Runs to the end of the budget: `evaluate_batch` returns one fitness per job, in order;
+    /// Runs to the end of the budget: `evaluate_batch` returns one fitness per job, in order
+    /// (or the error of a job that cannot be evaluated, which stops the run);
     /// `on_generation` sees the run after each generation (its record is the last of
     /// `history()`; a caller may checkpoint it there) and may stop the run with an error;
     /// `clock` gives the wall seconds since the start (return 0.0 where there is no clock).
     pub fn run(
         &mut self,
-        mut evaluate_batch: impl FnMut(&[Job]) -> Vec<f64>,
+        mut evaluate_batch: impl FnMut(&[Job]) -> Result<Vec<f64>>,
         mut on_generation: impl FnMut(&Evolution) -> Result<()>,
         mut clock: impl FnMut() -> f64,
     ) -> Result<()> {
@@ -165,7 +194,7 @@ impl Evolution {
             if jobs.is_empty() {
                 return Ok(());
             }
-            let fitness = evaluate_batch(&jobs);
+            let fitness = evaluate_batch(&jobs)?;
             self.tell(&fitness, clock())?;
             on_generation(self)?;
         }

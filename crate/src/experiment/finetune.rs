@@ -12,9 +12,41 @@
 use super::config::{EvolutionConfig, SourceRun};
 use super::run::{Best, RunFile};
 use super::seeds::{evaluation_seed, Purpose};
-use crate::controllers::ATTENTION_PARAMS;
+use crate::controllers::{ControllerKind, ATTENTION_PARAMS};
+use crate::error::{Error, Result};
+use crate::genetics::GaConfig;
 use crate::random::rng_from;
+use crate::simulation::Shape;
 use rand::Rng;
+
+/// SPEC 10's transplant, as `vsr finetune --from RUN --shape SHAPE --seed SEED` starts it:
+/// the best individual of `run` put on `shape`, the first genome of that fine-tuning run
+/// ([`initial_population`]): its 32 attention genes kept, the downstream genes re-drawn for
+/// the new body (unchanged on its own body). An MLP or MLP-Comm module has no
+/// body-independent part: it keeps its own body and is refused on another.
+pub fn transplant(run: &RunFile, shape: Shape, seed: u64) -> Result<Vec<f32>> {
+    let source = source_of(run);
+    let attention = matches!(
+        source.controller,
+        ControllerKind::Attention | ControllerKind::SlowAttention
+    );
+    if !attention {
+        if source.shape == shape {
+            return Ok(source.genome);
+        }
+        return Err(Error::Input(format!(
+            "only attention modules transfer to another body: this {} controller's genes \
+             belong to the voxels of its own body ({}); open it with its own body, or evolve \
+             one for yours",
+            source.controller,
+            source.shape.to_rows()
+        )));
+    }
+    let budget = GaConfig::default().budget_evals;
+    let config = EvolutionConfig::finetune(source.clone(), shape, budget, seed);
+    config.validate()?;
+    Ok(initial_population(&config, &source).swap_remove(0))
+}
 
 /// The first member(s) of a fine-tuning run's population: the source individual, adapted
 /// to the new genome length (see the module doc). The configuration is already validated.

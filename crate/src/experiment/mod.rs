@@ -1,5 +1,6 @@
 //! The one place that composes genome -> controller -> world -> fitness: episodes, evaluation
-//! seeds, evolutionary runs and their run files, fine-tuning, validation and the ablation.
+//! seeds, evolutionary runs and their run files, fine-tuning (and the page's transplant),
+//! validation, the ablation, and the playground's defaults.
 
 pub mod ablation;
 pub mod checkpoint;
@@ -11,6 +12,7 @@ pub mod evolution;
 pub mod finetune;
 pub mod freeze;
 pub mod gait;
+pub mod playground;
 pub mod policy;
 pub mod run;
 pub mod seeds;
@@ -23,7 +25,7 @@ pub use config::{EvolutionConfig, SourceRun, TrainingTerrain};
 pub use ensemble::{check_start_offset, gait_ensemble, Ensemble, ENSEMBLE_SHIFT};
 pub use episode::{steps_for, topology, Episode, GaitEpisode, Outcome, Policy};
 pub use evolution::{Evolution, Job};
-pub use finetune::source_of;
+pub use finetune::{source_of, transplant};
 pub use freeze::freezable_policy;
 pub use gait::PhaseGait;
 pub use run::{Best, GenerationRecord, RunFile, Timing};

@@ -122,7 +122,8 @@ impl Best {
 
     /// Checks that the genome fits the controller and shape and that every gene is finite.
     pub fn validate(&self, what: &str) -> Result<()> {
-        check_genome(what, self.controller, &self.shape, &self.genome)
+        self.controller
+            .check_genome(what, self.shape.voxel_count(), &self.genome)
     }
 }
 
@@ -232,7 +233,7 @@ impl RunFile {
             ..
         }) = &self.config.source
         {
-            check_genome("the source genome", *controller, shape, genome)?;
+            controller.check_genome("the source genome", shape.voxel_count(), genome)?;
         }
         self.config.validate()
     }
@@ -258,11 +259,6 @@ fn check_header(value: &serde_json::Value) -> Result<()> {
             "the run file has no integer \"version\" field".to_string(),
         )),
     }
-}
-
-/// A genome must have the controller's length for the shape, and only finite genes.
-fn check_genome(what: &str, kind: ControllerKind, shape: &Shape, genome: &[f32]) -> Result<()> {
-    kind.check_genome(what, shape.voxel_count(), genome)
 }
 
 /// A serde_json message without its " at line L column C" tail, which means nothing to a

@@ -26,7 +26,7 @@ fn placement_offset(shape: &Shape, terrain: &Terrain, left: f64) -> f64 {
 }
 
 /// Seed of the sensor noise in episodes built from run files (as `vsr evaluate` defaults).
-pub const NOISE_SEED: u64 = 0;
+pub const NOISE_SEED: u64 = crate::experiment::playground::VIEW_NOISE_SEED;
 
 #[wasm_bindgen]
 impl Episode {

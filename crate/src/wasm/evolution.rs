@@ -8,7 +8,7 @@
 //! each job to any worker and calls `tell` with the fitness values in job order: the result
 //! never depends on which worker evaluated what.
 
-use serde::{Deserialize, Serialize};
+use serde::Deserialize;
 use wasm_bindgen::prelude::{wasm_bindgen, JsError, JsValue};
 
 use super::page::{seed_from, to_js};
@@ -16,21 +16,7 @@ use crate::controllers::ControllerKind;
 use crate::experiment::{
     source_of, Evolution as CoreEvolution, EvolutionConfig, Job, RunFile, Timing, TrainingTerrain,
 };
-use crate::simulation::{Shape, Terrain};
-
-/// One evaluation as `ask()` describes it and `evaluateJob` takes it (the genome travels
-/// separately, see the module doc).
-#[derive(Serialize, Deserialize)]
-#[serde(rename_all = "camelCase")]
-struct JobInfo {
-    generation: u32,
-    index: u32,
-    shape: String,
-    controller: String,
-    terrain: String,
-    noise_seed: String,
-    seconds: f64,
-}
+use crate::simulation::Shape;
 
 /// A run's settings as the page sends them: what `vsr evolve` / `vsr finetune` take as
 /// options (`--shape --controller --seed --seconds --terrain --population --evals`).
@@ -105,8 +91,7 @@ impl Evolution {
     /// Asking again before `tell` returns the same jobs.
     pub fn ask(&mut self) -> Result<JsValue, JsError> {
         self.pending = self.inner.next_batch();
-        let infos: Vec<JobInfo> = self.pending.iter().map(job_info).collect();
-        to_js(&infos)
+        to_js(&self.pending)
     }
     /// The pending jobs' genomes, flat: job i at `i * genomeLength`.
     pub fn genomes(&self) -> Vec<f32> {
@@ -175,51 +160,14 @@ impl Evolution {
     }
 }
 
-fn job_info(job: &Job) -> JobInfo {
-    JobInfo {
-        generation: job.generation,
-        index: job.index,
-        shape: job.shape.to_rows(),
-        controller: job.controller.to_string(),
-        terrain: job.terrain.clone(),
-        noise_seed: job.noise_seed.to_string(),
-        seconds: job.seconds,
-    }
-}
-
 /// Evaluates one job, as `ask()` described it, with its `genome`: the genome drives the
 /// job's shape with its controller on its terrain for its seconds, with sensor noise seeded
 /// by its `noiseSeed`. Returns the fitness (velocity, m/s), NaN when the episode exploded;
 /// bad input throws an `Error`.
 #[wasm_bindgen(js_name = evaluateJob)]
 pub fn evaluate_job(job: JsValue, genome: &[f32]) -> Result<f64, JsError> {
-    let job: JobInfo =
+    let mut job: Job =
         serde_wasm_bindgen::from_value(job).map_err(|e| JsError::new(&format!("bad job: {e}")))?;
-    let shape = Shape::parse(&job.shape)?;
-    let controller: ControllerKind = job.controller.parse()?;
-    let noise_seed: u64 = job.noise_seed.trim().parse().map_err(|_| {
-        JsError::new(&format!(
-            "noise seed {:?} is not an unsigned 64-bit integer",
-            job.noise_seed
-        ))
-    })?;
-    Terrain::parse(&job.terrain)?;
-    controller.check_genome("the job's genome", shape.voxel_count(), genome)?;
-    if !(job.seconds > 0.0 && job.seconds.is_finite()) {
-        return Err(JsError::new(&format!(
-            "episode seconds must be positive, got {}",
-            job.seconds
-        )));
-    }
-    let job = Job {
-        generation: job.generation,
-        index: job.index,
-        genome: genome.to_vec(),
-        shape,
-        controller,
-        terrain: job.terrain,
-        noise_seed,
-        seconds: job.seconds,
-    };
-    Ok(job.fitness())
+    job.genome = genome.to_vec();
+    Ok(job.fitness()?)
 }

@@ -1,129 +1,25 @@
 //! What the page's main thread asks the core without simulating: the defaults it shows, the
-//! check of a drawing (verdict, pieces, parameter counts), a module's description, and the
+//! check of a drawing (verdict, pieces, parameter counts), and the
 //! two genome operations of the playground: transplanting a module onto a drawn body
 //! (SPEC 10, the rule of `vsr finetune`) and following a walking robot's edits.
 
 use serde::Serialize;
 use wasm_bindgen::prelude::{wasm_bindgen, JsError, JsValue};
 
-use crate::controllers::{remap_genome, ControllerKind, ATTENTION_PARAMS};
-use crate::experiment::config::{PAPER_SECONDS, PAPER_TERRAIN};
-use crate::experiment::finetune::initial_population;
+use crate::controllers::{remap_genome, ControllerKind};
+use crate::experiment::playground::{self, PAGE_CONTROLLERS};
 use crate::experiment::seeds::{evaluation_seed, Purpose};
-use crate::experiment::{source_of, EvolutionConfig, RunFile, TrainingTerrain};
-use crate::genetics::GaConfig;
+use crate::experiment::{self, RunFile, TrainingTerrain};
 use crate::simulation::{Shape, Terrain};
 
-/// The drawing grid of the page's editor (cells).
-const GRID: Grid = Grid {
-    width: 20,
-    height: 10,
-};
-/// Presets the editor offers, by name (each parses with [`Shape::parse`]).
-const PRESETS: [&str; 5] = [
-    "biped-4x3",
-    "comb-7x2",
-    "biped-6x4",
-    "comb-14x2",
-    "worm-6x1",
-];
-/// Controllers the page evolves.
-const CONTROLLERS: [ControllerKind; 3] = [
-    ControllerKind::Attention,
-    ControllerKind::Mlp,
-    ControllerKind::MlpComm,
-];
-/// The page's quick run: progress within a minute or two on two cores.
-const QUICK: RunPreset = RunPreset {
-    population: 20,
-    seconds: 10.0,
-    budget: 2000,
-};
-/// The terrain the robot walks on in the viewer.
-const VIEW_TERRAIN: &str = "hilly-1-10-0";
-/// The phase gait that drives a body with no controller yet: the reference biped's best
-/// forward gait on flat ground (shared/reference/gaits-biped-flat.json).
-const GAIT: Gait = Gait {
-    frequency: 0.5,
-    phase: 1.5,
-};
-
-#[derive(Serialize, Clone, Copy)]
-struct Grid {
-    width: usize,
-    height: usize,
-}
-
-#[derive(Serialize, Clone, Copy)]
-struct RunPreset {
-    population: usize,
-    seconds: f64,
-    budget: u64,
-}
-
-#[derive(Serialize, Clone, Copy)]
-struct Gait {
-    frequency: f64,
-    phase: f64,
-}
-
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct Preset {
-    name: &'static str,
-    rows: String,
-}
-
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct Defaults {
-    grid: Grid,
-    presets: Vec<Preset>,
-    controllers: Vec<&'static str>,
-    quick: RunPreset,
-    paper: RunPreset,
-    training_terrain: &'static str,
-    view_terrain: &'static str,
-    gait: Gait,
-    max_seed: f64,
-    attention_genes: usize,
-    view_noise_seed: String,
-}
-
-/// The page's defaults, from the core: `{grid: {width, height}, presets: [{name, rows}],
-/// controllers, quick and paper: {population, seconds, budget}, trainingTerrain, viewTerrain,
-/// gait: {frequency, phase}, maxSeed, attentionGenes, viewNoiseSeed (the viewer's sensor
-/// noise seed, a decimal string, for measuring a brain as the viewer walks it)}`.
+/// The page's defaults, from the core (`experiment::playground`): `{grid: {width, height},
+/// presets: [{name, rows}], controllers, quick and paper: {population, seconds, budget},
+/// trainingTerrain, viewTerrain, gait: {frequency, phase}, maxSeed, attentionGenes,
+/// viewNoiseSeed (the viewer's sensor noise seed, a decimal string, for measuring a brain as
+/// the viewer walks it), physics: {timeStep, areaContracted, areaExpanded, cornerSide}}`.
 #[wasm_bindgen]
 pub fn defaults() -> Result<JsValue, JsError> {
-    let ga = GaConfig::default();
-    let presets = PRESETS
-        .iter()
-        .map(|&name| {
-            Ok(Preset {
-                name,
-                rows: Shape::parse(name)?.to_rows(),
-            })
-        })
-        .collect::<crate::Result<Vec<_>>>()?;
-    let defaults = Defaults {
-        grid: GRID,
-        presets,
-        controllers: CONTROLLERS.iter().map(|k| k.name()).collect(),
-        quick: QUICK,
-        paper: RunPreset {
-            population: ga.population,
-            seconds: PAPER_SECONDS,
-            budget: ga.budget_evals,
-        },
-        training_terrain: PAPER_TERRAIN,
-        view_terrain: VIEW_TERRAIN,
-        gait: GAIT,
-        max_seed: crate::experiment::config::MAX_SEED as f64,
-        attention_genes: ATTENTION_PARAMS,
-        view_noise_seed: super::controlled::NOISE_SEED.to_string(),
-    };
-    to_js(&defaults)
+    to_js(&playground::defaults()?)
 }
 
 #[derive(Serialize)]
@@ -157,7 +53,7 @@ pub fn check_shape(rows: &str) -> Result<JsValue, JsError> {
         message: verdict.err().unwrap_or_default(),
         voxels,
         pieces,
-        params: CONTROLLERS
+        params: PAGE_CONTROLLERS
             .iter()
             .map(|k| (k.name().to_string(), k.param_count(voxels)))
             .collect(),
@@ -165,37 +61,16 @@ pub fn check_shape(rows: &str) -> Result<JsValue, JsError> {
     to_js(&check)
 }
 
-/// SPEC 10's transplant, as `vsr finetune --seed SEED` starts it: the best individual of the
-/// attention run `run_file` put on the body `rows`; its 32 attention genes kept, the
-/// downstream genes re-drawn for the new body (unchanged when the body is its own). An MLP
-/// or MLP-Comm module has no body-independent part and is refused on another body.
+/// SPEC 10's transplant (`experiment::transplant`, how `vsr finetune --seed SEED` starts):
+/// the best individual of the run `run_file` put on the body `rows`.
 #[wasm_bindgen]
 pub fn transplant(run_file: &str, rows: &str, seed: f64) -> Result<Vec<f32>, JsError> {
     let run = RunFile::from_json(run_file)?;
-    let shape = Shape::parse(rows)?;
-    let source = source_of(&run);
-    if source.controller != ControllerKind::Attention
-        && source.controller != ControllerKind::SlowAttention
-    {
-        if source.shape == shape {
-            return Ok(source.genome);
-        }
-        return Err(JsError::new(&format!(
-            "only attention modules transfer to another body: this {} controller's genes \
-             belong to the voxels of its own body ({}); open it with its own body, or evolve \
-             one for yours",
-            source.controller,
-            source.shape.to_rows()
-        )));
-    }
-    let config = EvolutionConfig::finetune(
-        source.clone(),
-        shape,
-        GaConfig::default().budget_evals,
+    Ok(experiment::transplant(
+        &run,
+        Shape::parse(rows)?,
         seed_from(seed)?,
-    );
-    config.validate()?;
-    Ok(initial_population(&config, &source).swap_remove(0))
+    )?)
 }
 
 /// A walking robot's genome after an edit of its body from `from_rows` to `to_rows`, by grid

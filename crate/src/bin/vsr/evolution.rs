@@ -42,7 +42,7 @@ pub fn execute(mut config: EvolutionConfig, options: &RunOptions) -> Result<()> 
     let clock = || earlier + start.elapsed().as_secs_f64();
     let bar = progress_bar(evolution.planned_evaluations());
     bar.set_position(evolution.evaluations());
-    let evaluate = |jobs: &[Job]| -> Vec<f64> {
+    let evaluate = |jobs: &[Job]| -> Result<Vec<f64>> {
         let fitness = |job: &Job| {
             let f = job.fitness();
             bar.inc(1);

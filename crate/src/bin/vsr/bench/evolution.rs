@@ -14,7 +14,7 @@ use rayon::prelude::*;
 use serde_json::{json, Value};
 use vsr::controllers::{Controller, ControllerKind};
 use vsr::experiment::evaluate::controller_for;
-use vsr::experiment::{steps_for, Evolution, EvolutionConfig, GaitEpisode, PhaseGait};
+use vsr::experiment::{steps_for, Evolution, EvolutionConfig, GaitEpisode, Job, PhaseGait};
 use vsr::random::rng_from;
 use vsr::simulation::constants::ACTUATION_HOLD_STEPS;
 use vsr::simulation::sensors::Sensors;
@@ -41,7 +41,7 @@ fn time_evolution(
     let start = Instant::now();
     pool.install(|| {
         evolution.run(
-            |jobs| jobs.par_iter().map(|j| j.fitness()).collect(),
+            |jobs| jobs.par_iter().map(Job::fitness).collect(),
             |_| Ok(()),
             || 0.0,
         )
