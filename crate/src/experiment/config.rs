@@ -103,10 +103,10 @@ pub struct SourceRun {
     /// The source run's evaluation budget.
     pub budget_evals: u64,
     /// The source best's fitness in its own run (m/s).
-    #[serde(with = "super::run::finite_or_null")]
+    #[serde(with = "super::json::finite_or_null")]
     pub fitness: f64,
     /// The source best's genome; its first 32 genes are frozen in the new run.
-    #[serde(deserialize_with = "super::run::finite_genes")]
+    #[serde(deserialize_with = "super::json::finite_genes")]
     pub genome: Vec<f32>,
 }
 

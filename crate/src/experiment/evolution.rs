@@ -47,7 +47,7 @@ pub struct Job {
     /// The terrain name, e.g. `hilly-1-10-4821`.
     pub terrain: String,
     /// Seed of the sensor-noise stream.
-    #[serde(with = "decimal")]
+    #[serde(with = "super::json::decimal")]
     pub noise_seed: u64,
     /// Simulated seconds.
     pub seconds: f64,
@@ -71,24 +71,6 @@ impl Job {
             Some(self.noise_seed),
             self.seconds,
         ))
-    }
-}
-
-/// A `u64` as a decimal string (a JS number holds integers exactly only up to 2^53).
-mod decimal {
-    use serde::{de::Error, Deserialize, Deserializer, Serializer};
-
-    pub fn serialize<S: Serializer>(value: &u64, s: S) -> Result<S::Ok, S::Error> {
-        s.serialize_str(&value.to_string())
-    }
-
-    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<u64, D::Error> {
-        let text = String::deserialize(d)?;
-        text.trim().parse().map_err(|_| {
-            D::Error::custom(format!(
-                "noise seed {text:?} is not an unsigned 64-bit integer"
-            ))
-        })
     }
 }
 

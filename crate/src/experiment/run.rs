@@ -17,7 +17,7 @@ use crate::controllers::{split_slow_genome, ControllerKind};
 use crate::error::{Error, Result};
 use crate::genetics::GenerationStats;
 use crate::simulation::Shape;
-use serde::{Deserialize, Deserializer, Serialize};
+use serde::{Deserialize, Serialize};
 
 /// The value of the `format` field.
 pub const FORMAT: &str = "vsr-run";
@@ -32,19 +32,19 @@ pub struct GenerationRecord {
     /// Evaluations done so far, this generation included.
     pub evaluations: u64,
     /// Best survivor's fitness (m/s).
-    #[serde(with = "finite_or_null")]
+    #[serde(with = "super::json::finite_or_null")]
     pub best: f64,
     /// Upper quartile.
-    #[serde(with = "finite_or_null")]
+    #[serde(with = "super::json::finite_or_null")]
     pub q3: f64,
     /// Median.
-    #[serde(with = "finite_or_null")]
+    #[serde(with = "super::json::finite_or_null")]
     pub median: f64,
     /// Lower quartile.
-    #[serde(with = "finite_or_null")]
+    #[serde(with = "super::json::finite_or_null")]
     pub q1: f64,
     /// Worst survivor's fitness.
-    #[serde(with = "finite_or_null")]
+    #[serde(with = "super::json::finite_or_null")]
     pub worst: f64,
     /// Wall-clock seconds from the start of the run to the end of this generation, as
     /// measured by the caller (0 when unknown); never part of a comparison.
@@ -83,10 +83,10 @@ pub struct Best {
     /// The shape it drives.
     pub shape: Shape,
     /// Its genome, in the controller's documented layout.
-    #[serde(deserialize_with = "finite_genes")]
+    #[serde(deserialize_with = "super::json::finite_genes")]
     pub genome: Vec<f32>,
     /// Its latest fitness in the run (one evaluation, m/s).
-    #[serde(with = "finite_or_null")]
+    #[serde(with = "super::json::finite_or_null")]
     pub fitness: f64,
     /// Slow attention only: alpha = min(|g1|, 1), derived from the genome (ignored on load).
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -268,38 +268,5 @@ fn without_position(e: &serde_json::Error) -> String {
     match text.rfind(" at line ") {
         Some(i) => text[..i].to_string(),
         None => text,
-    }
-}
-
-/// Reads a genome, naming the first gene that is `null` (how JSON writes NaN).
-pub(crate) fn finite_genes<'de, D: Deserializer<'de>>(
-    d: D,
-) -> std::result::Result<Vec<f32>, D::Error> {
-    let genes: Vec<Option<f32>> = Vec::deserialize(d)?;
-    match genes.iter().position(Option::is_none) {
-        Some(i) => Err(serde::de::Error::custom(format!(
-            "gene {i} is null, genes must be finite numbers"
-        ))),
-        None => Ok(genes.into_iter().flatten().collect()),
-    }
-}
-
-/// Serde for fitness values: non-finite written as `null`, `null` read as -infinity (the
-/// GA's value for an exploded evaluation).
-pub(crate) mod finite_or_null {
-    use serde::{Deserialize, Deserializer, Serializer};
-
-    /// Writes a finite value as a number, anything else as null.
-    pub fn serialize<S: Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Error> {
-        if v.is_finite() {
-            s.serialize_f64(*v)
-        } else {
-            s.serialize_none()
-        }
-    }
-
-    /// Reads a number, or null as -infinity.
-    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
-        Ok(Option::<f64>::deserialize(d)?.unwrap_or(f64::NEG_INFINITY))
     }
 }
