@@ -114,15 +114,11 @@ mod tests {
     use std::path::Path;
     use vsr::study::campaign::{plan, Campaign};
 
+    /// One fine-tuning of comb-7x2's attention onto biped-4x3 (keys as a TOML table).
     const CAMPAIGN: &str = r#"
-output = "o"
 seeds = [1]
-[[finetune]]
-name = "b"
-pairs = [["comb-7x2", "biped-4x3"]]
-controller = "attention"
-source_evals = 200
-evals = 100
+output = "o"
+finetune = [{ name = "b", controller = "attention", evals = 100, source_evals = 200, pairs = [["comb-7x2", "biped-4x3"]] }]
 "#;
 
     #[test]

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use vsr::study::campaign::merge;
 use vsr::Result;
 
-use super::target::{load_results, Target};
+use super::target::Target;
 
 /// Arguments of `vsr campaign merge`.
 #[derive(clap::Args, Debug)]
@@ -19,8 +19,7 @@ pub struct Args {
 
 /// Runs the command.
 pub fn run(args: Args) -> Result<()> {
-    let (campaign, out) = args.target.load()?;
-    let results = load_results(campaign, &out)?;
+    let (results, out) = args.target.results()?;
     let path = args.csv.unwrap_or_else(|| out.join("campaign.csv"));
     crate::atomic::write(&path, merge::csv(&results).as_bytes(), "table")?;
     let found = results.data.iter().filter(|(_, d)| d.run.is_some()).count();

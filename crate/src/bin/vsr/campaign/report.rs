@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use vsr::study::report::report;
 use vsr::{Error, Result};
 
-use super::target::{load_results, Target};
+use super::target::Target;
 
 /// Arguments of `vsr report`.
 #[derive(clap::Args, Debug)]
@@ -22,8 +22,7 @@ pub struct Args {
 
 /// Runs the command.
 pub fn run(args: Args) -> Result<()> {
-    let (campaign, out) = args.target.load()?;
-    let results = load_results(campaign, &out)?;
+    let (results, out) = args.target.results()?;
     let dir = args.dir.unwrap_or_else(|| out.join("report"));
     fs::create_dir_all(&dir)
         .map_err(|e| Error::Io(format!("cannot create {}: {e}", dir.display())))?;

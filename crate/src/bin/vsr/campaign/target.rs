@@ -20,6 +20,12 @@ pub struct Target {
 }
 
 impl Target {
+    /// The campaign's outputs that exist so far (see [`load_results`]) and its output folder.
+    pub fn results(&self) -> Result<(Results, PathBuf)> {
+        let (campaign, out) = self.load()?;
+        Ok((load_results(campaign, &out)?, out))
+    }
+
     /// The parsed campaign and its output folder.
     pub fn load(&self) -> Result<(Campaign, PathBuf)> {
         let text = fs::read_to_string(&self.file).map_err(|e| {
