@@ -2,10 +2,10 @@
 //! springs, ropes and contacts on a terrain polyline, stepped at dt = 1/60 s.
 //! Knows bodies, springs, contacts, terrains and sensors; nothing about genomes.
 
-pub mod assembly;
+pub(crate) mod assembly;
 pub mod body;
-pub mod box_box;
-pub mod broad_phase;
+pub(crate) mod box_box;
+pub(crate) mod broad_phase;
 pub mod carry;
 pub mod collide;
 pub mod constants;
@@ -13,10 +13,10 @@ pub mod contact;
 mod contact_law;
 pub mod ground;
 pub mod java_random;
-pub mod joint;
-pub mod ropes;
-pub mod self_collide;
-pub mod self_contact;
+pub(crate) mod joint;
+pub(crate) mod ropes;
+pub(crate) mod self_collide;
+pub(crate) mod self_contact;
 pub mod sensors;
 pub mod shape;
 pub mod springs;

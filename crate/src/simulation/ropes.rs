@@ -41,16 +41,6 @@ impl Ropes {
         }
     }
 
-    /// Number of ropes.
-    pub fn len(&self) -> usize {
-        self.defs.len()
-    }
-
-    /// True if there is no rope.
-    pub fn is_empty(&self) -> bool {
-        self.defs.is_empty()
-    }
-
     fn row(&self, pieces: &Pieces, i: usize) -> JointRow {
         let d = &self.defs[i];
         let ra = pieces.rotate(d.a.0, d.a.1, d.a.2);

@@ -152,14 +152,4 @@ impl SelfContactSolver {
         }
         resolved(min_separation)
     }
-
-    /// Number of contact rows this step.
-    pub fn len(&self) -> usize {
-        self.rows.len()
-    }
-
-    /// True if no two pieces touch.
-    pub fn is_empty(&self) -> bool {
-        self.rows.is_empty()
-    }
 }
