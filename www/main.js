@@ -180,6 +180,7 @@ function showBrain() {
   viewer.show(drawing.rows(), brain ? { controller: brain.controller, genome: brain.genome } : null, keepPlace, seconds);
   speedNote.show(brain, viewer.terrain.value.trim(), seconds, !running);
   runs.showWalking(brain?.run === true);
+  el('gait').hidden = brain !== null; // its settings drive only a robot with no brain
   keepPlace = false;
   el('driver').textContent = brain
     ? `Driven by: ${brain.label} (${brain.controller}, ${brain.genome.length} genes).`

@@ -46,9 +46,10 @@ export class ModuleList {
     try {
       const manifest = await fetchOk(`${PRETRAINED_DIR}manifest.json`).then((r) => r.json());
       for (const m of manifest.modules ?? []) {
-        // Manifest written by `vsr campaign export`: the median on the unseen validation set.
-        const median = Number(m.validation?.unseen?.median);
-        const speed = Number.isFinite(median) ? `, ${median.toFixed(2)} m/s on unseen terrain` : '';
+        // Manifest written by `vsr campaign export`: the mean over the unseen validation set, the
+        // figure the study panel and its box plots show for the same run.
+        const mean = Number(m.validation?.unseen?.mean);
+        const speed = Number.isFinite(mean) ? `, ${unseenWords(mean)}` : '';
         const from = m.finetuned_from ? ` fine-tuned from ${m.finetuned_from}` : '';
         const label = `${m.controller} on ${m.shape}${from} (${m.evaluations} evaluations${speed})`;
         this.select.append(new Option(label, PRETRAINED_DIR + m.file));
@@ -151,6 +152,14 @@ export class ModuleList {
       this.hooks.message(`${file.name} is not a run file this page can read: ${messageOf(error)}`);
     }
   }
+}
+
+/**
+ * A best robot's speed on the study's unseen terrains, in the words every list of the page uses.
+ * @param {number} mean m/s, the mean over the ten terrains
+ */
+export function unseenWords(mean) {
+  return `mean ${mean.toFixed(2)} m/s on ten unseen terrains`;
 }
 
 /** @param {string} url @returns {Promise<Response>} the response, or throws on an HTTP error */

@@ -203,7 +203,8 @@ export class RunPanel {
     this.coordinator = coordinator;
     this.paused = false;
     this.started = false;
-    for (const key of ['generation', 'evaluations', 'best', 'genBest', 'median', 'rate']) show(this.out[key], NaN, '–');
+    for (const key of ['generation', 'evaluations', 'best', 'genBest', 'median']) show(this.out[key], NaN, '–');
+    show(this.out.rate, NaN, '');
     this.setStatus('starting…');
     this.hooks.running(true);
     this.update();

@@ -14,6 +14,8 @@ export class SpeedNote {
   constructor(el, measurer) {
     this.el = el;
     this.measurer = measurer;
+    /** Counts the brains shown, so that a measure of an earlier one never overwrites a newer note. */
+    this.shown = 0;
   }
 
   /**
@@ -22,6 +24,7 @@ export class SpeedNote {
    * @param {boolean} [now] measure it now (while a run uses the workers, the viewer's own measure is enough)
    */
   show(brain, terrain, seconds, now = true) {
+    const ticket = ++this.shown;
     this.set(NaN, '');
     if (!brain) {
       this.set(NaN, `The phase gait has no brain: each voxel squeezes and swells on a clock. Its speed is measured as it walks, over a ${seconds}-s episode.`);
@@ -34,8 +37,10 @@ export class SpeedNote {
     }
     this.set(NaN, `Measuring its speed over a ${seconds}-s episode on ${terrain}…`);
     const what = { rows: brain.rows, controller: brain.controller, genome: brain.genome, terrain, seconds };
-    this.measurer.measure(what).then((speed) => this.set(speed, this.words(brain, speed, terrain, seconds)), (error) => {
-      if (messageOf(error) !== 'stale') this.set(NaN, `Its speed could not be measured: ${messageOf(error)}`);
+    this.measurer.measure(what).then((speed) => {
+      if (ticket === this.shown) this.set(speed, this.words(brain, speed, terrain, seconds));
+    }, (error) => {
+      if (ticket === this.shown && messageOf(error) !== 'stale') this.set(NaN, `Its speed could not be measured: ${messageOf(error)}`);
     });
   }
 
@@ -43,9 +48,10 @@ export class SpeedNote {
   words(brain, speed, terrain, seconds) {
     const here = `Speed here: ${speed.toFixed(2)} m/s over a ${seconds}-s episode on ${terrain}.`;
     if (brain.oneShot) {
-      return `${here} That is its one-shot speed: the module moved to your robot with no training for this body. `
-        + 'A transplanted module usually walks badly at first (the paper found the same); '
-        + 'press Fine-tune to train the rest of its brain for this body, its attention kept: it recovers fast.';
+      return `${here} That is its one-shot speed, before any training for this body. Its attention fits any body, but the `
+        + 'weights that turn each voxel\'s readings into a squeeze were made for the old body\'s voxels, so your robot\'s are '
+        + 'drawn at random. It usually walks badly at first (the paper found the same): press Fine-tune to evolve those '
+        + 'weights for this body, its attention kept.';
     }
     const trained = brain.trained;
     if (!trained || !Number.isFinite(trained.speed)) return here;

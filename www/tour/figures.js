@@ -23,23 +23,25 @@ export const STUDY_DIR = 'study/';
  *   every field given must match; source: how the fine-tuned module's run name starts
  */
 
-const BOXES = 'Each box holds the runs of one brain (one dot per run, each with its own seed): the line in it is the median run, the box the middle half.';
+const BOXES = 'Each box holds the runs of one brain (one dot per run, each with its own seed): the line in it is the median run, the box the middle half. '
+  + 'The lines under the plot test each pair: "no difference detected" means the runs are too few to be sure the two brains differ (p and Holm: see the glossary).';
 
 /** @type {StudyFigure[]} */
 export const FIGURES = [
   {
     id: 'validation-biped',
     file: 'fig4-rq1-biped-4x3-30000-unseen.svg',
-    title: 'Three brains on the biped, each run\'s best walking on ten test terrains',
-    paper: 'The paper\'s Fig. 4: attention walks faster than a plain network (mlp) and than a network whose voxels send messages (mlp-comm).',
+    title: 'Three brains on the biped, each run\'s best walking on ten unseen terrains',
+    paper: 'The paper\'s Fig. 4: attention walks faster than a plain network (mlp) and than a network whose voxels send messages (mlp-comm). '
+      + 'Our attention runs have the highest median here too, but five runs of each are too few for the tests to be sure of it.',
     read: `${BOXES} A point is the mean speed of one run's best robot over ten hilly terrains it was not trained on; higher is faster.`,
     runs: [{ kind: 'scratch', shape: 'biped-4x3', evals: 30000, controllers: ['attention', 'mlp-comm', 'mlp'] }],
   },
   {
     id: 'validation-comb',
     file: 'fig4-rq1-comb-7x2-30000-unseen.svg',
-    title: 'Three brains on the comb, each run\'s best walking on ten test terrains',
-    paper: 'The paper\'s Fig. 4 found attention ahead on the comb too; our study finds it above mlp but level with mlp-comm there.',
+    title: 'Three brains on the comb, each run\'s best walking on ten unseen terrains',
+    paper: 'The paper\'s Fig. 4 found attention ahead on the comb too; in our study the tests detect no difference between the three brains there.',
     read: `${BOXES} A point is the mean speed of one run's best robot over ten hilly terrains it was not trained on.`,
     runs: [{ kind: 'scratch', shape: 'comb-7x2', evals: 30000, controllers: ['attention', 'mlp-comm', 'mlp'] }],
   },
@@ -61,7 +63,7 @@ export const FIGURES = [
   },
   transfer('biped', ['biped-4x3', 'small'], ['biped-6x4', 'large'], 'The paper\'s Fig. 7: a transplanted attention, '
     + 'fine-tuned, gets fast much sooner than a brain evolved from scratch. Our study agrees on all four transfers (after '
-    + '2,500 evaluations); by the end of the budget the two are level.'),
+    + '2,500 evaluations); by the end of the budget no difference is detected between the two.'),
   transfer('biped', ['biped-6x4', 'large'], ['biped-4x3', 'small'], 'The paper\'s Fig. 7, from large to small.'),
   transfer('comb', ['comb-7x2', 'small'], ['comb-14x2', 'large'], 'The paper\'s Fig. 7, for the combs.'),
   transfer('comb', ['comb-14x2', 'large'], ['comb-7x2', 'small'], 'The paper\'s Fig. 7, from large to small.'),

@@ -7,6 +7,7 @@
  * becomes a module of the list, so it can also race or be transplanted).
  */
 import { messageOf } from '../kit.js';
+import { unseenWords } from '../modules.js';
 import { FIGURES, STUDY_DIR } from './figures.js';
 
 /** The study's table of runs, one row per run. */
@@ -52,7 +53,7 @@ export function runsOf(figure, runs) {
 /** A run in words. @param {StudyRun} r */
 export function describe(r) {
   const how = r.kind === 'finetune' ? `fine-tuned from ${r.source.replace(/-\d+-s(\d+)$/, ', seed $1')}` : `from scratch, ${r.evals} evaluations`;
-  const speed = Number.isFinite(r.unseen) ? `: ${r.unseen.toFixed(2)} m/s on the ten test terrains` : '';
+  const speed = Number.isFinite(r.unseen) ? `: ${unseenWords(r.unseen)}` : '';
   return `${r.controller} on ${r.shape}, ${how}, seed ${r.seed}${speed}`;
 }
 

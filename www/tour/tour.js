@@ -12,6 +12,9 @@ import { CHAPTERS } from './chapters.js';
 import { FIGURES, STUDY_DIR } from './figures.js';
 import { stage } from './stage.js';
 
+/** How long after a chapter opens its controls are brought into view again, once the page has settled (ms). */
+const SETTLE_MS = 1000;
+
 /** The address's query parameter that names a chapter. */
 export const CHAPTER_PARAM = 'chapter';
 
@@ -97,6 +100,10 @@ export class Tour {
       this.box.dataset.state = 'ready';
       this.box.dataset.openedMs = (performance.now() - started).toFixed(0);
       this.point(CHAPTERS[index].target);
+      // The page settles after a chapter opens (the speed line fills in): point again once,
+      // unless the visitor has scrolled or moved on meanwhile.
+      const scrolled = scrollY;
+      setTimeout(() => { if (ticket === this.opening && scrollY === scrolled) this.point(CHAPTERS[index].target); }, SETTLE_MS);
     } catch (error) {
       if (ticket !== this.opening) return;
       this.box.dataset.state = 'failed';
@@ -114,6 +121,7 @@ export class Tour {
     /** @type {HTMLElement} */ (this.box.querySelector('#tour-chapter')).textContent = chapter.title;
     /** @type {HTMLSelectElement} */ (this.box.querySelector('#tour-pick')).value = String(i);
     const body = /** @type {HTMLElement} */ (this.box.querySelector('#tour-body'));
+    body.scrollTop = 0;
     body.replaceChildren(...chapter.text.map((t) => paragraph(doc, t)),
       paragraph(doc, chapter.task, 'Do', 'tour-task'), paragraph(doc, chapter.notice, 'Notice', 'tour-notice'));
     if (chapter.figure) body.append(this.figure(chapter.figure));
@@ -152,18 +160,40 @@ export class Tour {
     return box;
   }
 
-  /** Outlines the controls a chapter asks about and brings the first into view. @param {string} selector */
+  /**
+   * Outlines the controls a chapter asks about (a folded <details> among them is opened) and
+   * brings them into view: all of them when they fit on the screen together, else the first.
+   * @param {string} selector
+   */
   point(selector) {
     for (const el of this.doc.querySelectorAll('.tour-target')) el.classList.remove('tour-target');
-    const targets = [...this.doc.querySelectorAll(selector)];
-    for (const el of targets) el.classList.add('tour-target');
-    const first = /** @type {HTMLElement | undefined} */ (targets[0]);
+    const targets = /** @type {HTMLElement[]} */ ([...this.doc.querySelectorAll(selector)]);
+    for (const el of targets) {
+      el.classList.add('tour-target');
+      if (el instanceof HTMLDetailsElement) el.open = true;
+    }
+    const first = targets[0];
     if (!first) return;
-    const rect = first.getBoundingClientRect();
     const sheet = this.box.getBoundingClientRect();
     const bottom = sheet.top > innerHeight / 3 ? sheet.top : innerHeight; // a sheet at the bottom hides what is under it
-    const sheetBelow = bottom < innerHeight;
-    if (rect.top < 0 || rect.top > bottom - 40) first.scrollIntoView({ block: sheetBelow ? 'start' : 'center', behavior: 'instant' });
+    const rects = targets.map((el) => el.getBoundingClientRect());
+    const top = Math.min(...rects.map((r) => r.top));
+    const end = Math.max(...rects.map((r) => r.bottom));
+    const margin = 12;
+    if (top >= 0 && end <= bottom) return; // all in view
+    if (end - top <= bottom - 2 * margin) {
+      scrollBy({ top: top >= 0 ? end - bottom + margin : top - margin, behavior: 'instant' });
+      return;
+    }
+    const last = rects[rects.length - 1];
+    const shift = last.bottom - bottom + margin; // the control to use at the bottom, if the first stays half in view
+    if (rects.length > 1 && rects[0].bottom - shift > rects[0].height / 2) {
+      scrollBy({ top: shift, behavior: 'instant' });
+      return;
+    }
+    const rect = rects[0];
+    const tall = bottom < innerHeight || rect.height > bottom / 2; // a sheet below, or a target too tall to centre
+    if (rect.top < 0 || rect.top > bottom - 40) first.scrollIntoView({ block: tall ? 'start' : 'center', behavior: 'instant' });
   }
 
   /** Folds the chapter's text away, or back. */
