@@ -2,26 +2,17 @@
 /**
  * The run panel: evolves a controller for the drawn body (as `vsr evolve`) or fine-tunes a
  * transplanted attention module on it (as `vsr finetune`), in a GA coordinator worker with
- * a pool of evaluation workers (coordinator.js). It reads the settings (population, episode
- * seconds, budget, seed, training terrain, workers), shows the run live (generation,
- * evaluations, best so far, the generation's best and median, evaluations per second, the
- * chart against evaluations), pauses, steps one generation, stops, exports the run file,
- * and hands each new best to the page to watch. A fine-tuning run can be followed by a
- * from-scratch run with the same budget, drawn as a second line.
+ * a pool of evaluation workers (coordinator.js), with the settings of the form
+ * (run-settings.js). It shows the run live (run-progress.js), pauses, steps one generation,
+ * stops, exports the run file, and hands each new best to the page to watch. A fine-tuning
+ * run can be followed by a from-scratch run with the same budget, drawn as a second line.
  */
-import { checkTrainingTerrain, freshSeed } from './core.js';
 import { spawn } from './kit.js';
 import { download, runFileName } from './export.js';
-import { FitnessChart } from './fitness-chart.js';
 import { planWords } from './run-plan.js';
-import { FromCoordinator, MAX_EVALUATORS, ToCoordinator } from './protocol.js';
-
-const STYLE = {
-  best: { label: 'best of generation', colour: 'rgb(200, 45, 40)' },
-  median: { label: 'median', colour: 'rgb(49, 99, 190)' },
-  finetune: { label: 'fine-tune (best)', colour: 'rgb(200, 45, 40)' },
-  scratch: { label: 'from scratch (best)', colour: 'rgb(90, 90, 90)', dashed: true },
-};
+import { FromCoordinator, ToCoordinator } from './protocol.js';
+import { RunProgress } from './run-progress.js';
+import { RunSettings } from './run-settings.js';
 
 /**
  * @typedef {object} RunHooks
@@ -52,35 +43,25 @@ const STYLE = {
 export class RunPanel {
   /** @param {Document} doc @param {import('./core.js').Defaults} defaults @param {RunHooks} hooks */
   constructor(doc, defaults, hooks) {
-    this.defaults = defaults;
     this.hooks = hooks;
     const el = (/** @type {string} */ id) => {
       const found = doc.getElementById(id);
       if (!found) throw new Error(`the page has no #${id}`);
       return /** @type {any} */ (found);
     };
-    /** @type {Record<string, HTMLInputElement>} */
-    this.inputs = {
-      population: el('run-population'), seconds: el('run-seconds'), budget: el('run-budget'),
-      seed: el('run-seed'), terrain: el('run-terrain'), workers: el('run-workers'),
-    };
+    this.form = new RunSettings(el, defaults, (text) => hooks.message(text));
+    this.inputs = this.form.inputs;
     /** @type {Record<string, HTMLButtonElement>} */
     this.buttons = {
-      quick: el('run-quick'), paper: el('run-paper'), dice: el('run-dice'), evolve: el('run-evolve'),
-      finetune: el('run-finetune'), pause: el('run-pause'), step: el('run-step'), stop: el('run-stop'),
-      export: el('run-export'),
+      evolve: el('run-evolve'), finetune: el('run-finetune'), pause: el('run-pause'), step: el('run-step'),
+      stop: el('run-stop'), export: el('run-export'),
     };
     this.compare = /** @type {HTMLInputElement} */ (el('run-compare'));
     this.follow = /** @type {HTMLInputElement} */ (el('run-follow'));
-    /** @type {Record<string, HTMLElement>} */
-    this.out = {
-      generation: el('run-generation'), evaluations: el('run-evaluations'), best: el('run-best'),
-      genBest: el('run-gen-best'), median: el('run-median'), rate: el('run-rate'), status: el('run-status'),
-      plan: el('run-plan'), caption: el('run-caption'), progress: el('run-progress'),
-    };
+    this.status = /** @type {HTMLElement} */ (el('run-status'));
+    this.progress = new RunProgress(el);
     /** Generations after generation 0 that the running run takes. */
     this.generations = NaN;
-    this.chart = new FitnessChart(el('run-chart'));
     /** @type {Worker | null} */
     this.coordinator = null;
     this.paused = false;
@@ -96,33 +77,18 @@ export class RunPanel {
     this.compareNext = false;
     /** A download asked for while running, waiting for the coordinator's run file. */
     this.exportWanted = false;
-    this.preset(defaults.quick);
-    this.inputs.seed.value = '1';
-    this.inputs.terrain.value = defaults.trainingTerrain;
-    this.inputs.workers.value = String(Math.max(1, Math.min(MAX_EVALUATORS, navigator.hardwareConcurrency || 1)));
-    this.inputs.workers.max = String(MAX_EVALUATORS);
     this.wire();
     this.update();
   }
 
   wire() {
     const b = this.buttons;
-    b.quick.addEventListener('click', () => this.preset(this.defaults.quick));
-    b.paper.addEventListener('click', () => this.preset(this.defaults.paper));
-    b.dice.addEventListener('click', () => { this.inputs.seed.value = String(freshSeed()); this.hooks.message(''); });
     b.evolve.addEventListener('click', () => this.start('evolve'));
     b.finetune.addEventListener('click', () => this.start('finetune'));
     b.pause.addEventListener('click', () => this.send(this.paused ? ToCoordinator.RESUME : ToCoordinator.PAUSE));
     b.step.addEventListener('click', () => this.send(ToCoordinator.STEP));
     b.stop.addEventListener('click', () => { this.compareNext = false; this.send(ToCoordinator.STOP); });
     b.export.addEventListener('click', () => this.exportRunFile());
-    for (const input of Object.values(this.inputs)) input.addEventListener('change', () => this.hooks.message(''));
-    for (const input of [this.inputs.population, this.inputs.budget]) input.addEventListener('input', () => this.describePlan());
-  }
-
-  /** Says what the population and budget in the form make. */
-  describePlan() {
-    this.out.plan.textContent = planWords(Number(this.inputs.population.value), Number(this.inputs.budget.value))?.text ?? '';
   }
 
   /**
@@ -130,33 +96,17 @@ export class RunPanel {
    * are said to be the last run's, not the walking robot's. @param {boolean} fromRun
    */
   showWalking(fromRun) {
-    this.out.progress.dataset.other = String(!fromRun && this.started);
-    this.out.caption.textContent = !fromRun && this.started
-      ? 'These figures are the last run\'s: the robot walking now has another brain.' : '';
+    this.progress.otherBrain(!fromRun && this.started);
   }
 
   /** @param {string} type */
   send(type) { this.coordinator?.postMessage({ type }); }
 
-  /** @param {import('./core.js').RunPreset} p */
-  preset(p) {
-    this.inputs.population.value = String(p.population);
-    this.inputs.seconds.value = String(p.seconds);
-    this.inputs.budget.value = String(p.budget);
-    this.describePlan();
-  }
-
   /** The settings in the form as the page stores and shares them. */
-  values() {
-    const v = (/** @type {string} */ k) => this.inputs[k].value;
-    return { population: v('population'), seconds: v('seconds'), budget: v('budget'), seed: v('seed'), terrain: v('terrain') };
-  }
+  values() { return this.form.values(); }
 
   /** @param {Partial<Record<string, string>>} values settings to put in the form */
-  setValues(values) {
-    for (const [k, value] of Object.entries(values)) if (this.inputs[k] && value !== undefined) this.inputs[k].value = String(value);
-    this.describePlan();
-  }
+  setValues(values) { this.form.setValues(values); }
 
   /**
    * The settings in the form, or a message saying what is wrong with them.
@@ -166,17 +116,7 @@ export class RunPanel {
   readSettings(controller) {
     const body = this.hooks.body();
     if (!body.ok) return { error: 'draw a valid robot first (see the message under the grid)' };
-    const number = (/** @type {string} */ key) => Number(this.inputs[key].value.trim() || NaN);
-    const [population, seconds, budget, seed, workers] = ['population', 'seconds', 'budget', 'seed', 'workers'].map(number);
-    if (!Number.isInteger(population) || population < 1) return { error: `population must be a whole number of at least 1, not "${this.inputs.population.value}"` };
-    if (!(seconds > 0) || !Number.isFinite(seconds)) return { error: `episode seconds must be a positive number, not "${this.inputs.seconds.value}"` };
-    if (!Number.isInteger(budget) || budget < population) return { error: `the budget must be a whole number of evaluations, at least one population (${population}), not "${this.inputs.budget.value}"` };
-    if (!Number.isSafeInteger(seed) || seed < 0) return { error: `the seed must be a whole number from 0 to 2^53 - 1, not "${this.inputs.seed.value}"` };
-    if (!Number.isInteger(workers) || workers < 1 || workers > MAX_EVALUATORS) return { error: `workers must be a whole number from 1 to ${MAX_EVALUATORS}, not "${this.inputs.workers.value}"` };
-    const terrain = this.inputs.terrain.value.trim();
-    const terrainProblem = checkTrainingTerrain(terrain);
-    if (terrainProblem) return { error: `training terrain: ${terrainProblem}` };
-    return { settings: { shape: body.rows, controller, seed, seconds, terrain, population, budget }, workers };
+    return this.form.read(body.rows, controller);
   }
 
   /**
@@ -203,8 +143,7 @@ export class RunPanel {
     this.coordinator = coordinator;
     this.paused = false;
     this.started = false;
-    for (const key of ['generation', 'evaluations', 'best', 'genBest', 'median']) show(this.out[key], NaN, '–');
-    show(this.out.rate, NaN, '');
+    this.progress.reset();
     this.setStatus('starting…');
     this.hooks.running(true);
     this.update();
@@ -215,10 +154,9 @@ export class RunPanel {
     switch (msg.type) {
       case FromCoordinator.STARTED:
         this.started = true;
-        if (this.mode !== 'scratch') this.chart.clear(msg.planned); else this.chart.extend(msg.planned);
+        this.progress.started(msg.planned, this.mode);
         this.runSettings = settings;
         this.setStatus(`${this.verb()} on ${msg.workers} worker${msg.workers === 1 ? '' : 's'}`);
-        show(this.out.evaluations, 0, `0 / ${msg.planned}`);
         break;
       case FromCoordinator.GENERATION: this.onGeneration(msg, settings); break;
       case FromCoordinator.STATE:
@@ -255,19 +193,7 @@ export class RunPanel {
   onGeneration(msg, settings) {
     const { record } = msg;
     if (record.best !== null && record.best > this.bestSoFar) this.bestSoFar = record.best;
-    show(this.out.generation, record.generation, `${record.generation} of ${this.generations}`);
-    show(this.out.evaluations, msg.evaluations, `${msg.evaluations} / ${msg.planned}`);
-    show(this.out.best, this.bestSoFar, `${fixed(this.bestSoFar)} m/s`);
-    show(this.out.genBest, record.best ?? NaN, `${fixed(record.best)} m/s`);
-    show(this.out.median, record.median ?? NaN, `${fixed(record.median)} m/s`);
-    show(this.out.rate, msg.evalsPerSecond, `${fixed(msg.evalsPerSecond, 1)} evaluations/s`);
-    if (this.mode === 'evolve') {
-      this.chart.add('best', STYLE.best, msg.evaluations, record.best);
-      this.chart.add('median', STYLE.median, msg.evaluations, record.median);
-    } else {
-      this.chart.add(this.mode, STYLE[this.mode], msg.evaluations, this.bestSoFar);
-    }
-    this.chart.draw();
+    this.progress.generation(msg, this.generations, this.bestSoFar, /** @type {any} */ (this.mode));
     this.hooks.generation?.(msg.top, record.generation, settings, this.kind(settings), this.mode);
     if (msg.best && this.follow.checked && this.mode !== 'scratch') {
       this.hooks.best(msg.best.genome, msg.best.fitness, settings, this.kind(settings));
@@ -315,7 +241,7 @@ export class RunPanel {
 
   /** @param {string} text */
   setStatus(text) {
-    this.out.status.textContent = text;
+    this.status.textContent = text;
     document.body.dataset.run = text.replace(/^from scratch: /, '').split(' ')[0].replace('…', '');
   }
 
@@ -329,23 +255,11 @@ export class RunPanel {
     b.finetune.title = b.finetune.disabled && !running && this.hooks.source() === null
       ? 'First load an attention module onto your robot (Transplant a module, Load onto my robot)'
       : 'Train the module on your robot: evolve the rest of its brain for this body while its attention stays as it is';
-    for (const key of ['quick', 'paper', 'dice']) b[key].disabled = running;
-    for (const input of Object.values(this.inputs)) input.disabled = running;
+    this.form.lock(running);
     b.pause.disabled = !running;
     b.step.disabled = !running || !this.paused;
     b.stop.disabled = !running;
     b.pause.textContent = this.paused ? 'Resume' : 'Pause';
     b.export.disabled = !running && this.runFile === null;
   }
-}
-
-/** @param {number | null} v @param {number} [digits] */
-function fixed(v, digits = 2) {
-  return v === null || !Number.isFinite(v) ? '–' : v.toFixed(digits);
-}
-
-/** Shows a figure, with its raw number in data-value for tests. @param {HTMLElement} el @param {number} value @param {string} text */
-function show(el, value, text) {
-  el.dataset.value = String(value);
-  el.textContent = text;
 }

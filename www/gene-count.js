@@ -1,0 +1,23 @@
+// @ts-check
+/**
+ * The gene count under “3 · Give it a brain”: how many numbers evolution tunes for the chosen
+ * controller family on the drawn body, and, for attention, which of them every voxel shares
+ * and which belong to one voxel position. Its raw number is in `data-value`.
+ */
+import { SENSOR_NAMES } from './protocol.js';
+
+/**
+ * @param {HTMLElement} el @param {import('./core.js').ShapeCheck} check the drawing's
+ * @param {string} kind the controller family @param {number} attentionGenes the attention block's size
+ */
+export function showGeneCount(el, check, kind, attentionGenes) {
+  const genes = check.params.find(([k]) => k === kind)?.[1] ?? 0;
+  const n = check.voxels;
+  const detail = kind === 'attention' && n > 0
+    ? `: ${attentionGenes} for the attention block, shared by every voxel, and ${genes - attentionGenes} for the outputs, `
+      + `one set of weights per voxel position (each voxel adds ${SENSOR_NAMES.length}, one per sensor)` : '';
+  el.textContent = n > 0 ? `${genes} genes${detail}` : '';
+  el.title = 'Genes: the numbers evolution changes. Every voxel runs the same small network; '
+    + 'what differs between voxels is only the output weights of its position.';
+  el.dataset.value = String(genes);
+}

@@ -1,0 +1,84 @@
+// @ts-check
+/**
+ * Following a run on the robot ("walk the best so far"): each new best seen during a run
+ * drives the robot, at most every few seconds so that each one walks a while; when the run
+ * ends, its run file becomes a module of the list (to watch, race, export, fine-tune further)
+ * and its result drives the robot.
+ */
+import { bestSoFar, runResult } from './brain.js';
+import { messageOf } from './kit.js';
+
+/** Least wall time between two switches of the viewer to a newer best (ms). */
+const FOLLOW_INTERVAL_MS = 3000;
+
+export class RunFollower {
+  /**
+   * @param {import('./robot.js').Robot} robot
+   * @param {import('./modules.js').ModuleList} modules
+   * @param {() => boolean} finetuning the run under way fine-tunes a module
+   */
+  constructor(robot, modules, finetuning) {
+    this.robot = robot;
+    this.modules = modules;
+    this.finetuning = finetuning;
+    this.last = -Infinity;
+    this.timer = 0;
+    /** @type {(() => void) | null} */
+    this.pending = null;
+  }
+
+  /**
+   * A new best seen during a run: it drives the robot, now or once the last one walked a while.
+   * @param {Float32Array} genome @param {number} fitness
+   * @param {import('./protocol.js').EvolveSettings} settings @param {string} kind
+   */
+  best(genome, fitness, settings, kind) {
+    const robot = this.robot;
+    const apply = () => {
+      this.last = performance.now();
+      this.pending = null;
+      if (settings.shape !== robot.parts.drawing.rows()) return;
+      robot.drive(bestSoFar(genome, fitness, settings, kind, this.finetuning(), robot.brain?.source ?? null, robot.origin()));
+    };
+    window.clearTimeout(this.timer);
+    const wait = this.last + FOLLOW_INTERVAL_MS - performance.now();
+    if (wait <= 0) { apply(); return; }
+    this.pending = apply;
+    this.timer = window.setTimeout(() => this.pending?.(), wait);
+  }
+
+  /**
+   * A run ended: its run file becomes a module and, with "walk the best so far", its result
+   * drives the robot: the run file's best, the best of the final population by its latest
+   * evaluation (what `vsr` reports and replays), which can be below the best single evaluation
+   * seen on the way (fitness is re-measured on fresh terrains).
+   * @param {import('./run-panel.js').FinishedRun} run
+   */
+  finished(run) {
+    const robot = this.robot;
+    window.clearTimeout(this.timer);
+    this.pending = null;
+    let best;
+    try {
+      best = JSON.parse(run.runFile).best;
+    } catch (error) {
+      robot.error(`the run file could not be read: ${messageOf(error)}`);
+      return;
+    }
+    const what = { evolve: 'evolved', finetune: 'fine-tuned', scratch: 'from scratch' }[run.mode];
+    const label = `${what} ${best.controller}, seed ${run.settings.seed}: ${best.fitness.toFixed(2)} m/s`;
+    try {
+      const module = { key: `run:${run.mode}:${run.settings.seed}:${best.controller}:${run.settings.shape}`, label: `${label} (this page)`, text: run.runFile };
+      this.modules.add(module, run.mode !== 'scratch'); // the comparison is listed; the fine-tuned module stays chosen
+    } catch (error) {
+      robot.error(`the finished run could not be listed: ${messageOf(error)}`);
+    }
+    const peak = Number.isFinite(run.peak) ? `; its best single evaluation on the way: ${run.peak.toFixed(2)} m/s` : '';
+    const result = `the best of its last generation, ${best.fitness.toFixed(2)} m/s in training${peak}`;
+    if (run.mode === 'scratch' || !run.follow || run.settings.shape !== robot.parts.drawing.rows()) {
+      robot.parts.messages.show(`The run ${run.stopped ? 'stopped' : 'finished'}: its result (${result}) is in the module list.`, 'note');
+      return;
+    }
+    robot.drive(runResult(best, run.runFile, run.settings, robot.origin(), `the ${what} run's result: ${result}`));
+  }
+}

@@ -1,0 +1,90 @@
+// @ts-check
+/**
+ * A run's progress as the page shows it: the live figures (generation, evaluations, best so
+ * far, the generation's best and median, evaluations per second; each raw number in
+ * data-value for tests) and the chart against evaluations: best and median of an evolution,
+ * or fine-tuning against the from-scratch run that follows it, drawn as a second line.
+ */
+import { FitnessChart } from './fitness-chart.js';
+
+const STYLE = {
+  best: { label: 'best of generation', colour: 'rgb(200, 45, 40)' },
+  median: { label: 'median', colour: 'rgb(49, 99, 190)' },
+  finetune: { label: 'fine-tune (best)', colour: 'rgb(200, 45, 40)' },
+  scratch: { label: 'from scratch (best)', colour: 'rgb(90, 90, 90)', dashed: true },
+};
+
+/** The figures that start empty with every run. */
+const FIGURES = ['generation', 'evaluations', 'best', 'genBest', 'median'];
+
+export class RunProgress {
+  /** @param {(id: string) => any} el the page's element by id */
+  constructor(el) {
+    /** @type {Record<string, HTMLElement>} */
+    this.out = {
+      generation: el('run-generation'), evaluations: el('run-evaluations'), best: el('run-best'),
+      genBest: el('run-gen-best'), median: el('run-median'), rate: el('run-rate'),
+      caption: el('run-caption'), progress: el('run-progress'),
+    };
+    this.chart = new FitnessChart(el('run-chart'));
+  }
+
+  /** A run is starting: its figures are empty until it reports. */
+  reset() {
+    for (const key of FIGURES) show(this.out[key], NaN, '–');
+    show(this.out.rate, NaN, '');
+  }
+
+  /**
+   * The run started: `planned` evaluations; a from-scratch comparison extends the chart of the
+   * fine-tuning before it. @param {number} planned @param {string} mode
+   */
+  started(planned, mode) {
+    if (mode !== 'scratch') this.chart.clear(planned); else this.chart.extend(planned);
+    show(this.out.evaluations, 0, `0 / ${planned}`);
+  }
+
+  /**
+   * A generation's figures.
+   * @param {{record: any, evaluations: number, planned: number, evalsPerSecond: number}} msg
+   * @param {number} generations generations after generation 0 the run takes
+   * @param {number} bestSoFar the best evaluation of the run so far
+   * @param {'evolve' | 'finetune' | 'scratch'} mode
+   */
+  generation(msg, generations, bestSoFar, mode) {
+    const { record } = msg;
+    show(this.out.generation, record.generation, `${record.generation} of ${generations}`);
+    show(this.out.evaluations, msg.evaluations, `${msg.evaluations} / ${msg.planned}`);
+    show(this.out.best, bestSoFar, `${fixed(bestSoFar)} m/s`);
+    show(this.out.genBest, record.best ?? NaN, `${fixed(record.best)} m/s`);
+    show(this.out.median, record.median ?? NaN, `${fixed(record.median)} m/s`);
+    show(this.out.rate, msg.evalsPerSecond, `${fixed(msg.evalsPerSecond, 1)} evaluations/s`);
+    if (mode === 'evolve') {
+      this.chart.add('best', STYLE.best, msg.evaluations, record.best);
+      this.chart.add('median', STYLE.median, msg.evaluations, record.median);
+    } else {
+      this.chart.add(mode, STYLE[mode], msg.evaluations, bestSoFar);
+    }
+    this.chart.draw();
+  }
+
+  /**
+   * Whether the figures are the walking robot's: if it has another brain than the last run's,
+   * they are said to be the last run's. @param {boolean} other
+   */
+  otherBrain(other) {
+    this.out.progress.dataset.other = String(other);
+    this.out.caption.textContent = other ? 'These figures are the last run\'s: the robot walking now has another brain.' : '';
+  }
+}
+
+/** @param {number | null} v @param {number} [digits] */
+function fixed(v, digits = 2) {
+  return v === null || !Number.isFinite(v) ? '–' : v.toFixed(digits);
+}
+
+/** Shows a figure, with its raw number in data-value for tests. @param {HTMLElement} el @param {number} value @param {string} text */
+function show(el, value, text) {
+  el.dataset.value = String(value);
+  el.textContent = text;
+}
