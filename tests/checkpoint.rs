@@ -10,6 +10,9 @@ use vsr::controllers::ControllerKind;
 use vsr::experiment::{Checkpoint, Evolution, EvolutionConfig, Job, RunFile, SourceRun};
 use vsr::simulation::Shape;
 
+mod checkpoint_util;
+use checkpoint_util::{comparable, scratch};
+
 /// Population 10, 50 evaluations (generation 0 and 2 more), 2-s episodes on hilly terrains.
 fn tiny(kind: ControllerKind, seed: u64) -> EvolutionConfig {
     let mut config = EvolutionConfig::paper(Shape::parse("biped-4x3").unwrap(), kind, 50, seed);
@@ -132,12 +135,6 @@ fn a_checkpoint_of_another_run_or_a_damaged_one_is_refused() {
 /// An edit of a checkpoint's JSON.
 type Edit = dyn Fn(&mut Value);
 
-fn scratch(name: &str) -> String {
-    let dir = std::env::temp_dir().join(format!("vsr-checkpoint-test-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name).to_str().unwrap().to_string()
-}
-
 fn evolve(out: &str, seed: u64) -> std::process::Output {
     let line = format!(
         "evolve --shape biped-4x3 --controller attention --evals 50 --seed {seed} \
@@ -147,15 +144,6 @@ fn evolve(out: &str, seed: u64) -> std::process::Output {
         .args(line.split_whitespace())
         .output()
         .unwrap()
-}
-
-fn comparable(path: &str) -> Value {
-    let mut v: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
-    v["timing"] = Value::Null;
-    for g in v["generations"].as_array_mut().unwrap() {
-        g["wall_seconds"] = json!(0);
-    }
-    v
 }
 
 #[test]
@@ -245,84 +233,4 @@ fn a_killed_vsr_evolve_continues_to_the_uninterrupted_run_file() {
     assert!(out.status.success());
     assert_eq!(comparable(&resumed), comparable(&whole));
     assert!(!checkpoint.exists());
-}
-
-/// `vsr evolve` with `--seed 5` (see `evolve`) and extra arguments.
-fn evolve_with(out: &str, evals: u32, extra: &str) -> std::process::Output {
-    let line = format!(
-        "evolve --shape biped-4x3 --controller attention --evals {evals} --seed 5 \
-         --population 10 --seconds 2 --threads 2 --out {out} {extra}"
-    );
-    Command::new(env!("CARGO_BIN_EXE_vsr"))
-        .args(line.split_whitespace())
-        .output()
-        .unwrap()
-}
-
-#[test]
-fn a_longer_run_continues_a_shorter_runs_kept_checkpoint_bit_for_bit() {
-    let (short, long, whole) = (
-        scratch("s30.json"),
-        scratch("l50.json"),
-        scratch("w50.json"),
-    );
-    assert!(evolve_with(&short, 30, "--keep-checkpoint")
-        .status
-        .success());
-    let kept = format!("{short}.checkpoint");
-    assert!(
-        std::path::Path::new(&kept).exists(),
-        "the final checkpoint is kept"
-    );
-    let out = evolve_with(&long, 50, &format!("--continue {kept}"));
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(
-        out.status.success() && stderr.contains("generation 2"),
-        "{stderr}"
-    );
-    assert!(evolve_with(&whole, 50, "").status.success());
-    assert_eq!(comparable(&long), comparable(&whole));
-    let gens = |path: &str| comparable(path)["generations"].as_array().unwrap().clone();
-    assert_eq!(gens(&short)[..], gens(&whole)[..2]);
-
-    // A smaller budget that the kept state still lies on (generation 1 of the 30-evaluation
-    // run ends at 30 >= 25): accepted, and the 25-evaluation run from generation 0.
-    let (cut, cut_whole) = (scratch("c25.json"), scratch("w25.json"));
-    assert!(evolve_with(&cut, 25, &format!("--continue {kept}"))
-        .status
-        .success());
-    assert!(evolve_with(&cut_whole, 25, "").status.success());
-    assert_eq!(comparable(&cut), comparable(&cut_whole));
-
-    // Given again, a finished run with its kept checkpoint is left alone.
-    let before = std::fs::read_to_string(&short).unwrap();
-    let out = evolve_with(&short, 30, "--keep-checkpoint");
-    assert!(String::from_utf8_lossy(&out.stdout).contains("nothing to do"));
-    assert_eq!(std::fs::read_to_string(&short).unwrap(), before);
-
-    // A missing --continue file: a note, and the run from generation 0.
-    let fresh = scratch("f50.json");
-    let out = evolve_with(
-        &fresh,
-        50,
-        &format!("--continue {}", scratch("none.checkpoint")),
-    );
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(
-        out.status.success() && stderr.contains("does not exist"),
-        "{stderr}"
-    );
-    assert_eq!(comparable(&fresh), comparable(&whole));
-
-    // A checkpoint the run never reaches (past its budget): exit 2, nothing written.
-    let longer = scratch("k50.json");
-    assert!(evolve_with(&longer, 50, "--keep-checkpoint")
-        .status
-        .success());
-    let past = scratch("p30.json");
-    let out = evolve_with(&past, 30, &format!("--continue {longer}.checkpoint"));
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{stderr}");
-    assert!(stderr.contains("past this run's budget"), "{stderr}");
-    assert!(!std::path::Path::new(&past).exists());
 }
