@@ -19,7 +19,10 @@
  *   {type: 'length', seconds} the episode's length from now on (its speed is measured over it)
  *
  * Worker -> page
- *   {type: 'ready'}                      the wasm module is instantiated
+ *   {type: 'ready', physics}             the wasm module is instantiated; physics: the
+ *                                        core's constants the drawing needs, {@link Physics}
+ *                                        (defaults().physics, crate/src/experiment/playground.rs),
+ *                                        sent here so that no copy of them lives in the page
  *   {type: 'loaded', params, carried, voxels, controller, cells, terrainXs, terrainYs}
  *                                        a new episode replaced the previous one;
  *                                        carried: it took the edited robot's posture and motion;
@@ -35,8 +38,8 @@
  * Frame buffers (all Float32Array, n = number of voxels, lengths in floats; the same
  * layouts are documented on the Rust getters in crate/src/wasm/episode.rs):
  *   corners  8n   voxel i at 8i: outer corner points x, y in order SW, SE, NE, NW (m)
- *   areas     n   voxel i at i: area / rest area, 0.775 contracted .. 1.225 expanded
- *   bodies  12n   voxel i at 12i: four rigid corner squares (1.2 m wide) as centre x,
+ *   areas     n   voxel i at i: area / rest area, physics.areaContracted .. areaExpanded
+ *   bodies  12n   voxel i at 12i: four rigid corner squares (physics.cornerSide wide) as centre x,
  *                 centre y, angle (rad), in order SW, SE, NE, NW
  *   attention 16n or 0   voxel i at 16i: its attention matrix, 4 rows of 4 (row-major),
  *                 rows (queries) and columns (keys) in SENSOR_NAMES order, values -1 .. 1;
@@ -70,18 +73,18 @@ export const CORNER_FLOATS = 8;
 export const AREA_FLOATS = 1;
 /** Floats per voxel in `bodies`: 4 corner squares x, y, angle. */
 export const BODY_FLOATS = 12;
-/** Width of a rigid corner square (m). */
-export const CORNER_BODY_SIDE = 1.2;
-/** Area ratio of a fully contracted voxel (u = +1). */
-export const AREA_CONTRACTED = 0.775;
-/** Area ratio of a fully expanded voxel (u = -1). */
-export const AREA_EXPANDED = 1.225;
 /** Floats per voxel in `attention`: a 4 x 4 matrix. */
 export const ATTENTION_FLOATS = 16;
 /** A voxel's sensors, in the order of its readings and of its attention rows and columns. */
 export const SENSOR_NAMES = Object.freeze(['area', 'vx', 'vy', 'touch']);
-/** Simulation time step (s). */
-export const DT = 1 / 60;
+
+/**
+ * @typedef {object} Physics  the simulation's constants, from the core (the worker's 'ready')
+ * @property {number} timeStep        simulation time step (s)
+ * @property {number} areaContracted  area ratio of a fully contracted voxel (u = +1)
+ * @property {number} areaExpanded    area ratio of a fully expanded voxel (u = -1)
+ * @property {number} cornerSide      width of a rigid corner square (m)
+ */
 
 /**
  * @typedef {object} EpisodeParams
@@ -190,7 +193,10 @@ export function frameIsConsistent(frame) {
  *                                        (Float32Array, transferred); slot = its job index
  *   {type: 'crash'}                      fail as a crash would (see 'crash-worker')
  * Evaluator -> coordinator
- *   {type: 'ready'}                      the wasm module is instantiated
+ *   {type: 'ready', physics}             the wasm module is instantiated; physics: the
+ *                                        core's constants the drawing needs, {@link Physics}
+ *                                        (defaults().physics, crate/src/experiment/playground.rs),
+ *                                        sent here so that no copy of them lives in the page
  *   {type: 'result', slot, fitness}      fitness in m/s, NaN for an exploded episode
  *   {type: 'error', message}             the job was malformed, or wasm failed to load
  */

@@ -92,6 +92,7 @@ export class Lane {
   /** @param {any} msg */
   onMessage(msg) {
     switch (msg.type) {
+      case FromWorker.READY: this.renderer.setPhysics(msg.physics); break;
       case FromWorker.LOADED:
         this.renderer.setTerrain(msg.terrainXs, msg.terrainYs, true);
         this.loaded = true;

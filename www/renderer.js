@@ -3,9 +3,12 @@
  * Draws one frame on a canvas: the terrain polyline filled below, the voxels as quads
  * coloured by area ratio (red contracted, yellow rest, green expanded), their rigid
  * corner squares outlined, a metre grid and scale, with a camera following the robot.
- * World units are metres with y up; the canvas transform does the flip.
+ * World units are metres with y up; the canvas transform does the flip. The core's constants
+ * (area limits, corner size) come from the simulation worker's 'ready' ({@link Renderer.setPhysics});
+ * the robot is drawn once they are known.
  */
-import { AREA_CONTRACTED, AREA_EXPANDED, BODY_FLOATS, CORNER_BODY_SIDE, CORNER_FLOATS } from './protocol.js';
+import { BODY_FLOATS, CORNER_FLOATS } from './protocol.js';
+import { voxelAt } from './voxel-pick.js';
 
 /** Metres of world visible across the canvas width (at least). */
 const VIEW_WIDTH_M = 48;
@@ -21,12 +24,12 @@ const YELLOW = [246, 200, 30];
 const GREEN = [39, 160, 80];
 
 /**
- * Colour of a voxel with area ratio `a`: red at 0.775, yellow at 1, green at 1.225.
- * @param {number} a
+ * Colour of a voxel with area ratio `a`: red fully contracted, yellow at 1, green fully expanded.
+ * @param {number} a @param {import('./protocol.js').Physics} physics
  * @returns {string} a CSS rgb() colour
  */
-export function areaColour(a) {
-  const t = Math.min(1, Math.max(0, (a - AREA_CONTRACTED) / (AREA_EXPANDED - AREA_CONTRACTED)));
+function areaColour(a, { areaContracted: lo, areaExpanded: hi }) {
+  const t = Math.min(1, Math.max(0, (a - lo) / (hi - lo)));
   const [from, to, u] = t < 0.5 ? [RED, YELLOW, t * 2] : [YELLOW, GREEN, t * 2 - 1];
   const c = from.map((v, i) => Math.round(v + (to[i] - v) * u));
   return `rgb(${c[0]}, ${c[1]}, ${c[2]})`;
@@ -50,6 +53,13 @@ export class Renderer {
     this.origin = 0;
     /** A voxel outlined on the robot (the one the attention reader shows), or -1. */
     this.highlight = -1;
+    /** The core's constants, from the simulation worker. @type {import('./protocol.js').Physics | null} */
+    this.physics = null;
+  }
+
+  /** The core's constants, as the simulation worker sent them ('ready'). @param {import('./protocol.js').Physics} physics */
+  setPhysics(physics) {
+    this.physics = physics;
   }
 
   /**
@@ -90,7 +100,7 @@ export class Renderer {
     ctx.setTransform(s, 0, 0, -s, w / 2 - s * this.camera.x, h / 2 + s * this.camera.y);
     this.drawGrid(view);
     this.drawTerrain(view);
-    if (this.frame) this.drawRobot(this.frame, s);
+    if (this.frame && this.physics) this.drawRobot(this.frame, s, this.physics);
     ctx.setTransform(1, 0, 0, 1, 0, 0);
     this.drawLabels(view, dpr);
   }
@@ -131,28 +141,7 @@ export class Renderer {
     const rect = this.canvas.getBoundingClientRect();
     const px = (clientX - rect.left) * view.dpr;
     const py = (clientY - rect.top) * view.dpr;
-    const wx = view.left + px / view.s;
-    const wy = view.top - py / view.s;
-    let best = null;
-    for (let i = 0; i < frame.voxels; i++) {
-      const c = frame.corners.subarray(i * CORNER_FLOATS, (i + 1) * CORNER_FLOATS);
-      const cx = (c[0] + c[2] + c[4] + c[6]) / 4;
-      const cy = (c[1] + c[3] + c[5] + c[7]) / 4;
-      // The voxel's own axes: east = SE - SW, north = NW - SW, each about one cell long.
-      const ex = (c[2] - c[0] + c[4] - c[6]) / 2;
-      const ey = (c[3] - c[1] + c[5] - c[7]) / 2;
-      const nx = (c[6] - c[0] + c[4] - c[2]) / 2;
-      const ny = (c[7] - c[1] + c[5] - c[3]) / 2;
-      const u = ((wx - cx) * ex + (wy - cy) * ey) / (ex * ex + ey * ey);
-      const v = ((wx - cx) * nx + (wy - cy) * ny) / (nx * nx + ny * ny);
-      const d = Math.max(Math.abs(u), Math.abs(v));
-      if (d < 1.5 && (!best || d < best.d)) best = { voxel: i, u, v, d };
-    }
-    if (!best) return null;
-    if (best.d <= 0.5) return { voxel: best.voxel, dx: 0, dy: 0 };
-    return Math.abs(best.u) > Math.abs(best.v)
-      ? { voxel: best.voxel, dx: Math.sign(best.u), dy: 0 }
-      : { voxel: best.voxel, dx: 0, dy: Math.sign(best.v) };
+    return voxelAt(frame, view.left + px / view.s, view.top - py / view.s);
   }
 
   /** Faint vertical lines every 5 m so that motion shows even on flat ground. */
@@ -188,32 +177,27 @@ export class Renderer {
     ctx.stroke();
   }
 
-  /** Voxel quads coloured by area ratio, then the corner squares outlined on top. */
-  drawRobot(/** @type {import('./protocol.js').Frame} */ frame, /** @type {number} */ s) {
+  /**
+   * Voxel quads coloured by area ratio, then the corner squares outlined on top.
+   * @param {import('./protocol.js').Frame} frame @param {number} s @param {import('./protocol.js').Physics} physics
+   */
+  drawRobot(frame, s, physics) {
     const { ctx } = this;
     const { corners, areas, bodies, voxels } = frame;
     ctx.lineWidth = 1.2 / s;
     ctx.strokeStyle = 'rgba(30, 30, 30, 0.7)';
     for (let i = 0; i < voxels; i++) {
-      const c = i * CORNER_FLOATS;
-      ctx.beginPath();
-      ctx.moveTo(corners[c], corners[c + 1]);
-      for (let k = 2; k < CORNER_FLOATS; k += 2) ctx.lineTo(corners[c + k], corners[c + k + 1]);
-      ctx.closePath();
-      ctx.fillStyle = areaColour(areas[i]);
+      voxelPath(ctx, corners, i);
+      ctx.fillStyle = areaColour(areas[i], physics);
       ctx.fill();
       ctx.stroke();
     }
     ctx.strokeStyle = 'rgba(20, 20, 20, 0.55)';
     ctx.beginPath();
-    for (let b = 0; b < voxels * BODY_FLOATS; b += 3) squarePath(ctx, bodies[b], bodies[b + 1], bodies[b + 2]);
+    for (let b = 0; b < voxels * BODY_FLOATS; b += 3) squarePath(ctx, bodies[b], bodies[b + 1], bodies[b + 2], physics.cornerSide);
     ctx.stroke();
     if (this.highlight >= 0 && this.highlight < voxels) {
-      const c = this.highlight * CORNER_FLOATS;
-      ctx.beginPath();
-      ctx.moveTo(corners[c], corners[c + 1]);
-      for (let k = 2; k < CORNER_FLOATS; k += 2) ctx.lineTo(corners[c + k], corners[c + k + 1]);
-      ctx.closePath();
+      voxelPath(ctx, corners, this.highlight);
       ctx.strokeStyle = '#2f6fb0';
       ctx.lineWidth = 5 / s;
       ctx.stroke();
@@ -244,12 +228,21 @@ export class Renderer {
 
 /** @typedef {{s: number, left: number, right: number, bottom: number, top: number}} View */
 
+/** Starts a path around voxel `i`'s quad. @param {CanvasRenderingContext2D} ctx @param {Float32Array} corners @param {number} i */
+function voxelPath(ctx, corners, i) {
+  const c = i * CORNER_FLOATS;
+  ctx.beginPath();
+  ctx.moveTo(corners[c], corners[c + 1]);
+  for (let k = 2; k < CORNER_FLOATS; k += 2) ctx.lineTo(corners[c + k], corners[c + k + 1]);
+  ctx.closePath();
+}
+
 /**
- * Adds the outline of a rigid corner square centred at (x, y) rotated by `angle`.
- * @param {CanvasRenderingContext2D} ctx @param {number} x @param {number} y @param {number} angle
+ * Adds the outline of a rigid corner square of width `side` centred at (x, y) rotated by `angle`.
+ * @param {CanvasRenderingContext2D} ctx @param {number} x @param {number} y @param {number} angle @param {number} side
  */
-function squarePath(ctx, x, y, angle) {
-  const h = CORNER_BODY_SIDE / 2;
+function squarePath(ctx, x, y, angle, side) {
+  const h = side / 2;
   const cos = Math.cos(angle) * h;
   const sin = Math.sin(angle) * h;
   ctx.moveTo(x - cos + sin, y - sin - cos);

@@ -109,7 +109,7 @@ export class Viewer {
   /** @param {any} msg a message from the worker */
   onMessage(msg) {
     switch (msg.type) {
-      case FromWorker.READY: break;
+      case FromWorker.READY: this.renderer.setPhysics(msg.physics); break;
       case FromWorker.LOADED:
         this.current = msg.params;
         this.renderer.setTerrain(msg.terrainXs, msg.terrainYs, !msg.carried);

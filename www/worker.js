@@ -7,7 +7,7 @@
  */
 import init, { Episode, defaults, start as installPanicHook } from './pkg/vsr.js';
 import { loadWasm, messageOf } from './kit.js';
-import { DT, FromWorker, ToWorker } from './protocol.js';
+import { FromWorker, ToWorker } from './protocol.js';
 
 /** Longest run of stepping before yielding to the message queue (ms). */
 const SLICE_BUDGET_MS = 8;
@@ -20,7 +20,14 @@ const MAX_LAG_S = 0.25;
 /** Window over which the speed figures are measured (wall ms). */
 const RATE_WINDOW_MS = 500;
 
-const ready = loadWasm(init, installPanicHook);
+/** The simulation time step (s), the core's: it paces the stepping. */
+let dt = NaN;
+/** The core's constants, once the module is loaded (the page's drawing gets them in 'ready'). */
+const ready = loadWasm(init, installPanicHook).then(() => {
+  const physics = /** @type {import('./protocol.js').Physics} */ (defaults().physics);
+  dt = physics.timeStep;
+  return physics;
+});
 
 /** @type {Episode | null} */
 let episode = null;
@@ -168,7 +175,7 @@ function stepSlice(ep) {
 function targetSteps(ep, now) {
   const want = anchor.sim + ((now - anchor.wall) / 1000) * speed;
   if (want - ep.time > MAX_LAG_S) anchor = { wall: now, sim: ep.time };
-  return Math.max(0, Math.floor((Math.min(want, ep.time + MAX_LAG_S) - ep.time) / DT + 1e-6));
+  return Math.max(0, Math.floor((Math.min(want, ep.time + MAX_LAG_S) - ep.time) / dt + 1e-6));
 }
 
 function postFrame() {
@@ -201,6 +208,6 @@ function reportError(message, fatal) {
 }
 
 ready.then(
-  () => self.postMessage({ type: FromWorker.READY }),
+  (physics) => self.postMessage({ type: FromWorker.READY, physics }),
   (error) => reportError(messageOf(error), true),
 );

@@ -10,7 +10,7 @@
  */
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
-import { openBare, screenshot, start } from './harness.mjs';
+import { openBare, robotPixels, screenshot, start } from './harness.mjs';
 
 /** @type {Awaited<ReturnType<typeof start>>} */ let env;
 
@@ -53,6 +53,9 @@ test('the example page: three robots walk, each on its own canvas; a click holds
     return { width: canvas.width, height: canvas.height, shown: !canvas.hidden };
   }));
   for (const c of canvases) assert.ok(c.shown && c.width > 100 && c.height > 50, `a canvas of its own, sized by CSS: ${JSON.stringify(c)}`);
+  for (const id of ['biped', 'comb', 'transplant']) { // coloured by the core's area limits, sent by its worker
+    assert.ok(await page.locator(`#${id} >> canvas`).evaluate(robotPixels) > 100, `${id}'s robot is drawn in its colours`);
+  }
   await screenshot(page, 'embed-walking.png');
 
   const biped = page.locator('#biped');

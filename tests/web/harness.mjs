@@ -150,3 +150,16 @@ export async function screenshot(page, name) {
   await page.screenshot({ path: file, fullPage: true });
   return file;
 }
+
+/**
+ * How many pixels of a canvas have a voxel's colour (red, yellow or green by its area; not the
+ * sky, the ground or the lines): the robot is drawn. Runs in the page: `locator.evaluate(robotPixels)`.
+ * @param {Element} canvas @returns {number}
+ */
+export function robotPixels(canvas) {
+  const c = /** @type {HTMLCanvasElement} */ (canvas);
+  const data = c.getContext('2d')?.getImageData(0, 0, c.width, c.height).data ?? [];
+  let n = 0;
+  for (let i = 0; i < data.length; i += 4) if (Math.max(data[i], data[i + 1]) > 140 && data[i + 2] < 100 && Math.abs(data[i] - data[i + 1]) > 20) n++;
+  return n;
+}

@@ -12,7 +12,7 @@ import { execFileSync } from 'node:child_process';
 import { existsSync } from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { BIN, ROOT, SCREENSHOTS, byTestId, openPage, screenshot, start, waitForFigure, waitForText } from './harness.mjs';
+import { BIN, ROOT, SCREENSHOTS, byTestId, openPage, robotPixels, screenshot, start, waitForFigure, waitForText } from './harness.mjs';
 
 const BRAINS = ['attention', 'mlp-comm', 'mlp'];
 const file = (/** @type {string} */ c) => `pretrained/biped-4x3-${c}.json`;
@@ -61,6 +61,8 @@ test('three pretrained brains race on biped-4x3: vsr evaluate\'s speeds, in the 
   }
   const [attention, comm, mlp] = raced.map((r) => r.speed);
   assert.ok(attention > comm && comm > mlp, `the study's order attention > MLP-Comm > MLP: ${figures}`);
+  const drawn = await Promise.all((await page.locator('.race-robot canvas').all()).map((c) => c.evaluate(robotPixels)));
+  assert.ok(drawn.length === 3 && drawn.every((n) => n > 100), `each lane draws its robot in its colours: ${drawn} pixels`);
   await screenshot(page, 'race-1400.png');
 
   await addModule(page, file('attention'));

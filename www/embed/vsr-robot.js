@@ -153,6 +153,7 @@ export class VsrRobot extends HTMLElement {
   /** @param {any} msg a message from the simulation worker */
   onMessage(msg) {
     switch (msg.type) {
+      case FromWorker.READY: this.renderer.setPhysics(msg.physics); break;
       case FromWorker.LOADED:
         this.loaded = true;
         this.show('');
