@@ -6,8 +6,9 @@
 //! before the first ground contact and gaits only as distributions.
 
 use serde_json::Value;
-use vsr::experiment::{gait_ensemble, GaitEpisode, PhaseGait};
+use vsr::experiment::{GaitEpisode, PhaseGait};
 use vsr::simulation::{Shape, Terrain, World};
+use vsr::study::fidelity::{measure, Agreement, Fidelity, Reference};
 
 fn fixture(name: &str) -> Value {
     let path = format!("{}/tests/fixtures/{name}", env!("CARGO_MANIFEST_DIR"));
@@ -101,21 +102,31 @@ fn gait_velocities_fall_in_the_reference_distributions() {
     );
 }
 
-/// Spearman rank correlation (no ties expected between velocities).
-fn rank_correlation(a: &[f64], b: &[f64]) -> f64 {
-    let ranks = |v: &[f64]| {
-        let mut idx: Vec<usize> = (0..v.len()).collect();
-        idx.sort_by(|&i, &j| v[i].total_cmp(&v[j]));
-        let mut r = vec![0.0; v.len()];
-        for (k, &i) in idx.iter().enumerate() {
-            r[i] = k as f64;
-        }
-        r
-    };
-    let (ra, rb) = (ranks(a), ranks(b));
-    let n = a.len() as f64;
-    let d2: f64 = ra.iter().zip(&rb).map(|(x, y)| (x - y) * (x - y)).sum();
-    1.0 - 6.0 * d2 / (n * (n * n - 1.0))
+/// The reference's ensembles in `name`, measured here (`vsr fidelity`), with the summary
+/// printed when an assertion fails.
+fn measured(name: &str) -> (Fidelity, Agreement, String) {
+    let path = format!("{}/tests/fixtures/{name}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).expect("fixture present");
+    let f = measure(&Reference::parse(&text).expect("a reference file")).expect("stable");
+    let a = f.agreement();
+    let rows: Vec<String> = f
+        .gaits
+        .iter()
+        .map(|g| {
+            format!(
+                "f={} phi={}: {:.3} +- {:.3} vs {:.3} +- {:.3} (CCD off {:?})",
+                g.f,
+                g.phi,
+                g.ours.mean,
+                g.ours.sd,
+                g.reference.mean,
+                g.reference.sd,
+                g.ccd_free.map(|c| c.mean)
+            )
+        })
+        .collect();
+    let summary = format!("{a:?}\n{}", rows.join("\n"));
+    (f, a, summary)
 }
 
 #[test]
@@ -124,45 +135,18 @@ fn gait_ensembles_match_the_reference_distributions() {
     // starts shifted by k x 1e-5 m, as the reference did; its ensemble mean must fall
     // within the reference mean +- 2 sd, the gaits must rank alike, the average speed
     // must match, and the ensembles must spread (chaos) on the scale of the reference.
-    let r = fixture("gaits-biped-flat.json");
-    let conditions = r["conditions"].as_array().expect("list");
-    let shape = Shape::parse("biped-4x3").expect("valid");
-    let flat = Terrain::parse("flat").expect("valid");
-    let (mut ours, mut theirs, mut sd_ratios) = (vec![], vec![], vec![]);
-    let (mut inside, mut report) = (0, vec![]);
-    for c in conditions {
-        let gait = PhaseGait::new(f(&c["f"]), f(&c["phi"])).expect("finite");
-        let e = gait_ensemble(&shape, &flat, gait, 30.0, 17, 0.0).expect("stable");
-        let (mean, sd) = (f(&c["mean_velocity"]), f(&c["sd_velocity"]));
-        let our_sd = e.sd.expect("17 runs");
-        inside += usize::from((e.mean - mean).abs() <= 2.0 * sd);
-        ours.push(e.mean);
-        theirs.push(mean);
-        sd_ratios.push(our_sd / sd);
-        report.push(format!(
-            "f={} phi={}: {:.3} +- {our_sd:.3} vs {mean:.3} +- {sd:.3}",
-            c["f"], c["phi"], e.mean
-        ));
-    }
-    let n = conditions.len() as f64;
-    let rho = rank_correlation(&ours, &theirs);
-    let (avg, ref_avg) = (ours.iter().sum::<f64>() / n, theirs.iter().sum::<f64>() / n);
+    let (f, a, summary) = measured("gaits-biped-flat.json");
+    let n = a.gaits as f64;
+    let mut sd_ratios: Vec<f64> = f.gaits.iter().map(|g| g.ours.sd / g.reference.sd).collect();
     sd_ratios.sort_by(f64::total_cmp);
     let median_ratio = sd_ratios[sd_ratios.len() / 2];
-    let summary = format!(
-        "{inside}/{n} within 2 sd, rank correlation {rho:.2}, mean {avg:.3} vs {ref_avg:.3}, \
-         median sd ratio {median_ratio:.2}\n{}",
-        report.join("\n")
+    assert!(a.within_2sd as f64 >= 0.9 * n, "{summary}");
+    assert!(a.rho >= 0.6, "{summary}");
+    assert!((a.mean_ours - a.mean_reference).abs() <= 0.1, "{summary}");
+    assert!(
+        (0.25..=4.0).contains(&median_ratio),
+        "{median_ratio}\n{summary}"
     );
-    assert!(inside as f64 >= 0.9 * n, "{summary}");
-    assert!(rho >= 0.6, "{summary}");
-    assert!((avg - ref_avg).abs() <= 0.1, "{summary}");
-    assert!((0.25..=4.0).contains(&median_ratio), "{summary}");
-}
-
-/// Mean absolute difference between two lists of ensemble means.
-fn mean_abs_difference(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| (x - y).abs()).sum::<f64>() / a.len() as f64
 }
 
 #[test]
@@ -172,48 +156,12 @@ fn comb_ensembles_match_the_reference_and_its_ccd_free_variant_better() {
     // there, the reference with CCD switched off (an artefact we do not reproduce, SPEC).
     // Like the biped: means within 2 sd, the gaits rank alike, the average speed matches.
     // And the finding docs/RESULTS.md builds on: our comb is closer to the CCD-free variant.
-    let r = fixture("gaits-comb-flat.json");
-    let conditions = r["conditions"].as_array().expect("list");
-    let shape = Shape::parse("comb-7x2").expect("valid");
-    let flat = Terrain::parse("flat").expect("valid");
-    let (mut ours, mut theirs, mut report) = (vec![], vec![], vec![]);
-    let (mut ours_cf, mut ccd_free, mut ref_cf) = (vec![], vec![], vec![]);
-    let mut inside = 0;
-    for c in conditions {
-        let gait = PhaseGait::new(f(&c["f"]), f(&c["phi"])).expect("finite");
-        let e = gait_ensemble(&shape, &flat, gait, 30.0, 17, 0.0).expect("stable");
-        let (mean, sd) = (f(&c["mean_velocity"]), f(&c["sd_velocity"]));
-        inside += usize::from((e.mean - mean).abs() <= 2.0 * sd);
-        ours.push(e.mean);
-        theirs.push(mean);
-        let cf = c.get("ccd_free").map(|v| f(&v["mean_velocity"]));
-        if let Some(cf) = cf {
-            ours_cf.push(e.mean);
-            ccd_free.push(cf);
-            ref_cf.push(mean);
-        }
-        report.push(format!(
-            "f={} phi={}: {:.3} vs {mean:.3} +- {sd:.3} (CCD-free {cf:?})",
-            c["f"], c["phi"], e.mean
-        ));
-    }
-    let n = conditions.len() as f64;
-    let rho = rank_correlation(&ours, &theirs);
-    let (avg, ref_avg) = (ours.iter().sum::<f64>() / n, theirs.iter().sum::<f64>() / n);
-    let (to_ref, to_cf) = (
-        mean_abs_difference(&ours_cf, &ref_cf),
-        mean_abs_difference(&ours_cf, &ccd_free),
-    );
-    let summary = format!(
-        "{inside}/{n} within 2 sd, rank correlation {rho:.2}, mean {avg:.3} vs {ref_avg:.3}; \
-         on the {} CCD-free gaits mean |ours - reference| {to_ref:.3}, |ours - CCD-free| \
-         {to_cf:.3}\n{}",
-        ours_cf.len(),
-        report.join("\n")
-    );
-    assert!(inside as f64 >= 0.9 * n, "{summary}");
-    assert!(rho >= 0.6, "{summary}");
-    assert!((avg - ref_avg).abs() <= 0.1, "{summary}");
-    assert!(ours_cf.len() >= 10, "{summary}");
-    assert!(to_cf < to_ref, "{summary}");
+    let (_, a, summary) = measured("gaits-comb-flat.json");
+    let n = a.gaits as f64;
+    assert!(a.within_2sd as f64 >= 0.9 * n, "{summary}");
+    assert!(a.rho >= 0.6, "{summary}");
+    assert!((a.mean_ours - a.mean_reference).abs() <= 0.1, "{summary}");
+    let c = a.ccd_free.expect("gaits measured with CCD off");
+    assert!(c.gaits >= 10, "{summary}");
+    assert!(c.to_ccd_free < c.to_reference, "{summary}");
 }

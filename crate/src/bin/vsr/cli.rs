@@ -32,6 +32,8 @@ enum Command {
     Finetune(crate::finetune::Args),
     /// Frozen-attention ablation: velocity with the attention frozen at each second.
     Ablate(crate::ablate::Args),
+    /// Run the reference simulator's gait ensembles here and compare (--reference FILE).
+    Fidelity(crate::fidelity::Args),
     /// A study as a campaign file: plan its jobs, run them, merge the results into a CSV.
     #[command(subcommand)]
     Campaign(crate::campaign::Command),
@@ -59,6 +61,7 @@ pub fn run() -> i32 {
         Command::Validate(args) => crate::validate::run(args),
         Command::Finetune(args) => crate::finetune::run(args),
         Command::Ablate(args) => crate::ablate::run(args),
+        Command::Fidelity(args) => crate::fidelity::run(args),
         Command::Campaign(command) => crate::campaign::run(command),
         Command::Report(args) => crate::campaign::report::run(args),
     };

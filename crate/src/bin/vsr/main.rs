@@ -3,7 +3,7 @@
 //!
 //! Layout: `cli.rs` parses and dispatches; one file per subcommand (`simulate`, `terrain`,
 //! `bench` with `bench/evolution.rs`, `params`, `evolve`, `evaluate`, `validate`, `finetune`,
-//! `ablate`); the campaign subcommands and `vsr report` in `campaign/`; what several share in
+//! `ablate`, `fidelity`); the campaign subcommands and `vsr report` in `campaign/`; what several share in
 //! one place each: `args.rs` (argument types), `evolution.rs` (running an evolution),
 //! `checkpoint.rs`, `trajectory.rs`, `runfile.rs` and `atomic.rs` (files). Subcommands never
 //! import each other.
@@ -28,6 +28,8 @@ mod evaluate;
 mod evolution;
 #[cfg(not(target_arch = "wasm32"))]
 mod evolve;
+#[cfg(not(target_arch = "wasm32"))]
+mod fidelity;
 #[cfg(not(target_arch = "wasm32"))]
 mod finetune;
 #[cfg(not(target_arch = "wasm32"))]

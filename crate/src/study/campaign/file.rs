@@ -27,6 +27,9 @@
 //! source_evals = 20000
 //! evals = 10000
 //! scratch_evals = 30000          # from-scratch runs on each target shape, for comparison
+//!
+//! [[fidelity]]                   # the simulator against the reference's gait ensembles
+//! reference = "../tests/fixtures/gaits-comb-flat.json"   # relative to the campaign file
 //! ```
 
 use crate::controllers::ControllerKind;
@@ -66,6 +69,9 @@ pub struct Campaign {
     /// Fine-tuning studies.
     #[serde(default)]
     pub finetune: Vec<FinetuneGroup>,
+    /// Gait ensembles measured on the reference simulator, measured here too.
+    #[serde(default)]
+    pub fidelity: Vec<FidelityGroup>,
 }
 
 /// The frozen-attention ablation's settings.
@@ -136,6 +142,15 @@ pub struct FinetuneGroup {
     pub seeds: Option<Vec<u64>>,
 }
 
+/// A reference file of gait ensembles (`study::fidelity`) to measure this simulator against.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FidelityGroup {
+    /// The reference file, relative to the campaign file (after [`Campaign::relative_to`],
+    /// to the working folder).
+    pub reference: String,
+}
+
 fn paper_seconds() -> f64 {
     PAPER_SECONDS
 }
@@ -159,6 +174,16 @@ impl Campaign {
             .map_err(|e| Error::Input(format!("the campaign file is not valid: {e}")))?;
         campaign.check()?;
         Ok(campaign)
+    }
+
+    /// The campaign with its input paths (the fidelity references) taken relative to `dir`,
+    /// the campaign file's folder.
+    pub fn relative_to(mut self, dir: &std::path::Path) -> Campaign {
+        for g in &mut self.fidelity {
+            let path = path_clean::clean(dir.join(&g.reference));
+            g.reference = path.display().to_string();
+        }
+        self
     }
 
     fn check(&self) -> Result<()> {
@@ -191,6 +216,14 @@ impl Campaign {
                     "fine-tuning group '{}' transfers an attention block: its controller must \
                      be attention or slow-attention, not {}",
                     g.name, g.controller
+                ));
+            }
+        }
+        for g in &self.fidelity {
+            if !g.reference.ends_with(".json") {
+                return bad(format!(
+                    "fidelity reference '{}' must be a .json file of gait ensembles",
+                    g.reference
                 ));
             }
         }

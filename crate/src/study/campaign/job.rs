@@ -44,6 +44,11 @@ pub enum Task {
         /// Episode seconds.
         seconds: f64,
     },
+    /// The reference's gait ensembles measured here (`vsr fidelity`).
+    Fidelity {
+        /// The reference file.
+        reference: PathBuf,
+    },
 }
 
 /// An evolutionary run of a campaign.

@@ -5,7 +5,8 @@
 //! - `runs/STEM.json`: run files; STEM is `SHAPE-CONTROLLER-EVALS-sSEED` from scratch and
 //!   `SOURCESHAPE-CONTROLLER-SOURCEEVALS-to-SHAPE-EVALS-sSEED` for fine-tuning;
 //! - `validation/STEM.SET.json`: `vsr validate --json` of a run's best on a set;
-//! - `ablation/STEM.json`: `vsr ablate --json` of a run's best.
+//! - `ablation/STEM.json`: `vsr ablate --json` of a run's best;
+//! - `fidelity/NAME.json`: `vsr fidelity` of the reference file NAME.json (stage 1).
 //!
 //! Stages: a run that needs no other run is stage 1; a fine-tuning run (it needs its source
 //! run) or a run that continues a shorter one is one stage after the run it needs; a run's
@@ -199,8 +200,23 @@ pub fn plan(c: &Campaign, out: &Path) -> Vec<Job> {
             });
         }
     }
+    for g in &c.fidelity {
+        let reference = PathBuf::from(&g.reference);
+        jobs.push(Job {
+            stage: 1,
+            out: fidelity_path(out, &reference),
+            task: Task::Fidelity { reference },
+            needs: vec![],
+        });
+    }
     jobs.sort_by_key(|j| j.stage);
     jobs
+}
+
+/// The measurement of the reference file `reference` under `out`.
+pub fn fidelity_path(out: &Path, reference: &Path) -> PathBuf {
+    let name = reference.file_name().unwrap_or(reference.as_os_str());
+    out.join("fidelity").join(name)
 }
 
 /// The run from scratch that `r` continues: the same shape, controller and seed with the

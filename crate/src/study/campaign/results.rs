@@ -5,6 +5,7 @@
 use super::file::Campaign;
 use super::plan::{runs, RunSpec};
 use crate::experiment::{AblationPoint, RunFile, Validation, ValidationSet};
+use crate::study::fidelity::Fidelity;
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 
@@ -68,6 +69,8 @@ pub struct Results {
     pub data: Vec<(RunSpec, RunData)>,
     /// Planned output files not found.
     pub missing: Vec<PathBuf>,
+    /// The fidelity measurements found, with their reference files, in campaign order.
+    pub fidelity: Vec<(PathBuf, Fidelity)>,
 }
 
 impl Results {
@@ -89,6 +92,7 @@ impl Results {
             campaign,
             data,
             missing: Vec::new(),
+            fidelity: Vec::new(),
         }
     }
 

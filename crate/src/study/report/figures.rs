@@ -1,5 +1,6 @@
-//! The data of the report's figures, ready to draw: lines with a band across seeds, and box
-//! plots. The command line draws them (SVG); nothing here knows about pixels.
+//! The data of the report's figures, ready to draw: lines with a band across seeds, box
+//! plots, and points against the line y = x. The command line draws them (SVG); nothing here
+//! knows about pixels.
 
 use crate::experiment::ValidationSet;
 use crate::study::campaign::RunData;
@@ -38,6 +39,19 @@ pub enum Plot {
     Lines(Vec<Band>),
     /// Box plots (validation velocities).
     Boxes(Vec<BoxData>),
+    /// Points of y against x, with the line y = x (ours against the reference).
+    Versus(Vec<Points>),
+}
+
+/// A series of points, optionally with a horizontal error bar on each.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Points {
+    /// Legend entry.
+    pub label: String,
+    /// (x, y) of each point.
+    pub points: Vec<(f64, f64)>,
+    /// Half-width of each point's horizontal bar (empty: no bars).
+    pub x_error: Vec<f64>,
 }
 
 /// A figure to draw into `file` (an SVG name, no folder).

@@ -14,7 +14,8 @@
 //! `fig4-GROUP-SHAPE-EVALS-SET.svg` validation boxes; `fig6-GROUP-SHAPE-EVALS.svg`
 //! ablation; `fig7-GROUP-SOURCE-to-TARGET.svg` fine-tuning against from scratch over the
 //! evaluations on the target shape (`...-total.svg`: after the source's evaluations);
-//! `fig8-GROUP-SHAPE-EVALS.svg` alpha and eta of slow attention.
+//! `fig8-GROUP-SHAPE-EVALS.svg` alpha and eta of slow attention; `fidelity-NAME.svg` our gait
+//! ensembles against the reference file NAME's.
 
 use crate::controllers::ControllerKind;
 use crate::study::campaign::file::EvolveGroup;
@@ -24,6 +25,7 @@ use std::fmt::Write;
 
 mod ablation;
 mod families;
+mod fidelity;
 pub mod figures;
 mod finetune;
 mod plateau;
@@ -72,6 +74,7 @@ pub fn report(results: &Results) -> Report {
             finetune_section(results, g, pair, &mine, &mut r);
         }
     }
+    fidelity::fidelity_section(results, &mut r);
     r
 }
 

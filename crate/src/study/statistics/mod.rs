@@ -1,9 +1,10 @@
 //! Statistics for comparing runs (the paper's "5 runs per configuration, Mann-Whitney U"):
 //! summaries and order statistics of small samples, the two-sided Mann-Whitney U test with
 //! its effect size, Holm's correction, the Hodges-Lehmann shift with its exact interval, the
-//! paired signed-rank test, and bootstrap intervals and power from fixed seeds. Plain
+//! paired signed-rank test, Spearman's rank correlation, and bootstrap intervals and power from fixed seeds. Plain
 //! functions over `&[f64]`; no I/O.
 
+mod correlation;
 mod holm;
 mod mann_whitney;
 mod normal;
@@ -14,6 +15,7 @@ mod summary;
 mod wilcoxon;
 
 pub use crate::quantiles::{median, quantile};
+pub use correlation::spearman;
 pub use holm::holm;
 pub use mann_whitney::{mann_whitney, Method, UTest};
 pub use order_ci::{median_interval, Interval};

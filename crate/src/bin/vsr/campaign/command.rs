@@ -40,6 +40,9 @@ pub fn args(job: &Job, threads: usize) -> Vec<String> {
             &seconds.to_string(),
             "--json",
         ]),
+        Task::Fidelity { reference } => {
+            words(&["fidelity", "--reference", &reference.display().to_string()])
+        }
     };
     args.extend(["--out".to_string(), out]);
     if job.threaded() {

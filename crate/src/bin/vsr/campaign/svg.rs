@@ -4,7 +4,7 @@
 
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
-use vsr::study::report::figures::{Band, BoxData, Figure, Plot};
+use vsr::study::report::figures::{Band, BoxData, Figure, Plot, Points};
 use vsr::{Error, Result};
 
 const SIZE: (u32, u32) = (800, 500);
@@ -48,6 +48,7 @@ pub fn draw(figure: &Figure) -> Result<String> {
         match &figure.plot {
             Plot::Lines(bands) => lines(&root, figure, bands)?,
             Plot::Boxes(boxes) => boxes_plot(&root, figure, boxes)?,
+            Plot::Versus(series) => versus(&root, figure, series)?,
         }
         root.present().map_err(plot_error)?;
     }
@@ -190,4 +191,60 @@ fn boxes_plot(root: &Area, figure: &Figure, boxes: &[BoxData]) -> Result<()> {
         chart.draw_series(dots).map_err(plot_error)?;
     }
     Ok(())
+}
+
+/// Points of y against x with their horizontal bars, over the grey line y = x; x and y share
+/// one range so that the line is the diagonal.
+fn versus(root: &Area, figure: &Figure, series: &[Points]) -> Result<()> {
+    let ends = series.iter().flat_map(|s| {
+        let bars = s
+            .points
+            .iter()
+            .zip(s.x_error.iter().chain(std::iter::repeat(&0.0)));
+        bars.flat_map(|(&(x, y), e)| [x - e, x + e, y])
+    });
+    let both = range(ends);
+    let rows = series.len() as f64;
+    let ys = both.start..both.end + (both.end - both.start) * (0.08 + 0.06 * rows);
+    let mut chart = chart(root, figure, both.clone(), ys)?;
+    chart
+        .configure_mesh()
+        .x_desc(&figure.x_label)
+        .y_desc(&figure.y_label)
+        .light_line_style(TRANSPARENT)
+        .draw()
+        .map_err(plot_error)?;
+    let diagonal = vec![(both.start, both.start), (both.end, both.end)];
+    chart
+        .draw_series(std::iter::once(PathElement::new(
+            diagonal,
+            RGBColor(150, 150, 150).stroke_width(1),
+        )))
+        .map_err(plot_error)?;
+    for (i, s) in series.iter().enumerate() {
+        let color = pick(i);
+        let bars = s.points.iter().zip(&s.x_error).map(|(&(x, y), &e)| {
+            PathElement::new(vec![(x - e, y), (x + e, y)], color.mix(0.6).stroke_width(1))
+        });
+        chart.draw_series(bars).map_err(plot_error)?;
+        // The first series filled, the others as rings, so that a point on top hides none.
+        let style = if i == 0 {
+            color.filled()
+        } else {
+            color.stroke_width(2)
+        };
+        let dots = s.points.iter().map(move |&p| Circle::new(p, 5, style));
+        chart
+            .draw_series(dots)
+            .map_err(plot_error)?
+            .label(s.label.clone())
+            .legend(move |(x, y)| Circle::new((x + 10, y), 5, style));
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .position(SeriesLabelPosition::UpperLeft)
+        .draw()
+        .map_err(plot_error)
 }

@@ -6,7 +6,8 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 use vsr::experiment::{RunFile, ValidationSet};
-use vsr::study::campaign::{plan, Campaign, Job, Results};
+use vsr::study::campaign::{fidelity_path, plan, Campaign, Job, Results};
+use vsr::study::fidelity::Fidelity;
 use vsr::{Error, Result};
 
 /// Where a campaign's outputs go.
@@ -34,15 +35,15 @@ impl Target {
                 self.file.display()
             ))
         })?;
+        // Paths in the file are relative to it; `campaigns/../study` is printed as `study`
+        // (lexically: no symlinks resolved).
+        let base = self.file.parent().unwrap_or(Path::new(""));
         let campaign = Campaign::parse(&text)
-            .map_err(|e| Error::Input(format!("{}: {e}", self.file.display())))?;
+            .map_err(|e| Error::Input(format!("{}: {e}", self.file.display())))?
+            .relative_to(base);
         let out = match &self.out_dir {
             Some(dir) => dir.clone(),
-            None => {
-                // `campaigns/../study` printed as `study` (lexically: no symlinks resolved).
-                let base = self.file.parent().unwrap_or(Path::new(""));
-                path_clean::clean(base.join(&campaign.output))
-            }
+            None => path_clean::clean(base.join(&campaign.output)),
         };
         Ok((campaign, out))
     }
@@ -110,6 +111,12 @@ pub fn load_results(campaign: Campaign, out: &Path) -> Result<Results> {
         }
         if let Some(d) = results.of_mut(&spec) {
             (d.run, d.validation, d.ablation) = (run, validation, ablation);
+        }
+    }
+    for g in &results.campaign.fidelity {
+        let reference = PathBuf::from(&g.reference);
+        if let Some(f) = read_json::<Fidelity>(&fidelity_path(out, &reference), json)? {
+            results.fidelity.push((reference, f));
         }
     }
     Ok(results)
