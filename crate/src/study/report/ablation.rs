@@ -3,7 +3,8 @@
 //! against the same best walking unfrozen on the same terrain (the reference line).
 
 use super::figures::{ablation_series, band, unfrozen_series};
-use super::tables::{cell, Sample};
+use super::samples::Sample;
+use super::tables::cell;
 use super::{push_lines, Report};
 use crate::experiment::ValidationSet;
 use std::fmt::Write;

@@ -5,8 +5,7 @@
 //! correction within each family; the Hodges-Lehmann shift and A12 with their intervals; the
 //! smallest effect each test could detect.
 
-use super::finetune::{finetune_samples, transfer};
-use super::tables::{measures, samples_of, Sample};
+use super::samples::{finetune_samples, measures, samples_of, transfer, Sample};
 use crate::study::campaign::Results;
 use crate::study::statistics::{
     a12_interval, detectable_a12, hodges_lehmann, holm, mann_whitney, median, Detectable, Interval,

@@ -3,7 +3,8 @@
 
 use super::families::Comparison;
 use super::figures::{band, best_series};
-use super::tables::{comparisons, summary_table, Sample};
+use super::samples::{finetune_samples, Sample};
+use super::tables::{comparisons, summary_table};
 use super::{push_lines, Report};
 use crate::study::campaign::file::FinetuneGroup;
 use crate::study::campaign::{Results, RunData, RunSpec};
@@ -122,34 +123,6 @@ fn prefix_stand_in(
         label: format!("from scratch (first {} of {scratch_evals})", g.source_evals),
         runs,
     }
-}
-
-/// The label of a transfer in tables ("SOURCE -> TARGET").
-pub(super) fn transfer(pair: &[String; 2]) -> String {
-    format!("{} -> {}", pair[0], pair[1])
-}
-
-/// The samples of a transfer: fine-tuned, then from scratch on the target (when planned).
-pub(super) fn finetune_samples(
-    results: &Results,
-    g: &FinetuneGroup,
-    pair: &[String; 2],
-) -> Vec<Sample> {
-    let seeds = g.seeds.as_ref().unwrap_or(&results.campaign.seeds);
-    let [from, to] = pair;
-    let source = RunSpec::scratch(from, g.controller, g.source_evals, 0);
-    let tuned = RunSpec::finetuned(source, to, g.evals);
-    let mut samples = vec![Sample {
-        label: format!("fine-tuned from {from} ({} + {})", g.source_evals, g.evals),
-        runs: results.seeds_of(&tuned, seeds),
-    }];
-    if let Some(evals) = g.scratch_evals {
-        samples.push(Sample {
-            label: format!("from scratch ({evals})"),
-            runs: results.seeds_of(&RunSpec::scratch(to, g.controller, evals, 0), seeds),
-        });
-    }
-    samples
 }
 
 pub(super) fn finetune_section(

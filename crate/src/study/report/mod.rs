@@ -29,11 +29,13 @@ mod fidelity;
 pub mod figures;
 mod finetune;
 mod plateau;
+mod samples;
 mod sets;
 mod tables;
 use families::{planned, Comparison};
 use finetune::finetune_section;
-use tables::{cell, comparisons, families_table, samples_of, summary_table, Sample};
+use samples::{samples_of, Sample};
+use tables::{cell, comparisons, families_table, summary_table};
 
 /// The report: Markdown text and the figures it links.
 #[derive(Debug, Clone)]
@@ -69,7 +71,7 @@ pub fn report(results: &Results) -> Report {
         for pair in &g.pairs {
             let mine: Vec<&Comparison> = tests
                 .iter()
-                .filter(|c| (&c.group, &c.shape) == (&g.name, &finetune::transfer(pair)))
+                .filter(|c| (&c.group, &c.shape) == (&g.name, &samples::transfer(pair)))
                 .collect();
             finetune_section(results, g, pair, &mine, &mut r);
         }

@@ -5,7 +5,7 @@
 //! when the interval's lower end is above 0.
 
 use super::families::ALPHA;
-use super::tables::Sample;
+use super::samples::Sample;
 use crate::experiment::GenerationRecord;
 use crate::study::statistics::{median, median_interval};
 use std::fmt::Write;

@@ -2,49 +2,10 @@
 //! seeds) and every pairwise comparison of a section (the planned tests of `families`).
 
 use super::families::{Comparison, ALPHA, POWER};
+use super::samples::{measures, Sample};
 use crate::experiment::ValidationSet;
-use crate::study::campaign::file::EvolveGroup;
-use crate::study::campaign::{Results, RunData, RunSpec};
 use crate::study::statistics::{Method, Summary};
 use std::fmt::Write;
-
-/// A labelled sample of runs.
-#[derive(Clone)]
-pub(super) struct Sample {
-    pub(super) label: String,
-    pub(super) runs: Vec<RunData>,
-}
-
-/// The samples of an evolve group on one shape and budget: one per controller, with the runs
-/// whose file exists.
-pub(super) fn samples_of(
-    results: &Results,
-    g: &EvolveGroup,
-    shape: &str,
-    evals: u64,
-) -> Vec<Sample> {
-    let seeds = g.seeds.as_ref().unwrap_or(&results.campaign.seeds);
-    g.controllers
-        .iter()
-        .map(|&c| Sample {
-            label: c.to_string(),
-            runs: results.seeds_of(&RunSpec::scratch(shape, c, evals, 0), seeds),
-        })
-        .collect()
-}
-
-/// The measures of a sample: `best`, then the validation mean of each set.
-pub(super) fn measures(s: &Sample, sets: &[ValidationSet]) -> Vec<(String, Vec<f64>)> {
-    let mut m = vec![(
-        "best".to_string(),
-        s.runs.iter().filter_map(RunData::final_best).collect(),
-    )];
-    for &set in sets {
-        let values = s.runs.iter().filter_map(|d| d.validation_mean(set));
-        m.push((format!("{set} mean"), values.collect()));
-    }
-    m
-}
 
 pub(super) fn cell(values: &[f64]) -> String {
     let s = Summary::of(values);
