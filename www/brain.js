@@ -3,7 +3,8 @@
  * The brain: what drives the drawn body, a controller family and its genome for that body,
  * with where it came from. Each function here makes a new brain from what the page has (a
  * module, a finished run, a best seen during a run, an edit of the body) with the core's
- * operations; none keeps state. The page holds the current brain.
+ * operations (asked of the core worker: those functions return promises); none keeps state.
+ * The page holds the current brain.
  */
 import { describeRun, remapGenome, runGenome, transplant } from './core.js';
 
@@ -32,14 +33,13 @@ import { describeRun, remapGenome, runGenome, transplant } from './core.js';
 /** @typedef {{left: number, bottom: number}} Origin */
 
 /**
- * A module put on the body `rows`: the core's transplant (throws a readable Error when the
- * module cannot go on this body).
+ * A module put on the body `rows`: the core's transplant (rejects with a readable Error when
+ * the module cannot go on this body).
  * @param {import('./modules.js').Module} module @param {string} rows @param {Origin} origin @param {number} seed
- * @returns {Brain}
+ * @returns {Promise<Brain>}
  */
-export function transplanted(module, rows, origin, seed) {
-  const info = describeRun(module.text);
-  const genome = transplant(module.text, rows, seed);
+export async function transplanted(module, rows, origin, seed) {
+  const [info, genome] = await Promise.all([describeRun(module.text), transplant(module.text, rows, seed)]);
   const own = info.shape === rows;
   return {
     controller: info.controller, genome, rows, origin, module: pretrainedKey(module), source: attentionSource(info, module.text),
@@ -52,12 +52,12 @@ export function transplanted(module, rows, origin, seed) {
 /**
  * A module on its own body (the caller draws that body, `info.shape`).
  * @param {import('./modules.js').Module} module @param {Origin} origin
- * @returns {Brain}
+ * @returns {Promise<Brain>}
  */
-export function ownBody(module, origin) {
-  const info = describeRun(module.text);
+export async function ownBody(module, origin) {
+  const [info, genome] = await Promise.all([describeRun(module.text), runGenome(module.text)]);
   return {
-    controller: info.controller, genome: runGenome(module.text), rows: info.shape, origin, module: pretrainedKey(module),
+    controller: info.controller, genome, rows: info.shape, origin, module: pretrainedKey(module),
     source: attentionSource(info, module.text), label: `${module.label}, on its own body`,
     seconds: info.seconds, trained: { speed: info.fitness, terrain: info.terrain }, oneShot: false,
   };
@@ -66,10 +66,10 @@ export function ownBody(module, origin) {
 /**
  * The brain after an edit of its body, the genome following the voxels by grid position.
  * @param {Brain} brain @param {string} rows @param {Origin} origin @param {number} seed @param {number} edit
- * @returns {Brain}
+ * @returns {Promise<Brain>}
  */
-export function followEdit(brain, rows, origin, seed, edit) {
-  const genome = remapGenome(brain.controller, brain.genome, brain.rows, rows,
+export async function followEdit(brain, rows, origin, seed, edit) {
+  const genome = await remapGenome(brain.controller, brain.genome, brain.rows, rows,
     origin.left - brain.origin.left, origin.bottom - brain.origin.bottom, seed, edit);
   return { ...brain, genome, rows, origin, trained: null, label: `${brain.label.replace(/ · edited$/, '')} · edited` };
 }

@@ -53,11 +53,11 @@ export class Keeper {
   /**
    * Shows the state of the link this page was opened with, else the kept one, else calls
    * `fallback` (the page's first robot); a refused link says so, and what is shown instead.
-   * @param {() => void} fallback
+   * @param {() => Promise<void>} fallback resolves once the first robot is shown
    */
   async restore(fallback) {
     const { controllers, grid } = this.defaults;
-    const fromLink = location.hash.length > 1 ? decodeState(location.hash, controllers, grid) : null;
+    const fromLink = location.hash.length > 1 ? await decodeState(location.hash, controllers, grid) : null;
     let refused = '';
     let shown = false;
     if (fromLink && 'state' in fromLink) {
@@ -67,9 +67,9 @@ export class Keeper {
       refused = fromLink.error;
     }
     const kept = loadKept();
-    const fromStorage = !shown && kept ? decodeState(kept, controllers, grid, true) : null;
+    const fromStorage = !shown && kept ? await decodeState(kept, controllers, grid, true) : null;
     if (fromStorage && 'state' in fromStorage) shown = (await this.hooks.apply(fromStorage.state)) === '';
-    if (!shown) fallback();
+    if (!shown) await fallback();
     if (fromLink) dropLink(); // read once: from now on the kept state is the page's
     if (refused) this.refuse(refused, shown ? 'the robot you had here before' : `the example robot ${this.defaults.presets[0].name}`);
   }
@@ -78,7 +78,7 @@ export class Keeper {
   async openLink() {
     if (location.hash.length <= 1) return;
     if (this.hooks.running()) { this.hooks.say('Stop the run before opening another robot.'); return; }
-    const opened = decodeState(location.hash, this.defaults.controllers, this.defaults.grid);
+    const opened = await decodeState(location.hash, this.defaults.controllers, this.defaults.grid);
     const problem = 'error' in opened ? opened.error : await this.hooks.apply(opened.state);
     dropLink();
     if (problem) this.refuse(problem, 'the robot you had before');

@@ -1,8 +1,9 @@
 // @ts-check
 /**
- * The one helper for starting workers and wording their failures, used by the page
- * (simulation worker, GA coordinator), by the coordinator (evaluation workers) and by
- * `<vsr-robot>` (embed/vsr-robot.js), whose scripts may come from another origin.
+ * The one helper for starting workers, asking them and wording their failures, used by the page
+ * (simulation worker, GA coordinator, the core worker that it asks: requester, answerRequests),
+ * by the coordinator (evaluation workers) and by `<vsr-robot>` (embed/vsr-robot.js), whose
+ * scripts may come from another origin.
  */
 
 /**
@@ -50,4 +51,59 @@ export function loadWasm(init, installPanicHook) {
   return init().then(() => installPanicHook(), (error) => {
     throw new Error(`could not load the simulator (wasm): ${messageOf(error)}`);
   });
+}
+
+/**
+ * The page's side of a worker that answers requests ({@link answerRequests}): `ask(name, ...args)`
+ * posts {id, name, args} and resolves with the answer's value, or rejects with its message as
+ * an Error. The worker starts at the first request; when it dies (or its wasm module crashed),
+ * the requests waiting fail with a readable message and a new worker takes the next ones.
+ * @param {string} file the worker's file name @param {string} what the worker, in words
+ * @returns {(name: string, ...args: any[]) => Promise<any>}
+ */
+export function requester(file, what) {
+  /** @type {Worker | null} */
+  let worker = null;
+  let asked = 0;
+  /** @type {Map<number, {resolve: (value: any) => void, reject: (error: Error) => void}>} */
+  const waiting = new Map();
+  const stop = (/** @type {Worker} */ dead, /** @type {string} */ text) => {
+    dead.terminate();
+    if (worker === dead) worker = null;
+    for (const w of waiting.values()) w.reject(new Error(`${what} stopped (${text}); try again`));
+    waiting.clear();
+  };
+  const start = () => {
+    const w = spawn(file, (/** @type {{id: number, value?: any, error?: string, fatal?: boolean}} */ msg) => {
+      const waiter = waiting.get(msg.id);
+      waiting.delete(msg.id);
+      if (msg.error === undefined) waiter?.resolve(msg.value); else waiter?.reject(new Error(msg.error));
+      if (msg.fatal) stop(w, String(msg.error));
+    }, (text) => stop(w, text));
+    return w;
+  };
+  return (name, ...args) => new Promise((resolve, reject) => {
+    worker ??= start();
+    waiting.set(++asked, { resolve, reject });
+    worker.postMessage({ id: asked, name, args });
+  });
+}
+
+/**
+ * A worker's side of {@link requester}: each request {id, name, args} is answered, once
+ * `ready` resolved, with {id, value} from `answers[name](...args)`, or with {id, error} in
+ * words; a crash of the wasm module (a Rust panic) adds fatal: true, so that the page starts a
+ * fresh worker.
+ * @param {Promise<unknown>} ready @param {Record<string, (...args: any[]) => any>} answers
+ */
+export function answerRequests(ready, answers) {
+  self.onmessage = async (/** @type {MessageEvent<{id: number, name: string, args: any[]}>} */ { data: { id, name, args } }) => {
+    try {
+      await ready;
+      if (!Object.hasOwn(answers, name)) throw new Error(`unknown request ${JSON.stringify(name)}`);
+      self.postMessage({ id, value: answers[name](...args) });
+    } catch (error) {
+      self.postMessage({ id, error: messageOf(error), fatal: error instanceof WebAssembly.RuntimeError });
+    }
+  };
 }

@@ -23,6 +23,7 @@ import { SpeedNote } from './speed-note.js';
 import { StudyPanel } from './tour/study.js';
 import { Tour } from './tour/tour.js';
 import { Viewer } from './viewer.js';
+import { editWalking } from './walking-edit.js';
 
 const el = (/** @type {string} */ id) => /** @type {any} */ (document.getElementById(id));
 const messages = new MessageBox(el('message'), el('message-text'), el('message-close'));
@@ -48,7 +49,7 @@ const editor = new Editor(el('editor'), drawing, {
 const viewer = new Viewer(document, {
   message: showMessage,
   loaded: () => messages.clear('error'),
-  clicked: (pick) => robot.editWalking(pick),
+  clicked: (pick) => editWalking(robot, pick),
 });
 const keeper = new Keeper(defaults, el('share-link'), {
   state: () => robot.pageState(),
@@ -111,7 +112,7 @@ async function start() {
     drawing.setRows(defaults.presets[0].rows);
     drawing.undoStack = [];
     editor.draw();
-    robot.bodyChanged();
+    return robot.bodyChanged();
   });
   modules.listPretrained().then(() => { if (robot.brain?.module) modules.choose(robot.brain.module); });
   window.addEventListener('hashchange', () => keeper.openLink());
@@ -147,7 +148,7 @@ const playground = {
     keeper.schedule();
   },
   /** @param {string} kind */
-  setController(kind) { controllerSelect.value = kind; robot.controllerChosen(); },
+  setController(kind) { controllerSelect.value = kind; return robot.controllerChosen(); },
   wanted: () => viewer.wanted,
   walking: () => viewer.current,
   race,

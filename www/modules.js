@@ -33,6 +33,8 @@ export class ModuleList {
     this.hooks = hooks;
     /** Run files already read, by key. @type {Map<string, Module>} */
     this.held = new Map();
+    /** Descriptions asked: only the latest one's answer is shown. */
+    this.described = 0;
     /** Resolves once the pretrained modules are listed (or could not be). */
     this.listed = new Promise((resolve) => { this.doneListing = resolve; });
     el('module-load').addEventListener('click', () => this.withSelected(hooks.loadOnto));
@@ -62,11 +64,12 @@ export class ModuleList {
   }
 
   /**
-   * Adds (or replaces) a module held in the page and, unless `choose` is false, selects it.
-   * @param {Module} module @param {boolean} [choose]
+   * Adds (or replaces) a module held in the page and, unless `choose` is false, selects it;
+   * rejects with a readable Error (adding nothing) when its run file is malformed.
+   * @param {Module} module @param {boolean} [choose] @returns {Promise<void>}
    */
-  add(module, choose = true) {
-    describeRun(module.text); // throws a readable Error when malformed
+  async add(module, choose = true) {
+    await describeRun(module.text);
     this.held.set(module.key, module);
     const existing = [...this.select.options].find((o) => o.value === module.key);
     if (existing) existing.text = module.label; else this.select.append(new Option(module.label, module.key));
@@ -106,10 +109,12 @@ export class ModuleList {
 
   /** Shows what the selected module is. */
   async describe() {
+    const ticket = ++this.described;
     try {
       const module = await this.selected();
-      if (!module) { this.details.textContent = ''; return; }
-      const info = describeRun(module.text);
+      const info = module ? await describeRun(module.text) : null;
+      if (ticket !== this.described) return; // another module was chosen meanwhile
+      if (!info) { this.details.textContent = ''; return; }
       this.details.textContent = `${info.controller}, ${info.genes} genes, ${info.finetunedFrom ? 'fine-tuned' : 'evolved'} on ${info.shape}`
         + `${info.finetunedFrom ? ` from a module evolved on ${info.finetunedFrom}` : ''} (seed ${info.seed}, budget ${info.budget} evaluations${info.evaluations > info.budget
           ? ` (it took ${info.evaluations}: a run finishes its last generation)` : ''}, `
@@ -119,7 +124,7 @@ export class ModuleList {
           + 'the rest of its brain (each voxel position\'s output weights) is drawn new for your body'
         : `An ${info.controller} module's genes belong to the voxels of its own body: it goes only onto that same body`;
     } catch (error) {
-      this.details.textContent = '';
+      if (ticket === this.described) this.details.textContent = '';
     }
   }
 
@@ -136,7 +141,7 @@ export class ModuleList {
       if (module) return module;
     }
     const text = await fetchOk(key).then((r) => r.text());
-    this.add({ key, label, text });
+    await this.add({ key, label, text });
     return /** @type {Module} */ (this.held.get(key));
   }
 
@@ -146,7 +151,7 @@ export class ModuleList {
     this.fileInput.value = ''; // choosing the same file again fires 'change' again
     try {
       const text = await file.text();
-      this.add({ key: `disk:${file.name}`, label: `${file.name} (imported)`, text });
+      await this.add({ key: `disk:${file.name}`, label: `${file.name} (imported)`, text });
       this.hooks.message('');
     } catch (error) {
       this.hooks.message(`${file.name} is not a run file this page can read: ${messageOf(error)}`);

@@ -23,12 +23,16 @@
  *                                        core's constants the drawing needs, {@link Physics}
  *                                        (defaults().physics, crate/src/experiment/playground.rs),
  *                                        sent here so that no copy of them lives in the page
- *   {type: 'loaded', params, carried, voxels, controller, cells, terrainXs, terrainYs}
+ *   {type: 'loaded', params, carried, voxels, controller, cells, terrainXs, terrainYs, attentionTerms}
  *                                        a new episode replaced the previous one;
  *                                        carried: it took the edited robot's posture and motion;
  *                                        controller: 'phase gait', 'attention', 'mlp', ...;
  *                                        cells (Uint32Array, 2n): voxel i's grid column at 2i
- *                                        (from the left) and row at 2i + 1 (from the bottom)
+ *                                        (from the left) and row at 2i + 1 (from the bottom);
+ *                                        attentionTerms: the four numbers a, b, c, d that fix
+ *                                        every matrix of `params.brain`'s attention,
+ *                                        A[r][c] = tanh(a s_r s_c + b s_r + c s_c + d)
+ *                                        (null without an attention brain)
  *   {type: 'frame', ...Frame}            the latest state, buffers transferred
  *   {type: 'state', running}             the run/pause state changed
  *   {type: 'error', message, fatal}      bad input (fatal = false: nothing changed) or a
@@ -154,6 +158,10 @@ export function frameIsConsistent(frame) {
 }
 
 /*
+ * The core's answers (defaults, checks, transplant, remap) come from the core worker
+ * (core-worker.js), asked through core.js with kit.js's requester: {id, name, args} ->
+ * {id, value} or {id, error, fatal}.
+ *
  * Evolution in the page: the page (run-panel.js) drives a GA coordinator worker
  * (coordinator.js), which owns the wasm `Evolution` and a pool of evaluation workers
  * (evaluator.js), each owning its own wasm module.

@@ -66,20 +66,19 @@ export class Race {
     try {
       const module = await this.hooks.module();
       if (!module) { this.hooks.message('choose a module in the list first (3 · Give it a brain, Transplant a module)'); return; }
-      this.addRunFile(module);
+      await this.addRunFile(module);
     } catch (error) {
       this.hooks.message(`could not race this module: ${messageOf(error)}`);
     }
   }
 
   /**
-   * Adds a module on its own body with its own genome (throws a readable Error when its run
-   * file is malformed). @param {import('./modules.js').Module} module
+   * Adds a module on its own body with its own genome (rejects with a readable Error when its
+   * run file is malformed). @param {import('./modules.js').Module} module @returns {Promise<void>}
    */
-  addRunFile(module) {
-    const info = describeRun(module.text);
-    this.add({ label: module.label.replace(/ \([^()]*\)$/, ''), shape: info.shape,
-      controller: info.controller, genome: runGenome(module.text) });
+  async addRunFile(module) {
+    const [info, genome] = await Promise.all([describeRun(module.text), runGenome(module.text)]);
+    this.add({ label: module.label.replace(/ \([^()]*\)$/, ''), shape: info.shape, controller: info.controller, genome });
   }
 
   /** Takes every robot out of the race. */

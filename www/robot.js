@@ -5,13 +5,17 @@
  * controller family and its genome for the drawn body) drives it: none (the phase gait), a
  * transplanted module, an evolved best, or the genome of a shared link. When the body
  * changes, the brain's genome follows it by grid position (the core's remap). Its state is
- * what the page keeps across reloads and shares as a link (pageState, restore).
+ * what the page keeps across reloads and shares as a link (robot-state.js); a click on the
+ * walking robot edits it (walking-edit.js). The core
+ * answers from its worker (core.js), so a change of the brain waits for it: changes apply one
+ * at a time, in the order they were asked (serial), each on the drawing as it was when asked.
  */
 import { followEdit, ownBody, transplanted } from './brain.js';
 import { checkShape } from './core.js';
 import { showGeneCount } from './gene-count.js';
 import { messageOf } from './kit.js';
 import { plain } from './message.js';
+import { applyState, pageState } from './robot-state.js';
 
 /** @typedef {import('./brain.js').Brain} Brain */
 
@@ -37,15 +41,13 @@ export class Robot {
     this.presetSelect = /** @type {HTMLSelectElement} */ (this.el('preset'));
     /** @type {Brain | null} */
     this.brain = null;
-    /** The last check of the drawing. @type {import('./core.js').ShapeCheck} */
-    this.check = checkShape('');
+    /** The latest check of the drawing shown (none yet: not a robot). @type {import('./core.js').ShapeCheck} */
+    this.check = { ok: false, message: '', voxels: 0, pieces: [], params: [] };
+    /** Checks asked: only the latest one's answer is shown. */
+    this.checks = 0;
+    /** The changes of the brain asked so far, done one after the other. @type {Promise<unknown>} */
+    this.queue = Promise.resolve();
     this.edits = 0;
-    /**
-     * The next body change is an edit of the walking robot: rebuild it where it stands, in its
-     * posture and motion; the edit's shift of the bounding box, or false.
-     * @type {import('./protocol.js').Shift | false}
-     */
-    this.keepPlace = false;
     /** A brain set aside by choosing another controller family, back if that family is chosen again. @type {Brain | null} */
     this.shelved = null;
     /** A run uses the robot: its drawing is locked. */
@@ -57,14 +59,37 @@ export class Robot {
     this.parts.messages.show(text, 'error');
   }
 
-  /** Re-checks the drawing: words, pieces, parameter count, buttons. */
+  /**
+   * Runs `task` after every change asked before it: the brain changes one at a time, in order.
+   * @template T @param {() => Promise<T> | T} task @returns {Promise<T>}
+   */
+  serial(task) {
+    const done = this.queue.then(task);
+    this.queue = done.catch(() => {});
+    return done;
+  }
+
+  /**
+   * Shows the drawing's rows at once and re-checks it (the core's check): words, pieces,
+   * parameter count, buttons, once the core answers.
+   * @returns {Promise<import('./core.js').ShapeCheck>} the check of the drawing now
+   */
   updateCheck() {
-    const { drawing, editor, messages, defaults } = this.parts;
-    const rows = drawing.rows();
-    const check = checkShape(rows);
+    const rows = this.parts.drawing.rows();
+    this.rowsInput.value = rows;
+    this.presetSelect.value = this.parts.defaults.presets.find((p) => p.rows === rows)?.rows ?? '';
+    const ticket = ++this.checks;
+    const checked = checkShape(rows);
+    checked.then((check) => { if (ticket === this.checks) this.showCheck(rows, check); },
+      (error) => this.error(`the drawing could not be checked: ${messageOf(error)}`));
+    return checked;
+  }
+
+  /** Shows the check of the drawing `rows`. @param {string} rows @param {import('./core.js').ShapeCheck} check */
+  showCheck(rows, check) {
+    const { editor, messages } = this.parts;
     this.check = check;
     editor.setPieces(check.ok ? null : check.pieces);
-    this.rowsInput.value = rows;
     const status = this.el('shape-status');
     if (check.ok) {
       status.textContent = `${check.voxels} voxel${check.voxels === 1 ? '' : 's'} · ${rows}`;
@@ -75,7 +100,6 @@ export class Robot {
       messages.show(`Your drawing is not a robot yet: ${plain(check.message)}${pieces}. Evolve and Fine-tune are off until it is.`, 'validation');
     }
     status.dataset.ok = String(check.ok);
-    this.presetSelect.value = defaults.presets.find((p) => p.rows === rows)?.rows ?? '';
     this.updateParams();
     this.updateButtons();
   }
@@ -104,46 +128,69 @@ export class Robot {
     return box ? { left: box.left, bottom: box.bottom } : { left: 0, bottom: 0 };
   }
 
-  /** The drawing changed (a stroke, undo, a preset, typed rows, an edit of the walking robot). */
-  bodyChanged() {
-    this.updateCheck();
-    if (!this.check.ok) { this.parts.keep(); return; }
-    const rows = this.parts.drawing.rows();
+  /**
+   * The drawing changed (a stroke, undo, a preset, typed rows, an edit of the walking robot):
+   * it is checked, and the brain follows the new body.
+   * @param {import('./protocol.js').Shift | false} [keepPlace] an edit of the walking robot:
+   *   rebuild it where it stands, in its posture and motion (the edit's shift of the bounding box)
+   * @returns {Promise<void>} once the robot walks the drawing (a problem is shown)
+   */
+  bodyChanged(keepPlace = false) {
+    const change = this.change(keepPlace);
+    return this.serial(() => this.follow(change)).catch((error) => this.error(messageOf(error)));
+  }
+
+  /** The drawing as it is now, and its check asked. @param {import('./protocol.js').Shift | false} keepPlace */
+  change(keepPlace) {
+    return { rows: this.parts.drawing.rows(), origin: this.origin(), keepPlace, checked: this.updateCheck() };
+  }
+
+  /** The brain follows the body of `change` (the core's remap) and the viewer walks it. @param {ReturnType<Robot['change']>} change */
+  async follow({ rows, origin, keepPlace, checked }) {
+    if (!(await checked).ok) { this.parts.keep(); return; }
     const brain = this.brain;
     if (brain && brain.rows !== rows) {
       try {
-        this.brain = followEdit(brain, rows, this.origin(), this.seed(), ++this.edits);
+        this.brain = await followEdit(brain, rows, origin, this.seed(), ++this.edits);
       } catch (error) {
         this.error(`the controller could not follow the edit: ${messageOf(error)}`);
         this.brain = null;
       }
     } else if (brain) {
-      this.brain = { ...brain, origin: this.origin() };
+      this.brain = { ...brain, origin };
     }
-    this.showBrain();
+    this.showBrain(rows, keepPlace);
     this.parts.keep();
   }
 
-  /** Sends the drawing and its brain to the viewer and says what drives it. */
-  showBrain() {
-    const { drawing, viewer, speedNote, runs } = this.parts;
+  /**
+   * Sends the body and its brain to the viewer and says what drives it.
+   * @param {string} [rows] the body (the brain's, else the drawing)
+   * @param {import('./protocol.js').Shift | false} [keepPlace] see {@link Robot.bodyChanged}
+   */
+  showBrain(rows = this.brain?.rows ?? this.parts.drawing.rows(), keepPlace = false) {
+    const { viewer, speedNote, runs } = this.parts;
     const brain = this.brain;
     if (brain) { this.controllerSelect.value = brain.controller; this.shelved = null; }
     this.updateParams();
     const seconds = this.episodeSeconds();
-    viewer.show(drawing.rows(), brain ? { controller: brain.controller, genome: brain.genome } : null, this.keepPlace, seconds);
+    viewer.show(rows, brain ? { controller: brain.controller, genome: brain.genome } : null, keepPlace, seconds);
     speedNote.show(brain, viewer.terrain.value.trim(), seconds, !this.running);
     runs.showWalking(brain?.run === true);
     this.el('gait').hidden = brain !== null; // its settings drive only a robot with no brain
-    this.keepPlace = false;
     this.el('driver').textContent = brain
       ? `Driven by: ${brain.label} (${brain.controller}, ${brain.genome.length} genes).`
       : 'Driven by: the phase gait (no brain yet: evolve one, or load a module).';
     this.updateButtons();
   }
 
-  /** A new brain drives the robot (null: the phase gait). @param {Brain | null} brain */
+  /** A new brain drives the robot (null: the phase gait), after the changes asked before. @param {Brain | null} brain */
   drive(brain) {
+    return this.serial(() => this.setBrain(brain)).catch((error) => this.error(messageOf(error)));
+  }
+
+  /** @param {Brain | null} brain */
+  setBrain(brain) {
     this.brain = brain;
     this.showBrain();
     this.parts.keep();
@@ -166,7 +213,11 @@ export class Robot {
    * comes back when its family is chosen again.
    */
   controllerChosen() {
-    const kind = this.controllerSelect.value;
+    return this.serial(() => this.chooseController(this.controllerSelect.value)).catch((error) => this.error(messageOf(error)));
+  }
+
+  /** @param {string} kind */
+  chooseController(kind) {
     const { brain, shelved } = this;
     if (brain && brain.controller !== kind) {
       this.brain = null;
@@ -188,111 +239,59 @@ export class Robot {
     return Number.isSafeInteger(s) && s >= 0 ? s : 0;
   }
 
-  /** A click on the walking robot: remove that voxel, or add one next to it. @param {{voxel: number, dx: number, dy: number}} pick */
-  editWalking(pick) {
-    const { drawing, editor, messages } = this.parts;
-    if (this.running) { messages.show('A run is using this robot: stop it to edit the robot.', 'note'); return; }
-    const box = drawing.box();
-    if (!box || !this.check.ok) return;
-    const cells = [];
-    for (let y = box.bottom; y <= box.top; y++) for (let x = box.left; x <= box.right; x++) if (drawing.has(x, y)) cells.push([x, y]);
-    const cell = cells[pick.voxel];
-    if (!cell) return;
-    const [x, y] = [cell[0] + pick.dx, cell[1] + pick.dy];
-    const adding = pick.dx !== 0 || pick.dy !== 0;
-    if (!drawing.inside(x, y)) { this.error('that cell is outside the drawing grid'); return; }
-    if (adding && drawing.has(x, y)) return;
-    const after = checkShape(drawing.rowsWith(x, y, adding));
-    if (!after.ok) {
-      this.error(after.pieces.length === 0 ? 'A robot needs at least one voxel; not done'
-        : `Removing that voxel would split the robot into ${after.pieces.length} pieces; not done`);
-      return;
-    }
-    const from = drawing.rows();
-    drawing.set(x, y, adding);
-    const moved = drawing.box();
-    this.keepPlace = moved ? { from, dx: box.left - moved.left, dy: box.bottom - moved.bottom } : false;
-    editor.draw();
-    this.bodyChanged();
-  }
-
-  /** Puts a module on the drawn robot (the core's transplant for attention). @param {import('./modules.js').Module} module */
+  /**
+   * Puts a module on the drawn robot (the core's transplant for attention).
+   * @param {import('./modules.js').Module} module @returns {Promise<void>} once done (a problem is shown)
+   */
   loadModule(module) {
-    if (!this.check.ok) { this.error('draw a valid robot first'); return; }
-    try {
-      const brain = transplanted(module, this.parts.drawing.rows(), this.origin(), this.seed());
+    if (!this.check.ok) { this.error('draw a valid robot first'); return Promise.resolve(); }
+    const [rows, origin, seed] = [this.parts.drawing.rows(), this.origin(), this.seed()];
+    return this.serial(async () => {
+      const brain = await transplanted(module, rows, origin, seed);
       this.error('');
-      this.drive(brain);
-    } catch (error) {
-      this.error(messageOf(error));
-    }
+      this.setBrain(brain);
+    }).catch((error) => this.error(messageOf(error)));
   }
 
-  /** Replaces the drawing by the module's own body and genome. @param {import('./modules.js').Module} module */
+  /**
+   * Replaces the drawing by the module's own body and genome.
+   * @param {import('./modules.js').Module} module @returns {Promise<void>} once done (a problem is shown)
+   */
   openModule(module) {
     const { drawing, editor } = this.parts;
-    try {
-      const next = ownBody(module, { left: 0, bottom: 0 }); // drawn at the bottom-left
+    return this.serial(async () => {
+      const next = await ownBody(module, { left: 0, bottom: 0 }); // drawn at the bottom-left
       const problem = drawing.setRows(next.rows);
       if (problem) { this.error(`this module's body does not fit the grid: ${problem}`); return; }
       this.brain = next;
       this.error('');
       editor.draw();
-      this.bodyChanged();
-    } catch (error) {
-      this.error(messageOf(error));
-    }
+      await this.follow(this.change(false));
+    }).catch((error) => this.error(messageOf(error)));
   }
 
-  /** Draws `rows`, driven by the phase gait. @param {string} rows */
+  /** Draws `rows`, driven by the phase gait; rejects when they do not fit. @param {string} rows */
   setBody(rows) {
-    const problem = this.parts.drawing.setRows(rows);
-    if (problem) throw new Error(problem);
-    this.brain = null;
-    this.shelved = null;
-    this.parts.editor.draw();
-    this.bodyChanged();
+    return this.serial(async () => {
+      const problem = this.parts.drawing.setRows(rows);
+      if (problem) throw new Error(problem);
+      this.brain = null;
+      this.shelved = null;
+      this.parts.editor.draw();
+      await this.follow(this.change(false));
+    });
   }
 
-  /** @returns {import('./share.js').PageState} */
+  /** @returns {import('./share.js').PageState} the state the page keeps and shares */
   pageState() {
-    const { drawing, viewer, runs } = this.parts;
-    const brain = this.brain;
-    return {
-      rows: drawing.rows(), controller: this.controllerSelect.value, terrain: viewer.terrain.value, run: runs.values(),
-      brain: brain && brain.rows === drawing.rows()
-        ? { controller: brain.controller, genome: brain.genome, label: brain.label, module: brain.module } : null,
-    };
+    return pageState(this);
   }
 
   /**
-   * Shows a state from a link or storage; a robot that does not fit the grid is refused.
-   * @param {import('./share.js').PageState} state
-   * @returns {Promise<string>} '' or why nothing was shown
+   * Shows a state from a link or storage, in its turn; a robot that does not fit the grid is refused.
+   * @param {import('./share.js').PageState} state @returns {Promise<string>} '' or why nothing was shown
    */
-  async restore(state) {
-    const { drawing, editor, viewer, runs, defaults } = this.parts;
-    const problem = drawing.setRows(state.rows);
-    if (problem) return problem;
-    drawing.undoStack = [];
-    if (defaults.controllers.includes(state.controller)) this.controllerSelect.value = state.controller;
-    if (state.terrain) viewer.terrain.value = state.terrain;
-    runs.setValues(state.run);
-    this.brain = null;
-    if (state.brain) {
-      const brain = { ...state.brain, rows: state.rows, origin: this.origin(), source: /** @type {string | null} */ (null) };
-      this.brain = brain;
-      if (state.brain.module) {
-        try {
-          const text = await fetch(state.brain.module).then((r) => (r.ok ? r.text() : Promise.reject(new Error(`HTTP ${r.status}`))));
-          brain.source = text;
-        } catch (error) {
-          this.error(`the module ${state.brain.module} could not be fetched, so this robot cannot be fine-tuned: ${messageOf(error)}`);
-        }
-      }
-    }
-    editor.draw();
-    this.bodyChanged();
-    return '';
+  restore(state) {
+    return this.serial(() => applyState(this, state)).catch((error) => messageOf(error));
   }
 }

@@ -67,12 +67,9 @@ export class RunFollower {
     }
     const what = { evolve: 'evolved', finetune: 'fine-tuned', scratch: 'from scratch' }[run.mode];
     const label = `${what} ${best.controller}, seed ${run.settings.seed}: ${best.fitness.toFixed(2)} m/s`;
-    try {
-      const module = { key: `run:${run.mode}:${run.settings.seed}:${best.controller}:${run.settings.shape}`, label: `${label} (this page)`, text: run.runFile };
-      this.modules.add(module, run.mode !== 'scratch'); // the comparison is listed; the fine-tuned module stays chosen
-    } catch (error) {
-      robot.error(`the finished run could not be listed: ${messageOf(error)}`);
-    }
+    const module = { key: `run:${run.mode}:${run.settings.seed}:${best.controller}:${run.settings.shape}`, label: `${label} (this page)`, text: run.runFile };
+    this.modules.add(module, run.mode !== 'scratch') // the comparison is listed; the fine-tuned module stays chosen
+      .catch((error) => robot.error(`the finished run could not be listed: ${messageOf(error)}`));
     const peak = Number.isFinite(run.peak) ? `; its best single evaluation on the way: ${run.peak.toFixed(2)} m/s` : '';
     const result = `the best of its last generation, ${best.fitness.toFixed(2)} m/s in training${peak}`;
     if (run.mode === 'scratch' || !run.follow || run.settings.shape !== robot.parts.drawing.rows()) {

@@ -7,7 +7,7 @@
  * stops, exports the run file, and hands each new best to the page to watch. A fine-tuning
  * run can be followed by a from-scratch run with the same budget, drawn as a second line.
  */
-import { spawn } from './kit.js';
+import { messageOf, spawn } from './kit.js';
 import { download, runFileName } from './export.js';
 import { planWords } from './run-plan.js';
 import { FromCoordinator, ToCoordinator } from './protocol.js';
@@ -64,6 +64,8 @@ export class RunPanel {
     this.generations = NaN;
     /** @type {Worker | null} */
     this.coordinator = null;
+    /** A run's settings are being checked (by the core) before it starts. */
+    this.starting = false;
     this.paused = false;
     /** The latest finished run's file and settings. */
     this.runFile = /** @type {string | null} */ (null);
@@ -111,9 +113,9 @@ export class RunPanel {
   /**
    * The settings in the form, or a message saying what is wrong with them.
    * @param {string} controller
-   * @returns {{settings: import('./protocol.js').EvolveSettings, workers: number} | {error: string}}
+   * @returns {Promise<{settings: import('./protocol.js').EvolveSettings, workers: number} | {error: string}>}
    */
-  readSettings(controller) {
+  async readSettings(controller) {
     const body = this.hooks.body();
     if (!body.ok) return { error: 'draw a valid robot first (see the message under the grid)' };
     return this.form.read(body.rows, controller);
@@ -124,18 +126,29 @@ export class RunPanel {
    * robot) or 'scratch' (attention from scratch, the comparison after a fine-tune).
    * @param {'evolve' | 'finetune' | 'scratch'} mode
    */
-  start(mode) {
-    if (this.coordinator) return;
+  async start(mode) {
+    if (this.coordinator || this.starting) return;
     const source = mode === 'finetune' ? this.hooks.source() : null;
     if (mode === 'finetune' && !source) { this.refuse('load an attention module onto your robot first (Load onto my robot)'); return; }
-    const read = this.readSettings(mode === 'evolve' ? this.hooks.controller() : 'attention');
-    if ('error' in read) { this.refuse(read.error); return; }
+    this.starting = true;
+    this.update();
+    let read;
+    let plan;
+    try {
+      read = await this.readSettings(mode === 'evolve' ? this.hooks.controller() : 'attention');
+      plan = 'error' in read ? null : await planWords(read.settings.population, read.settings.budget);
+    } catch (error) {
+      read = { error: `the settings could not be checked: ${messageOf(error)}` };
+    } finally {
+      this.starting = false;
+    }
+    if ('error' in read) { this.refuse(read.error); this.update(); return; }
     this.hooks.message('');
     this.mode = mode;
     this.compareNext = mode === 'finetune' && this.compare.checked;
     this.bestSoFar = -Infinity;
     this.showWalking(true);
-    this.generations = planWords(read.settings.population, read.settings.budget)?.generations ?? NaN;
+    this.generations = plan?.generations ?? NaN;
     const settings = read.settings;
     const coordinator = spawn('coordinator.js', (msg) => this.onMessage(msg, settings),
       (text) => this.end(`the evolution stopped: ${text}`, 'failed'));
@@ -250,8 +263,8 @@ export class RunPanel {
     const running = this.coordinator !== null;
     const b = this.buttons;
     const body = this.hooks.body();
-    b.evolve.disabled = running || !body.ok;
-    b.finetune.disabled = running || !body.ok || this.hooks.source() === null;
+    b.evolve.disabled = running || this.starting || !body.ok;
+    b.finetune.disabled = running || this.starting || !body.ok || this.hooks.source() === null;
     b.finetune.title = b.finetune.disabled && !running && this.hooks.source() === null
       ? 'First load an attention module onto your robot (Transplant a module, Load onto my robot)'
       : 'Train the module on your robot: evolve the rest of its brain for this body while its attention stays as it is';

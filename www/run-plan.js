@@ -8,11 +8,11 @@ import { runPlan } from './core.js';
 
 /**
  * @param {number} population @param {number} budget
- * @returns {{text: string, generations: number} | null} null when the numbers are not valid
+ * @returns {Promise<{text: string, generations: number} | null>} null when the numbers are not valid
  */
-export function planWords(population, budget) {
+export async function planWords(population, budget) {
   let plan;
-  try { plan = runPlan(population, budget); } catch { return null; }
+  try { plan = await runPlan(population, budget); } catch { return null; }
   const extra = plan.planned > budget ? `; the last generation is finished, so the run takes ${plan.planned}` : '';
   return {
     generations: plan.generations,

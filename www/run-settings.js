@@ -6,6 +6,7 @@
  * settings a run starts with, or says what is wrong with them.
  */
 import { checkTrainingTerrain, freshSeed } from './core.js';
+import { messageOf } from './kit.js';
 import { planWords } from './run-plan.js';
 import { MAX_EVALUATORS } from './protocol.js';
 
@@ -28,6 +29,8 @@ export class RunSettings {
     /** @type {Record<string, HTMLButtonElement>} */
     this.buttons = { quick: el('run-quick'), paper: el('run-paper'), dice: el('run-dice') };
     this.plan = /** @type {HTMLElement} */ (el('run-plan'));
+    /** Plans asked: only the latest one's words are shown. */
+    this.plans = 0;
     this.preset(defaults.quick);
     this.inputs.seed.value = '1';
     this.inputs.terrain.value = defaults.trainingTerrain;
@@ -35,14 +38,18 @@ export class RunSettings {
     this.inputs.workers.max = String(MAX_EVALUATORS);
     this.buttons.quick.addEventListener('click', () => this.preset(defaults.quick));
     this.buttons.paper.addEventListener('click', () => this.preset(defaults.paper));
-    this.buttons.dice.addEventListener('click', () => { this.inputs.seed.value = String(freshSeed()); message(''); });
+    this.buttons.dice.addEventListener('click', () => freshSeed().then((seed) => { this.inputs.seed.value = String(seed); message(''); },
+      (error) => message(`no fresh seed: ${messageOf(error)}`)));
     for (const input of Object.values(this.inputs)) input.addEventListener('change', () => message(''));
     for (const input of [this.inputs.population, this.inputs.budget]) input.addEventListener('input', () => this.describePlan());
   }
 
   /** Says what the population and budget in the form make. */
   describePlan() {
-    this.plan.textContent = planWords(Number(this.inputs.population.value), Number(this.inputs.budget.value))?.text ?? '';
+    const ticket = ++this.plans;
+    planWords(Number(this.inputs.population.value), Number(this.inputs.budget.value)).then((words) => {
+      if (ticket === this.plans) this.plan.textContent = words?.text ?? '';
+    });
   }
 
   /** @param {import('./core.js').RunPreset} p */
@@ -73,9 +80,9 @@ export class RunSettings {
   /**
    * The settings in the form for a run on `rows`, or a message saying what is wrong with them.
    * @param {string} rows @param {string} controller
-   * @returns {{settings: import('./protocol.js').EvolveSettings, workers: number} | {error: string}}
+   * @returns {Promise<{settings: import('./protocol.js').EvolveSettings, workers: number} | {error: string}>}
    */
-  read(rows, controller) {
+  async read(rows, controller) {
     const number = (/** @type {string} */ key) => Number(this.inputs[key].value.trim() || NaN);
     const [population, seconds, budget, seed, workers] = ['population', 'seconds', 'budget', 'seed', 'workers'].map(number);
     if (!Number.isInteger(population) || population < 1) return { error: `population must be a whole number of at least 1, not "${this.inputs.population.value}"` };
@@ -84,7 +91,7 @@ export class RunSettings {
     if (!Number.isSafeInteger(seed) || seed < 0) return { error: `the seed must be a whole number from 0 to 2^53 - 1, not "${this.inputs.seed.value}"` };
     if (!Number.isInteger(workers) || workers < 1 || workers > MAX_EVALUATORS) return { error: `workers must be a whole number from 1 to ${MAX_EVALUATORS}, not "${this.inputs.workers.value}"` };
     const terrain = this.inputs.terrain.value.trim();
-    const terrainProblem = checkTrainingTerrain(terrain);
+    const terrainProblem = await checkTrainingTerrain(terrain);
     if (terrainProblem) return { error: `training terrain: ${terrainProblem}` };
     return { settings: { shape: rows, controller, seed, seconds, terrain, population, budget }, workers };
   }

@@ -45,9 +45,9 @@ export function encodeState(state) {
  * @param {string[]} controllers the families the page knows
  * @param {{width: number, height: number}} grid the editor's grid
  * @param {boolean} [draft] accept an unfinished drawing
- * @returns {{state: PageState} | {error: string}}
+ * @returns {Promise<{state: PageState} | {error: string}>}
  */
-export function decodeState(text, controllers, grid, draft = false) {
+export async function decodeState(text, controllers, grid, draft = false) {
   try {
     const p = new URLSearchParams(text.replace(/^#/, ''));
     const rows = p.get('shape') ?? '';
@@ -56,18 +56,19 @@ export function decodeState(text, controllers, grid, draft = false) {
     if (lines.length > grid.height || lines.some((l) => l.length > grid.width)) {
       return { error: `its robot does not fit the ${grid.width} x ${grid.height} drawing grid` };
     }
-    const check = checkShape(rows);
+    const check = await checkShape(rows);
     if (!check.ok && !(draft && check.pieces.length > 0)) return { error: `its robot is not valid: ${check.message}` };
     const controller = p.get('controller') ?? controllers[0];
     if (!controllers.includes(controller)) return { error: `unknown controller "${controller}"` };
     const view = p.get('view') ?? '';
-    if (view && checkTerrain(view)) return { error: checkTerrain(view) };
+    const viewProblem = view ? await checkTerrain(view) : '';
+    if (viewProblem) return { error: viewProblem };
     /** @type {Record<string, string>} */
     const run = {};
     for (const k of RUN_KEYS) {
       const v = p.get(k === 'terrain' ? 'train' : k);
       if (v === null) continue;
-      const problem = settingProblem(k, v);
+      const problem = k === 'terrain' ? await checkTrainingTerrain(v) : settingProblem(k, v);
       if (problem) return { error: problem };
       run[k] = v;
     }
@@ -77,7 +78,7 @@ export function decodeState(text, controllers, grid, draft = false) {
       const kind = p.get('brain') ?? '';
       if (!controllers.includes(kind)) return { error: `unknown controller "${kind}" for its genome` };
       const genome = base64ToGenome(genomeText);
-      checkGenome(kind, rows, genome);
+      await checkGenome(kind, rows, genome);
       const module = p.get('module');
       brain = { controller: kind, genome, label: p.get('label') ?? `${kind} from a link`, module: module && /^pretrained\/[\w.-]+\.json$/.test(module) ? module : null };
     }
@@ -88,7 +89,8 @@ export function decodeState(text, controllers, grid, draft = false) {
 }
 
 /**
- * '' or what is wrong with a run setting read from a link.
+ * '' or what is wrong with a run setting read from a link (the training terrain is the core's
+ * check, asked apart).
  * @param {string} key @param {string} value
  */
 function settingProblem(key, value) {
@@ -98,7 +100,6 @@ function settingProblem(key, value) {
     case 'seconds': return n > 0 && n <= 3600 ? '' : `episode seconds "${value}" are not in (0, 3600]`;
     case 'budget': return Number.isInteger(n) && n >= 1 && n <= 10_000_000 ? '' : `budget "${value}" is not a whole number of evaluations from 1 to 10,000,000`;
     case 'seed': return Number.isSafeInteger(n) && n >= 0 ? '' : `seed "${value}" is not a whole number from 0 to 2^53 - 1`;
-    case 'terrain': return checkTrainingTerrain(value);
     default: return '';
   }
 }

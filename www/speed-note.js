@@ -37,15 +37,19 @@ export class SpeedNote {
     }
     this.set(NaN, `Measuring its speed over a ${seconds}-s episode on ${terrain}…`);
     const what = { rows: brain.rows, controller: brain.controller, genome: brain.genome, terrain, seconds };
-    this.measurer.measure(what).then((speed) => {
-      if (ticket === this.shown) this.set(speed, this.words(brain, speed, terrain, seconds));
-    }, (error) => {
+    this.measurer.measure(what).then(async (speed) => {
+      const words = await this.words(brain, speed, terrain, seconds);
+      if (ticket === this.shown) this.set(speed, words);
+    }).catch((error) => {
       if (ticket === this.shown && messageOf(error) !== 'stale') this.set(NaN, `Its speed could not be measured: ${messageOf(error)}`);
     });
   }
 
-  /** @param {import('./brain.js').Brain} brain @param {number} speed @param {string} terrain @param {number} seconds */
-  words(brain, speed, terrain, seconds) {
+  /**
+   * @param {import('./brain.js').Brain} brain @param {number} speed @param {string} terrain @param {number} seconds
+   * @returns {Promise<string>}
+   */
+  async words(brain, speed, terrain, seconds) {
     const here = `Speed here: ${speed.toFixed(2)} m/s over a ${seconds}-s episode on ${terrain}.`;
     if (brain.oneShot) {
       return `${here} That is its one-shot speed, before any training for this body. Its attention fits any body, but the `
@@ -55,7 +59,7 @@ export class SpeedNote {
     }
     const trained = brain.trained;
     if (!trained || !Number.isFinite(trained.speed)) return here;
-    const fresh = checkTerrain(trained.terrain) !== ''; // a family (hilly-1-10), not one terrain
+    const fresh = (await checkTerrain(trained.terrain)) !== ''; // a family (hilly-1-10), not one terrain
     const where = fresh ? `a ${trained.terrain} terrain drawn fresh for that evaluation` : trained.terrain;
     const why = fresh ? 'Training draws a fresh terrain for every evaluation, each generation; the viewer keeps one terrain, so the two differ.'
       : 'Training used other sensor noise (or another terrain), so the two can differ.';

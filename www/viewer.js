@@ -8,7 +8,6 @@
  */
 import { AttentionPanel } from './attention.js';
 import { AttentionReader } from './attention-reader.js';
-import { attentionTerms } from './core.js';
 import { FreezeControl } from './freeze.js';
 import { spawn } from './kit.js';
 import { FromWorker, ToWorker, frameIsConsistent } from './protocol.js';
@@ -114,7 +113,7 @@ export class Viewer {
         this.current = msg.params;
         this.renderer.setTerrain(msg.terrainXs, msg.terrainYs, !msg.carried);
         this.attention.setLayout(msg.cells);
-        this.reader.setEpisode(msg.voxels, msg.params.brain?.controller === 'attention' ? attentionTerms(msg.params.brain.genome) : null);
+        this.reader.setEpisode(msg.voxels, msg.attentionTerms);
         this.freeze.loaded(msg.controller);
         this.readout.reset(msg.params, msg.carried);
         this.status.textContent = `${msg.voxels} voxels, ${msg.controller}`;

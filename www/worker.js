@@ -5,7 +5,7 @@
  * short slices so that control messages are handled promptly, and posts frames whose
  * buffers are transferred, not copied. Message types and buffer layouts: protocol.js.
  */
-import init, { Episode, defaults, start as installPanicHook } from './pkg/vsr.js';
+import init, { Episode, attentionTerms, defaults, start as installPanicHook } from './pkg/vsr.js';
 import { loadWasm, messageOf } from './kit.js';
 import { FromWorker, ToWorker } from './protocol.js';
 
@@ -101,9 +101,10 @@ function load(asked) {
   const terrainXs = fresh.terrainXs();
   const terrainYs = fresh.terrainYs();
   const cells = fresh.voxelCells();
+  const terms = next.brain?.controller === 'attention' ? Array.from(attentionTerms(next.brain.genome)) : null;
   self.postMessage({
     type: FromWorker.LOADED, params, carried, voxels: fresh.voxelCount, controller: fresh.controller,
-    cells, terrainXs, terrainYs,
+    cells, terrainXs, terrainYs, attentionTerms: terms,
   }, [cells.buffer, terrainXs.buffer, terrainYs.buffer]);
   restartClocks();
   postFrame();

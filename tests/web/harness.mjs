@@ -6,6 +6,7 @@
  * on the editor, read the live figures (their raw numbers in data-value), wait for text.
  * Needs `make wasm` (www/pkg) first; CHROMIUM overrides /usr/bin/chromium.
  */
+import assert from 'node:assert/strict';
 import { mkdir } from 'node:fs/promises';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -38,7 +39,7 @@ export async function start() {
 /**
  * A new page (its own storage) at `url`, with its problems collected, once the robot walks.
  * @param {import('playwright-core').Browser} browser @param {string} url
- * @param {{width?: number, height?: number, touch?: boolean}} [options] screen size, a touch screen
+ * @param {Parameters<typeof openBare>[2]} [options] see {@link openBare}
  */
 export async function openPage(browser, url, options = {}) {
   const opened = await openBare(browser, url, options);
@@ -50,11 +51,13 @@ export async function openPage(browser, url, options = {}) {
  * A new page (its own storage) at `url`, with its problems collected, once it has loaded:
  * any page, not only the playground.
  * @param {import('playwright-core').Browser} browser @param {string} url
- * @param {{width?: number, height?: number, touch?: boolean}} [options] screen size, a touch screen
+ * @param {{width?: number, height?: number, touch?: boolean, init?: () => void}} [options] screen size, a
+ *   touch screen, a script run in the page's main realm before the page's own (not in its workers)
  */
 export async function openBare(browser, url, options = {}) {
   const context = await browser.newContext({ viewport: { width: options.width ?? 1300, height: options.height ?? 1100 },
     acceptDownloads: true, hasTouch: options.touch ?? false });
+  if (options.init) await context.addInitScript(options.init);
   const page = await context.newPage();
   /** @type {string[]} */
   const problems = [];
@@ -85,6 +88,19 @@ export async function figure(page, id) {
 export async function waitForText(page, id, pattern, timeout = 20_000) {
   await page.waitForFunction(([id, source, flags]) => new RegExp(source, flags).test(document.getElementById(id)?.textContent ?? ''),
     [id, pattern.source, pattern.flags], { timeout, polling: 50 });
+}
+
+/**
+ * Waits until the number behind #id is `expected` (the page shows the core's answers a moment
+ * after an action), else fails saying what it shows.
+ * @param {import('playwright-core').Page} page @param {string} id @param {number} expected @param {string} [what]
+ */
+export async function expectFigure(page, id, expected, what) {
+  try {
+    await waitForFigure(page, id, `v === ${expected}`, 5_000);
+  } catch {
+    assert.equal(await figure(page, id), expected, what);
+  }
 }
 
 /**

@@ -9,7 +9,7 @@
  */
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
-import { byTestId, clickCells, dragCells, figure, openPage, screenshot, start, waitForFigure, waitForText } from './harness.mjs';
+import { byTestId, clickCells, dragCells, expectFigure, figure, openPage, screenshot, start, waitForFigure, waitForText } from './harness.mjs';
 
 /** @type {Awaited<ReturnType<typeof start>>} */ let env;
 /** @type {import('playwright-core').Page} */ let page;
@@ -22,8 +22,8 @@ before(async () => {
 
 after(async () => { await env?.close(); });
 
-/** The parameter count shown for the chosen controller. */
-async function params() { return figure(page, 'param-count'); }
+/** Waits until the parameter count shown for the chosen controller is `n`. @param {number} n @param {string} [what] */
+async function params(n, what) { await expectFigure(page, 'param-count', n, what); }
 
 test('the default biped walks: its x changes and the speed figure appears', async () => {
   await waitForFigure(page, 'sim-time', 'v >= 2', 30_000);
@@ -32,7 +32,7 @@ test('the default biped walks: its x changes and the speed figure appears', asyn
   const x1 = await figure(page, 'robot-x');
   assert.ok(Math.abs(x1 - x0) > 0.2, `x moved by more than 0.2 m in 3 simulated s (from ${x0} to ${x1})`);
   assert.ok(await figure(page, 'sim-rate') > 0.2);
-  assert.equal(await params(), 73, 'attention on the biped: 73 parameters');
+  await params(73, 'attention on the biped: 73 parameters');
   assert.deepEqual(problems, []);
 });
 
@@ -41,16 +41,16 @@ test('draw a robot cell by cell: the parameter count follows and the viewer walk
   await waitForText(page, 'message', /draw at least one voxel/);
   assert.equal(await byTestId(page, 'evolve').isDisabled(), true, 'nothing to evolve');
   await clickCells(page, [[0, 0]]);
-  assert.equal(await params(), 32 + 4 + 1);
+  await params(32 + 4 + 1);
   await clickCells(page, [[1, 0], [2, 0]]);
-  assert.equal(await params(), 32 + 4 * 3 + 1);
+  await params(32 + 4 * 3 + 1);
   await byTestId(page, 'controller').selectOption('mlp');
-  assert.equal(await params(), 4 * 3 + 1, 'MLP: 4n + 1');
+  await params(4 * 3 + 1, 'MLP: 4n + 1');
   await byTestId(page, 'controller').selectOption('mlp-comm');
-  assert.equal(await params(), (8 * 3 + 1) * 5, 'MLP-Comm: (8n + 1) x 5');
+  await params((8 * 3 + 1) * 5, 'MLP-Comm: (8n + 1) x 5');
   await byTestId(page, 'controller').selectOption('attention');
   await clickCells(page, [[0, 1]]);
-  assert.equal(await params(), 32 + 4 * 4 + 1);
+  await params(32 + 4 * 4 + 1);
   await waitForText(page, 'status', /^4 voxels, phase gait$/);
   assert.equal(await page.locator('#rows').inputValue(), '100-111');
   assert.equal(await byTestId(page, 'message').isHidden(), true, 'a valid drawing clears the message');
@@ -102,7 +102,7 @@ test('drag draws a row, right-drag erases it, typed rows and presets replace the
   assert.equal(await page.locator('#rows').inputValue(), '111-101', 'a refused entry shows the drawing again');
   await byTestId(page, 'preset').selectOption({ label: 'comb-7x2' });
   await waitForText(page, 'status', /^11 voxels/);
-  assert.equal(await params(), 32 + 4 * 11 + 1);
+  await params(32 + 4 * 11 + 1);
   assert.deepEqual(problems, []);
 });
 

@@ -15,13 +15,13 @@ const WALK_TIMEOUT_MS = 10_000;
  * @property {import('../core.js').Defaults} defaults
  * @property {() => boolean} running                 a run uses the robot
  * @property {() => Promise<void>} stopRun            stops it; resolves once stopped
- * @property {(rows: string) => void} setBody         draws rows, driven by the phase gait
+ * @property {(rows: string) => Promise<void>} setBody  draws rows, driven by the phase gait
  * @property {(key: string, label?: string) => Promise<import('../modules.js').Module>} module  reads and chooses a module
- * @property {(module: import('../modules.js').Module) => void} openModule   on its own body
- * @property {(module: import('../modules.js').Module) => void} loadModule   onto the drawn body
+ * @property {(module: import('../modules.js').Module) => Promise<void>} openModule   on its own body
+ * @property {(module: import('../modules.js').Module) => Promise<void>} loadModule   onto the drawn body
  * @property {(terrain: string, gait: {frequency: number, phase: number}) => void} setView
  * @property {(values: Record<string, string>, compare: boolean) => void} setRun
- * @property {(kind: string) => void} setController
+ * @property {(kind: string) => Promise<unknown>} setController
  * @property {() => {shape: string, terrain: string, brain: {controller: string, genome: Float32Array} | null} | null} wanted
  *   the episode the page asked the viewer for last
  * @property {() => {shape: string, terrain: string, brain: {controller: string, genome: Float32Array} | null} | null} walking
@@ -40,10 +40,10 @@ export async function stage(page, chapter) {
   page.setView(setup.terrain, page.defaults.gait);
   if (setup.run) page.setRun(setup.run, setup.compare ?? false);
   const brain = setup.brain ? await page.module(setup.brain.module) : null;
-  if (setup.rows !== null && setup.brain?.on !== 'own') page.setBody(setup.rows);
-  if (setup.controller) page.setController(setup.controller);
-  if (brain && setup.brain?.on === 'own') page.openModule(brain);
-  if (brain && setup.brain?.on === 'drawn') page.loadModule(brain);
+  if (setup.rows !== null && setup.brain?.on !== 'own') await page.setBody(setup.rows);
+  if (setup.controller) await page.setController(setup.controller);
+  if (brain && setup.brain?.on === 'own') await page.openModule(brain);
+  if (brain && setup.brain?.on === 'drawn') await page.loadModule(brain);
   if (setup.race) await race(page, setup.race);
   await walking(page);
 }
@@ -53,7 +53,7 @@ async function race(page, keys) {
   page.race.clear();
   for (const key of keys) {
     try {
-      page.race.addRunFile(await page.module(key));
+      await page.race.addRunFile(await page.module(key));
     } catch (error) {
       page.message(`could not race ${key}: ${messageOf(error)}`);
     }

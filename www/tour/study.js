@@ -111,7 +111,7 @@ export class StudyPanel {
     if (!run) return;
     try {
       const module = await this.page.module(`${STUDY_DIR}runs/${run.run}.json`, `study: ${describe(run)}`);
-      this.page.openModule(module);
+      await this.page.openModule(module);
       this.section.ownerDocument.getElementById('watch-panel')?.scrollIntoView({ block: 'start', behavior: 'instant' });
     } catch (error) {
       this.page.message(`could not open the run ${run.run}: ${messageOf(error)}`);

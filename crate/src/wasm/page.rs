@@ -1,5 +1,5 @@
-//! What the page's main thread asks the core without simulating: the defaults it shows, the
-//! check of a drawing (verdict, pieces, parameter counts), and the
+//! What the page asks the core without simulating (through its core worker, www/core-worker.js):
+//! the defaults it shows, the check of a drawing (verdict, pieces, parameter counts), and the
 //! two genome operations of the playground: transplanting a module onto a drawn body
 //! (SPEC 10, the rule of `vsr finetune`) and following a walking robot's edits.
 

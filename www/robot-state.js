@@ -1,0 +1,50 @@
+// @ts-check
+/**
+ * The robot's state as the page keeps it across reloads and shares it as a link (share.js
+ * writes and reads it as text): the drawing, the chosen family, the viewer's terrain, the run
+ * settings and the brain that fits the drawing; and showing such a state on the robot.
+ */
+import { messageOf } from './kit.js';
+
+/** @param {import('./robot.js').Robot} robot @returns {import('./share.js').PageState} */
+export function pageState(robot) {
+  const { drawing, viewer, runs } = robot.parts;
+  const brain = robot.brain;
+  return {
+    rows: drawing.rows(), controller: robot.controllerSelect.value, terrain: viewer.terrain.value, run: runs.values(),
+    brain: brain && brain.rows === drawing.rows()
+      ? { controller: brain.controller, genome: brain.genome, label: brain.label, module: brain.module } : null,
+  };
+}
+
+/**
+ * Shows `state` on the robot, a change of its brain (run it in its turn: Robot.restore); a
+ * robot that does not fit the grid is refused.
+ * @param {import('./robot.js').Robot} robot @param {import('./share.js').PageState} state
+ * @returns {Promise<string>} '' or why nothing was shown
+ */
+export async function applyState(robot, state) {
+  const { drawing, editor, viewer, runs, defaults } = robot.parts;
+  const problem = drawing.setRows(state.rows);
+  if (problem) return problem;
+  drawing.undoStack = [];
+  if (defaults.controllers.includes(state.controller)) robot.controllerSelect.value = state.controller;
+  if (state.terrain) viewer.terrain.value = state.terrain;
+  runs.setValues(state.run);
+  robot.brain = null;
+  if (state.brain) {
+    const brain = { ...state.brain, rows: state.rows, origin: robot.origin(), source: /** @type {string | null} */ (null) };
+    robot.brain = brain;
+    if (state.brain.module) {
+      try {
+        const text = await fetch(state.brain.module).then((r) => (r.ok ? r.text() : Promise.reject(new Error(`HTTP ${r.status}`))));
+        brain.source = text;
+      } catch (error) {
+        robot.error(`the module ${state.brain.module} could not be fetched, so this robot cannot be fine-tuned: ${messageOf(error)}`);
+      }
+    }
+  }
+  editor.draw();
+  await robot.follow(robot.change(false));
+  return '';
+}
