@@ -6,9 +6,9 @@
  * transplanted module, an evolved best, or the genome of a shared link. When the body
  * changes, the brain's genome follows it by grid position (the core's remap). Its state is
  * what the page keeps across reloads and shares as a link (robot-state.js); a click on the
- * walking robot edits it (walking-edit.js). The core
- * answers from its worker (core.js), so a change of the brain waits for it: changes apply one
- * at a time, in the order they were asked (serial), each on the drawing as it was when asked.
+ * walking robot edits it (walking-edit.js). The core answers from its worker (core.js), so a
+ * change of the brain waits for it: changes apply one at a time, in the order they were asked
+ * (serial), each on the drawing as it was when asked.
  */
 import { followEdit, ownBody, transplanted } from './brain.js';
 import { checkShape } from './core.js';
@@ -142,16 +142,16 @@ export class Robot {
 
   /** The drawing as it is now, and its check asked. @param {import('./protocol.js').Shift | false} keepPlace */
   change(keepPlace) {
-    return { rows: this.parts.drawing.rows(), origin: this.origin(), keepPlace, checked: this.updateCheck() };
+    return { rows: this.parts.drawing.rows(), origin: this.origin(), seed: this.seed(), keepPlace, checked: this.updateCheck() };
   }
 
   /** The brain follows the body of `change` (the core's remap) and the viewer walks it. @param {ReturnType<Robot['change']>} change */
-  async follow({ rows, origin, keepPlace, checked }) {
+  async follow({ rows, origin, seed, keepPlace, checked }) {
     if (!(await checked).ok) { this.parts.keep(); return; }
     const brain = this.brain;
     if (brain && brain.rows !== rows) {
       try {
-        this.brain = await followEdit(brain, rows, origin, this.seed(), ++this.edits);
+        this.brain = await followEdit(brain, rows, origin, seed, ++this.edits);
       } catch (error) {
         this.error(`the controller could not follow the edit: ${messageOf(error)}`);
         this.brain = null;
