@@ -19,6 +19,7 @@ use crate::controllers::{
 use crate::error::{Error, Result};
 use crate::simulation::Terrain;
 use serde::{Deserialize, Serialize};
+use std::sync::Arc;
 
 /// The paper's ablation terrain.
 pub const ABLATION_TERRAIN: &str = "hilly-1-10-0";
@@ -42,7 +43,7 @@ pub fn ablate(
 ) -> Result<Vec<AblationPoint>> {
     let attention_genes = attention_genome(best)?;
     let noise = Some(noise_seed_for(terrain));
-    let terrain = Terrain::parse(terrain)?;
+    let terrain = Arc::new(Terrain::parse(terrain)?);
     let snapshots = record_matrices(best, &terrain, last_second, noise)?;
     let mut points = Vec::with_capacity(snapshots.len());
     for (s, matrices) in (0u32..).zip(snapshots) {
@@ -51,7 +52,7 @@ pub fn ablate(
         let mut frozen = FrozenAttention::new(plain);
         frozen.freeze_with(&matrices)?;
         let policy = Policy::Brain(Box::new(frozen));
-        let mut episode = Episode::with_policy(&best.shape, terrain.clone(), policy, noise);
+        let mut episode = Episode::with_policy(&best.shape, Arc::clone(&terrain), policy, noise);
         let outcome = episode.run(seconds)?;
         points.push(AblationPoint {
             freeze_second: s,
@@ -80,13 +81,13 @@ fn attention_genome(best: &Best) -> Result<&[f32]> {
 /// episode of `best` on `terrain`.
 fn record_matrices(
     best: &Best,
-    terrain: &Terrain,
+    terrain: &Arc<Terrain>,
     last_second: u32,
     noise: Option<u64>,
 ) -> Result<Vec<Vec<f32>>> {
     let controller = controller_for(best.controller, &best.shape, &best.genome)?;
     let policy = Policy::Brain(controller);
-    let mut episode = Episode::with_policy(&best.shape, terrain.clone(), policy, noise);
+    let mut episode = Episode::with_policy(&best.shape, Arc::clone(terrain), policy, noise);
     let mut taken = 0u64;
     let mut snapshots = Vec::new();
     for s in 0..=last_second {

@@ -11,6 +11,7 @@ use crate::error::{Error, Result};
 use crate::simulation::constants::{ACTUATION_HOLD_STEPS, DT};
 use crate::simulation::sensors::Sensors;
 use crate::simulation::{Shape, Terrain, World};
+use std::sync::Arc;
 
 /// The neighbour table of a shape, for controllers.
 pub fn topology(shape: &Shape) -> Topology {
@@ -49,7 +50,7 @@ pub struct Outcome {
 #[derive(Debug)]
 pub struct Episode {
     world: World,
-    terrain: Terrain,
+    terrain: Arc<Terrain>,
     policy: Policy,
     sensors: Sensors,
     columns: Vec<usize>,
@@ -72,15 +73,15 @@ impl Episode {
     }
 
     /// Builds a phase-gait episode from parsed parts.
-    pub fn from_parts(shape: &Shape, terrain: Terrain, gait: PhaseGait) -> Episode {
+    pub fn from_parts(shape: &Shape, terrain: impl Into<Arc<Terrain>>, gait: PhaseGait) -> Episode {
         Episode::with_policy(shape, terrain, Policy::Gait(gait), None)
     }
 
-    /// Builds an episode driven by `policy`; `noise_seed` seeds the sensor noise
-    /// (None: noiseless sensors).
+    /// Builds an episode driven by `policy` on `terrain` (its own, or one shared read-only
+    /// with other episodes); `noise_seed` seeds the sensor noise (None: noiseless sensors).
     pub fn with_policy(
         shape: &Shape,
-        terrain: Terrain,
+        terrain: impl Into<Arc<Terrain>>,
         policy: Policy,
         noise_seed: Option<u64>,
     ) -> Episode {
@@ -91,11 +92,12 @@ impl Episode {
     /// metres before it is lowered onto the terrain.
     pub fn with_start_offset(
         shape: &Shape,
-        terrain: Terrain,
+        terrain: impl Into<Arc<Terrain>>,
         mut policy: Policy,
         noise_seed: Option<u64>,
         offset: f64,
     ) -> Episode {
+        let terrain = terrain.into();
         let world = World::with_start_offset(shape.voxels(), terrain.xs(), terrain.ys(), offset);
         let columns: Vec<usize> = shape.voxels().iter().map(|c| c.0).collect();
         if let Policy::Brain(c) = &mut policy {

@@ -6,6 +6,7 @@ use super::run::Best;
 use crate::controllers::{build, Controller, ControllerKind};
 use crate::error::{Error, Result};
 use crate::simulation::{Shape, Terrain};
+use std::sync::Arc;
 
 /// A controller of `kind` for `shape` with parameters `genome`; fails with a message
 /// on a length mismatch or a non-finite gene.
@@ -24,7 +25,7 @@ pub fn controller_for(
 /// simulation becomes non-finite is reported as an error.
 pub fn evaluate(
     shape: &Shape,
-    terrain: Terrain,
+    terrain: impl Into<Arc<Terrain>>,
     kind: ControllerKind,
     genome: &[f32],
     noise_seed: Option<u64>,
@@ -38,7 +39,7 @@ pub fn evaluate(
 /// Fitness for evolution: the episode's velocity, or NaN (worst) if it exploded.
 pub fn fitness(
     shape: &Shape,
-    terrain: Terrain,
+    terrain: impl Into<Arc<Terrain>>,
     kind: ControllerKind,
     genome: &[f32],
     noise_seed: Option<u64>,
@@ -54,7 +55,7 @@ pub fn fitness(
 pub fn replay(
     best: &Best,
     shape: Option<&Shape>,
-    terrain: Terrain,
+    terrain: impl Into<Arc<Terrain>>,
     noise_seed: Option<u64>,
 ) -> Result<Episode> {
     if let Some(other) = shape.filter(|s| **s != best.shape) {

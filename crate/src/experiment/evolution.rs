@@ -8,11 +8,13 @@
 //! `evaluation_seed(run seed, g, index, Terrain)` and with sensor noise seeded by
 //! `evaluation_seed(run seed, g, index, SensorNoise)`; the GA's own stream is seeded by
 //! `evaluation_seed(run seed, 0, 0, Genetics)`. Hence the result never depends on the number
-//! of threads or workers. The core has no clock: wall times come from the caller.
+//! of threads or workers. A fixed training terrain is built once, when the run starts, and
+//! every job shares it (see `ground`). The core has no clock: wall times come from the caller.
 
 use super::config::{check_seconds, EvolutionConfig};
 use super::evaluate::fitness;
 use super::finetune::initial_population;
+use super::ground::{ground, run_ground};
 use super::run::{Best, GenerationRecord, RunFile, Timing};
 use super::seeds::{evaluation_seed, Purpose};
 use crate::controllers::ControllerKind;
@@ -20,6 +22,7 @@ use crate::error::{Error, Result};
 use crate::genetics::{Candidate, Ga, GaState};
 use crate::simulation::{Shape, Terrain};
 use serde::{Deserialize, Serialize};
+use std::sync::Arc;
 
 /// The seed of a run's GA stream.
 fn ga_seed(config: &EvolutionConfig) -> u64 {
@@ -30,7 +33,7 @@ fn ga_seed(config: &EvolutionConfig) -> u64 {
 /// `{generation, index, shape (rows), controller, terrain, noiseSeed (decimal string: a JS
 /// number cannot hold every 64-bit seed), seconds}`, without the genome, which travels
 /// separately as f32 bits.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct Job {
     /// Generation of the batch.
@@ -51,6 +54,9 @@ pub struct Job {
     pub noise_seed: u64,
     /// Simulated seconds.
     pub seconds: f64,
+    /// The run's ground when every job shares it (a fixed terrain), built once per run.
+    #[serde(skip)]
+    pub(super) ground: Option<Arc<Terrain>>,
 }
 
 impl Job {
@@ -58,7 +64,10 @@ impl Job {
     /// terrain that does not parse, a genome that does not fit or a bad episode length is an
     /// error, never a fitness.
     pub fn fitness(&self) -> Result<f64> {
-        let terrain = Terrain::parse(&self.terrain)?;
+        let terrain = match &self.ground {
+            Some(shared) if shared.name() == self.terrain.trim() => Arc::clone(shared),
+            _ => ground(&self.terrain)?,
+        };
         check_seconds(self.seconds)?;
         let n_voxels = self.shape.voxel_count();
         self.controller
@@ -80,6 +89,7 @@ pub struct Evolution {
     config: EvolutionConfig,
     ga: Ga,
     history: Vec<GenerationRecord>,
+    ground: Option<Arc<Terrain>>,
 }
 
 impl Evolution {
@@ -96,6 +106,7 @@ impl Evolution {
             }
         };
         Ok(Evolution {
+            ground: run_ground(&config.terrain)?,
             config,
             ga,
             history: Vec::new(),
@@ -117,6 +128,7 @@ impl Evolution {
             state,
         )?;
         Ok(Evolution {
+            ground: run_ground(&config.terrain)?,
             config,
             ga,
             history,
@@ -145,6 +157,7 @@ impl Evolution {
             terrain: self.config.terrain.name_for(terrain_seed),
             noise_seed: evaluation_seed(seed, g, i, Purpose::SensorNoise),
             seconds: self.config.seconds,
+            ground: self.ground.clone(),
         }
     }
 

@@ -12,6 +12,7 @@ pub mod evolution;
 pub mod finetune;
 pub mod freeze;
 pub mod gait;
+mod ground;
 mod json;
 pub mod playground;
 pub mod policy;
