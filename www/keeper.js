@@ -103,7 +103,7 @@ export class Keeper {
   /** @param {string} why @param {string} instead whose robot is shown instead */
   refuse(why, instead) {
     this.hooks.say(`This link could not be opened: ${plain(why)}. It may have been cut short or changed on the way; `
-      + `ask for it again. Shown instead: ${instead}, ${this.hooks.shown()}.`, 'lasting');
+      + `ask for it again. Shown instead: ${instead}, ${this.hooks.shown()}.`);
   }
 }
 

@@ -17,6 +17,7 @@ import { MessageBox } from './message.js';
 import { ModuleList } from './modules.js';
 import { Race } from './race.js';
 import { Robot } from './robot.js';
+import { pageState } from './robot-state.js';
 import { RunFollower } from './run-follow.js';
 import { RunPanel } from './run-panel.js';
 import { SpeedNote } from './speed-note.js';
@@ -26,12 +27,12 @@ import { Viewer } from './viewer.js';
 import { editWalking } from './walking-edit.js';
 
 const el = (/** @type {string} */ id) => /** @type {any} */ (document.getElementById(id));
-const messages = new MessageBox(el('message'), el('message-text'), el('message-close'));
+const messages = new MessageBox(el('message'));
 const defaults = await ready.catch((error) => {
   messages.show(`The simulator could not load: ${messageOf(error)}`);
   throw error;
 });
-/** @param {string} text an error for the person, or '' to clear it */
+/** @param {string} text an error for the person (it stays until closed) */
 const showMessage = (text) => messages.show(text, 'error');
 const drawing = new Drawing(defaults.grid.width, defaults.grid.height);
 const controllerSelect = /** @type {HTMLSelectElement} */ (el('controller'));
@@ -48,11 +49,10 @@ const editor = new Editor(el('editor'), drawing, {
 });
 const viewer = new Viewer(document, {
   message: showMessage,
-  loaded: () => messages.clear('error'),
   clicked: (pick) => editWalking(robot, pick),
 });
 const keeper = new Keeper(defaults, el('share-link'), {
-  state: () => robot.pageState(),
+  state: () => pageState(robot),
   apply: (state) => robot.restore(state),
   shown: () => `${drawing.rows()} (${robot.check.voxels} voxels) driven by ${robot.brain ? robot.brain.label : 'the phase gait'}`,
   running: () => robot.running,

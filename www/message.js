@@ -1,62 +1,77 @@
 // @ts-check
 /**
- * The one place where the page speaks to the person: a box fixed at the bottom of the screen
- * (so that it never moves what is being drawn on), with a close button. Errors and notes go
- * away by themselves after a while or at the next successful action; a validation message
- * stays while the drawing is not a robot; a 'lasting' message (a link that could not be
- * opened) stays until the person closes it or another message takes its place: clearing
- * passes it by. The core's category prefixes ("invalid input: ") are dropped: the sentence
- * after them says what is wrong.
+ * The one place where the page speaks to the person: a list fixed at the bottom of the screen
+ * (so that it never moves what is being drawn on), each message with its own close button.
+ * - An error (bad input, a dying worker, a failed request, a link that could not be opened)
+ *   stays until the person closes it: no timer, no later success and no other message takes
+ *   it away. The same error said again is shown once, as the newest.
+ * - A note ("Link copied") goes away by itself after a while; a newer note replaces it.
+ * - The validation message (the drawing is not a robot yet) stays while that is so: the
+ *   drawing's check replaces or clears it.
+ * The core's category prefixes ("invalid input: ") are dropped: the sentence after them says
+ * what is wrong.
  */
 
-/** How long an error and a note stay up (ms). */
-const ERROR_MS = 15_000;
+/** How long a note stays up (ms). */
 const NOTE_MS = 6_000;
 
-/** @typedef {'error' | 'note' | 'validation' | 'lasting'} Kind */
+/** @typedef {'error' | 'note' | 'validation'} Kind */
 
 export class MessageBox {
-  /** @param {HTMLElement} box @param {HTMLElement} text @param {HTMLButtonElement} close */
-  constructor(box, text, close) {
+  /** @param {HTMLElement} box the list of messages, hidden while empty */
+  constructor(box) {
     this.box = box;
-    this.text = text;
-    this.timer = 0;
-    close.addEventListener('click', () => this.dismiss());
-  }
-
-  /** The close button: hides whatever is shown, a lasting message too. */
-  dismiss() {
-    window.clearTimeout(this.timer);
-    this.text.textContent = '';
-    this.box.hidden = true;
-    this.box.dataset.kind = '';
+    /** @type {Map<HTMLElement, number>} the notes' timers */
+    this.timers = new Map();
   }
 
   /**
-   * Shows `words` (a message, '' to clear) of a kind.
+   * Shows `words` (nothing when empty) of a kind.
    * @param {string} words @param {Kind} [kind]
    */
   show(words, kind = 'error') {
     const sentence = plain(words);
-    if (sentence === '' && this.kind === 'lasting') return; // only the person closes it
-    window.clearTimeout(this.timer);
-    this.text.textContent = sentence;
-    this.box.hidden = sentence === '';
-    this.box.dataset.kind = sentence === '' ? '' : kind;
-    if (sentence !== '' && kind !== 'validation' && kind !== 'lasting') {
-      this.timer = window.setTimeout(() => this.clear(), kind === 'note' ? NOTE_MS : ERROR_MS);
+    if (kind !== 'error') this.clear(kind); // one note, one validation message at a time
+    if (sentence === '') return;
+    for (const old of this.entries()) {
+      if (old.dataset.kind === kind && old.firstChild?.textContent === sentence) this.remove(old);
     }
+    const entry = document.createElement('p');
+    entry.className = 'message';
+    entry.dataset.kind = kind;
+    entry.setAttribute('role', kind === 'note' ? 'status' : 'alert');
+    const text = document.createElement('span');
+    text.textContent = sentence;
+    const close = document.createElement('button');
+    close.type = 'button';
+    close.className = 'message-close';
+    close.dataset.testid = 'message-close';
+    close.title = 'Dismiss';
+    close.setAttribute('aria-label', 'Dismiss this message');
+    close.textContent = '\u00d7';
+    close.addEventListener('click', () => this.remove(entry));
+    entry.append(text, close);
+    this.box.append(entry);
+    this.box.hidden = false;
+    if (kind === 'note') this.timers.set(entry, window.setTimeout(() => this.remove(entry), NOTE_MS));
   }
 
-  /** Clears the message if it is of one of these kinds (all when none is given). @param {...Kind} kinds */
-  clear(...kinds) {
-    const kind = /** @type {Kind} */ (this.box.dataset.kind);
-    if (kinds.length === 0 || kinds.includes(kind)) this.show('');
+  /** Takes away the notes or the validation message (errors only go by their close button). @param {'note' | 'validation'} kind */
+  clear(kind) {
+    for (const entry of this.entries()) if (entry.dataset.kind === kind) this.remove(entry);
   }
 
-  /** @returns {Kind | ''} the kind shown now */
-  get kind() {
-    return /** @type {Kind | ''} */ (this.box.dataset.kind ?? '');
+  /** @returns {HTMLElement[]} the messages shown, oldest first */
+  entries() {
+    return /** @type {HTMLElement[]} */ ([...this.box.children]);
+  }
+
+  /** @param {HTMLElement} entry */
+  remove(entry) {
+    window.clearTimeout(this.timers.get(entry));
+    this.timers.delete(entry);
+    entry.remove();
+    this.box.hidden = this.box.children.length === 0;
   }
 }
 

@@ -152,7 +152,6 @@ export class ModuleList {
     try {
       const text = await file.text();
       await this.add({ key: `disk:${file.name}`, label: `${file.name} (imported)`, text });
-      this.hooks.message('');
     } catch (error) {
       this.hooks.message(`${file.name} is not a run file this page can read: ${messageOf(error)}`);
     }

@@ -109,7 +109,6 @@ export class Race {
       this.hooks.message(`a race holds ${MAX_RACERS} robots: take one out (×) first`);
       return;
     }
-    this.hooks.message('');
     const lane = new Lane(this.lanesBox, racer, {
       loaded: () => this.startIfLoaded(),
       finished: () => this.update(),

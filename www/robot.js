@@ -15,9 +15,12 @@ import { checkShape } from './core.js';
 import { showGeneCount } from './gene-count.js';
 import { messageOf } from './kit.js';
 import { plain } from './message.js';
-import { applyState, pageState } from './robot-state.js';
+import { applyState } from './robot-state.js';
 
 /** @typedef {import('./brain.js').Brain} Brain */
+
+/** The check of a drawing not checked (yet, or the core could not answer): not a robot. @type {import('./core.js').ShapeCheck} */
+const UNCHECKED = { ok: false, message: '', voxels: 0, pieces: [], params: [] };
 
 /**
  * @typedef {object} RobotParts  what the robot is shown and edited with (main.js makes them)
@@ -42,7 +45,7 @@ export class Robot {
     /** @type {Brain | null} */
     this.brain = null;
     /** The latest check of the drawing shown (none yet: not a robot). @type {import('./core.js').ShapeCheck} */
-    this.check = { ok: false, message: '', voxels: 0, pieces: [], params: [] };
+    this.check = UNCHECKED;
     /** Checks asked: only the latest one's answer is shown. */
     this.checks = 0;
     /** The changes of the brain asked so far, done one after the other. @type {Promise<unknown>} */
@@ -54,7 +57,7 @@ export class Robot {
     this.running = false;
   }
 
-  /** @param {string} text an error for the person, or '' to clear it */
+  /** @param {string} text an error for the person (it stays until closed) */
   error(text) {
     this.parts.messages.show(text, 'error');
   }
@@ -80,26 +83,33 @@ export class Robot {
     this.presetSelect.value = this.parts.defaults.presets.find((p) => p.rows === rows)?.rows ?? '';
     const ticket = ++this.checks;
     const checked = checkShape(rows);
-    checked.then((check) => { if (ticket === this.checks) this.showCheck(rows, check); },
-      (error) => this.error(`the drawing could not be checked: ${messageOf(error)}`));
+    checked.then((check) => { if (ticket === this.checks) this.showCheck(rows, check); }, (error) => {
+      this.error(`the drawing could not be checked: ${messageOf(error)}`);
+      if (ticket === this.checks) this.showCheck(rows, null);
+    });
     return checked;
   }
 
-  /** Shows the check of the drawing `rows`. @param {string} rows @param {import('./core.js').ShapeCheck} check */
+  /**
+   * Shows the check of the drawing `rows`; null: it could not be checked, so it is not taken for a robot.
+   * @param {string} rows @param {import('./core.js').ShapeCheck | null} check
+   */
   showCheck(rows, check) {
     const { editor, messages } = this.parts;
-    this.check = check;
-    editor.setPieces(check.ok ? null : check.pieces);
+    this.check = check ?? UNCHECKED;
+    editor.setPieces(check && !check.ok ? check.pieces : null);
     const status = this.el('shape-status');
-    if (check.ok) {
+    if (!check) {
+      status.textContent = 'Not checked: change the drawing to check it again';
+    } else if (check.ok) {
       status.textContent = `${check.voxels} voxel${check.voxels === 1 ? '' : 's'} · ${rows}`;
-      messages.clear('validation', 'error');
+      messages.clear('validation');
     } else {
       const pieces = check.pieces.length > 1 ? `; each of its ${check.pieces.length} pieces has its own colour` : '';
       status.textContent = check.pieces.length > 1 ? `Not a robot yet: ${check.pieces.length} separate pieces` : 'Not a robot yet: no voxels';
       messages.show(`Your drawing is not a robot yet: ${plain(check.message)}${pieces}. Evolve and Fine-tune are off until it is.`, 'validation');
     }
-    status.dataset.ok = String(check.ok);
+    status.dataset.ok = String(this.check.ok);
     this.updateParams();
     this.updateButtons();
   }
@@ -147,7 +157,7 @@ export class Robot {
 
   /** The brain follows the body of `change` (the core's remap) and the viewer walks it. @param {ReturnType<Robot['change']>} change */
   async follow({ rows, origin, seed, keepPlace, checked }) {
-    if (!(await checked).ok) { this.parts.keep(); return; }
+    if (!(await checked.catch(() => UNCHECKED)).ok) { this.parts.keep(); return; } // a failed check is said by updateCheck
     const brain = this.brain;
     if (brain && brain.rows !== rows) {
       try {
@@ -248,7 +258,6 @@ export class Robot {
     const [rows, origin, seed] = [this.parts.drawing.rows(), this.origin(), this.seed()];
     return this.serial(async () => {
       const brain = await transplanted(module, rows, origin, seed);
-      this.error('');
       this.setBrain(brain);
     }).catch((error) => this.error(messageOf(error)));
   }
@@ -264,7 +273,6 @@ export class Robot {
       const problem = drawing.setRows(next.rows);
       if (problem) { this.error(`this module's body does not fit the grid: ${problem}`); return; }
       this.brain = next;
-      this.error('');
       editor.draw();
       await this.follow(this.change(false));
     }).catch((error) => this.error(messageOf(error)));
@@ -280,11 +288,6 @@ export class Robot {
       this.parts.editor.draw();
       await this.follow(this.change(false));
     });
-  }
-
-  /** @returns {import('./share.js').PageState} the state the page keeps and shares */
-  pageState() {
-    return pageState(this);
   }
 
   /**

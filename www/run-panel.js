@@ -26,7 +26,7 @@ import { RunSettings } from './run-settings.js';
  *   settings: import('./protocol.js').EvolveSettings, kind: string, mode: string) => void} [generation]
  *   each generation's best evaluation (kept to race generations)
  * @property {(running: boolean) => void} running        a run started or ended
- * @property {(text: string) => void} message            shows an error ('' clears it)
+ * @property {(text: string) => void} message            shows an error
  * @property {(text: string) => void} note               shows a note
  */
 
@@ -143,7 +143,6 @@ export class RunPanel {
       this.starting = false;
     }
     if ('error' in read) { this.refuse(read.error); this.update(); return; }
-    this.hooks.message('');
     this.mode = mode;
     this.compareNext = mode === 'finetune' && this.compare.checked;
     this.bestSoFar = -Infinity;

@@ -17,7 +17,7 @@ export class RunSettings {
   /**
    * @param {(id: string) => any} el the page's element by id
    * @param {import('./core.js').Defaults} defaults
-   * @param {(text: string) => void} message shows an error ('' clears it)
+   * @param {(text: string) => void} message shows an error
    */
   constructor(el, defaults, message) {
     this.defaults = defaults;
@@ -38,9 +38,8 @@ export class RunSettings {
     this.inputs.workers.max = String(MAX_EVALUATORS);
     this.buttons.quick.addEventListener('click', () => this.preset(defaults.quick));
     this.buttons.paper.addEventListener('click', () => this.preset(defaults.paper));
-    this.buttons.dice.addEventListener('click', () => freshSeed().then((seed) => { this.inputs.seed.value = String(seed); message(''); },
+    this.buttons.dice.addEventListener('click', () => freshSeed().then((seed) => { this.inputs.seed.value = String(seed); },
       (error) => message(`no fresh seed: ${messageOf(error)}`)));
-    for (const input of Object.values(this.inputs)) input.addEventListener('change', () => message(''));
     for (const input of [this.inputs.population, this.inputs.budget]) input.addEventListener('input', () => this.describePlan());
   }
 

@@ -19,8 +19,7 @@ const MAX_RESTARTS = 3;
 
 /**
  * @typedef {object} ViewerHooks
- * @property {(text: string) => void} message  shows an error ('' clears it)
- * @property {(params: import('./protocol.js').EpisodeParams, voxels: number, controller: string) => void} loaded
+ * @property {(text: string) => void} message  shows an error
  * @property {(pick: {voxel: number, dx: number, dy: number}) => void} clicked  a click on or next to a voxel
  */
 
@@ -118,7 +117,6 @@ export class Viewer {
         this.readout.reset(msg.params, msg.carried);
         this.status.textContent = `${msg.voxels} voxels, ${msg.controller}`;
         for (const input of Object.values(this.gait)) input.disabled = msg.params.brain !== null;
-        this.hooks.loaded(msg.params, msg.voxels, msg.controller);
         break;
       case FromWorker.FRAME:
         if (frameIsConsistent(msg)) {

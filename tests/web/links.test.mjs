@@ -25,7 +25,7 @@ test('a damaged link keeps its message, saying what is shown instead, until it i
     assert.equal(await box.isVisible(), true, `the message of ${hash} is still on screen 3 s later`);
     assert.match(String(await box.textContent()), /Shown instead: the example robot biped-4x3, 1111-1111-1001/);
     assert.equal(new URL(page.url()).hash, '', 'the link left the address bar: a reload shows the kept robot');
-    await page.locator('#message-close').click();
+    await box.locator('[data-testid="message-close"]').click();
     assert.equal(await box.isHidden(), true, 'closed');
     assert.deepEqual(problems, []);
     await context.close();
