@@ -8,7 +8,7 @@
 //! ambient randomness: every random draw comes from an explicit seed.
 
 pub mod controllers;
-pub mod error;
+pub(crate) mod error;
 pub mod experiment;
 pub mod genetics;
 mod quantiles;

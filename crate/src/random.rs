@@ -5,7 +5,7 @@
 use rand::{Rng, SeedableRng};
 
 /// The project's generator: ChaCha8, portable across platforms and word sizes.
-pub type ProjectRng = rand_chacha::ChaCha8Rng;
+pub(crate) type ProjectRng = rand_chacha::ChaCha8Rng;
 
 /// A generator seeded from a 64-bit seed.
 pub fn rng_from(seed: u64) -> ProjectRng {
@@ -28,14 +28,14 @@ pub fn standard_normal(rng: &mut impl Rng) -> f64 {
 /// A stream of N(0, 1) draws by the polar method that keeps the second value of each
 /// pair (as Java's `nextGaussian` does): half the logarithms of [`standard_normal`].
 #[derive(Debug, Clone)]
-pub struct NormalStream {
+pub(crate) struct NormalStream {
     rng: ProjectRng,
     spare: Option<f64>,
 }
 
 impl NormalStream {
     /// A stream seeded from `seed`.
-    pub fn new(seed: u64) -> Self {
+    pub(crate) fn new(seed: u64) -> Self {
         NormalStream {
             rng: rng_from(seed),
             spare: None,
@@ -43,7 +43,7 @@ impl NormalStream {
     }
 
     /// The next N(0, 1) draw.
-    pub fn draw(&mut self) -> f64 {
+    pub(crate) fn draw(&mut self) -> f64 {
         if let Some(z) = self.spare.take() {
             return z;
         }

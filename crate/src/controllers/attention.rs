@@ -14,7 +14,7 @@ use super::{io_fits, Controller, Params, SENSORS_PER_VOXEL};
 use libm::tanhf;
 
 /// Width d of the query and key projections.
-pub const ATTENTION_DIM: usize = 8;
+pub(crate) const ATTENTION_DIM: usize = 8;
 /// Size of the attention block (w_q, b_q, w_k, b_k) at the start of the genome.
 pub const ATTENTION_PARAMS: usize = 4 * ATTENTION_DIM;
 /// sqrt(d) for d = 8, written so that it is the same f32 everywhere (x2 is exact).
@@ -43,7 +43,7 @@ fn attention_matrix(block: &[f32], s: &[f32], a: &mut [f32]) {
 }
 
 /// The four numbers that fix every entry of an attention matrix: with readings s_r (row,
-/// query) and s_c (column, key), A[r][c] = tanh(a s_r s_c + b s_r + c s_c + d), where
+/// query) and s_c (column, key), `A[r][c] = tanh(a s_r s_c + b s_r + c s_c + d)`, where
 /// a = w_q.w_k, b = w_q.b_k, c = b_q.w_k, d = b_q.b_k, each over sqrt 8 (expanding the dot
 /// product of Q's row r and K's row c). `block` is the 32-gene attention block; returns
 /// [a, b, c, d] (rounding aside, the matrix itself is computed as the dot product).
@@ -94,7 +94,7 @@ impl Attention {
     }
 
     /// Number of voxels this controller drives.
-    pub fn voxel_count(&self) -> usize {
+    pub(crate) fn voxel_count(&self) -> usize {
         self.n
     }
 

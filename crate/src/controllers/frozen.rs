@@ -10,14 +10,14 @@ use crate::{Error, Result};
 
 /// Attention whose per-voxel matrices can be frozen; see the module doc.
 #[derive(Debug, Clone)]
-pub struct FrozenAttention {
+pub(crate) struct FrozenAttention {
     inner: Attention,
     frozen: bool,
 }
 
 impl FrozenAttention {
     /// Wraps an attention controller (its parameters and current matrices are kept).
-    pub fn new(inner: Attention) -> Self {
+    pub(crate) fn new(inner: Attention) -> Self {
         Self {
             inner,
             frozen: false,
@@ -26,13 +26,13 @@ impl FrozenAttention {
 
     /// Keeps every voxel's current A from now on. Freezing before any control call freezes
     /// all-zero matrices.
-    pub fn freeze(&mut self) {
+    pub(crate) fn freeze(&mut self) {
         self.frozen = true;
     }
 
     /// Freezes the given matrices (16 floats per voxel, e.g. recorded from another episode).
     /// Fails on a wrong length or a non-finite value.
-    pub fn freeze_with(&mut self, matrices: &[f32]) -> Result<()> {
+    pub(crate) fn freeze_with(&mut self, matrices: &[f32]) -> Result<()> {
         let expected = ATTENTION_FLOATS_PER_VOXEL * self.inner.voxel_count();
         if matrices.len() != expected {
             return Err(Error::Input(format!(
@@ -49,12 +49,12 @@ impl FrozenAttention {
     }
 
     /// Goes back to recomputing A at every call.
-    pub fn unfreeze(&mut self) {
+    pub(crate) fn unfreeze(&mut self) {
         self.frozen = false;
     }
 
     /// True once `freeze` (or `freeze_with`) has been called, until `unfreeze`.
-    pub fn is_frozen(&self) -> bool {
+    pub(crate) fn is_frozen(&self) -> bool {
         self.frozen
     }
 }

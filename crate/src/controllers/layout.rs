@@ -9,7 +9,8 @@
 //! - MLP: 1 row of (4 per voxel) | bias                         (W[4 i + j], b)
 //! - MLP-Comm: 5 rows of (8 per voxel, then the row's bias)     (P[o (8n + 1) + 8 i + j])
 
-use super::{ControllerKind, ATTENTION_PARAMS, SLOW_GENES};
+use super::slow::SLOW_GENES;
+use super::{ControllerKind, ATTENTION_PARAMS};
 use crate::random::rng_from;
 use crate::simulation::Shape;
 use crate::Result;
@@ -17,7 +18,7 @@ use rand::Rng;
 
 /// The layout of one family's genome; see the module doc.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct GenomeLayout {
+pub(crate) struct GenomeLayout {
     prefix: usize,
     rows: usize,
     per_voxel: usize,
@@ -27,7 +28,7 @@ pub struct GenomeLayout {
 
 impl GenomeLayout {
     /// The layout of `kind`'s genome.
-    pub fn of(kind: ControllerKind) -> Self {
+    pub(crate) fn of(kind: ControllerKind) -> Self {
         let (prefix, rows, per_voxel, row_tail, tail) = match kind {
             ControllerKind::Attention => (ATTENTION_PARAMS, 4, 1, 0, 1),
             ControllerKind::SlowAttention => (ATTENTION_PARAMS, 4, 1, 0, 1 + SLOW_GENES),
@@ -44,7 +45,7 @@ impl GenomeLayout {
     }
 
     /// Genome length for `n` voxels (equals [`ControllerKind::param_count`]).
-    pub fn len(&self, n: usize) -> usize {
+    pub(crate) fn len(&self, n: usize) -> usize {
         self.prefix + self.rows * (self.per_voxel * n + self.row_tail) + self.tail
     }
 

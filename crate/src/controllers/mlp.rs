@@ -16,7 +16,7 @@ pub struct Mlp {
 
 impl Mlp {
     /// An MLP for `n_voxels` voxels with every parameter at zero.
-    pub fn new(n_voxels: usize) -> Self {
+    pub(crate) fn new(n_voxels: usize) -> Self {
         Self {
             n: n_voxels,
             params: Params::zeros(Self::param_count_for(n_voxels)),
@@ -24,7 +24,7 @@ impl Mlp {
     }
 
     /// Genome length: 4 n + 1 (41 for the biped, 45 for the comb).
-    pub fn param_count_for(n_voxels: usize) -> usize {
+    pub(crate) fn param_count_for(n_voxels: usize) -> usize {
         SENSORS_PER_VOXEL * n_voxels + 1
     }
 }

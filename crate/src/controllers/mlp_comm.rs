@@ -19,11 +19,12 @@
 //! voxel `i` (one-hot position encoding) and slot `8 n` is the bias. So output `o` of voxel `i`
 //! is tanh(P[o (8n + 1) + 8 n] + sum_j P[o (8n + 1) + 8 i + j] tanh(x_j)).
 
-use super::{io_fits, opposite, Controller, Params, Topology, SENSORS_PER_VOXEL};
+use super::topology::opposite;
+use super::{io_fits, Controller, Params, Topology, SENSORS_PER_VOXEL};
 use libm::tanhf;
 
 /// Outputs per voxel: 1 actuation + 4 directional messages.
-pub const MLP_COMM_OUTPUTS: usize = 5;
+pub(crate) const MLP_COMM_OUTPUTS: usize = 5;
 /// Inputs per voxel: 4 readings + 4 received messages.
 const INPUTS: usize = 8;
 
@@ -55,7 +56,7 @@ impl MlpComm {
     }
 
     /// The same controller, called only when the actuation is latched (the original's pace).
-    pub fn latched(topology: Topology) -> Self {
+    pub(crate) fn latched(topology: Topology) -> Self {
         Self {
             latched: true,
             ..Self::new(topology)
@@ -65,11 +66,6 @@ impl MlpComm {
     /// Genome length: (8 n + 1) x 5 (405 for the biped, 445 for the comb).
     pub fn param_count_for(n_voxels: usize) -> usize {
         (INPUTS * n_voxels + 1) * MLP_COMM_OUTPUTS
-    }
-
-    /// Messages sent at the last control call, `[to_up, to_right, to_down, to_left]` per voxel.
-    pub fn sent_messages(&self) -> &[[f32; 4]] {
-        &self.sent
     }
 
     /// The 8 inputs of voxel `i`, tanh already applied.

@@ -21,28 +21,29 @@ mod params;
 mod slow;
 mod topology;
 
-pub use attention::{attention_terms, Attention, ATTENTION_DIM, ATTENTION_PARAMS};
-pub use frozen::FrozenAttention;
+pub use attention::{attention_terms, Attention, ATTENTION_PARAMS};
+pub(crate) use frozen::FrozenAttention;
 pub use kind::{build, ControllerKind};
-pub use layout::{remap_genome, GenomeLayout};
+pub use layout::remap_genome;
 pub use mlp::Mlp;
-pub use mlp_comm::{MlpComm, MLP_COMM_OUTPUTS};
+pub use mlp_comm::MlpComm;
 pub use params::Params;
-pub use slow::{split_slow_genome, SlowAttention, SlowRates, SLOW_GENES};
-pub use topology::{opposite, Topology, DIRECTION_NAMES, DOWN, LEFT, RIGHT, UP};
+pub(crate) use slow::split_slow_genome;
+pub use slow::SlowAttention;
+pub use topology::Topology;
 
 use crate::{Error, Result};
 
 /// Number of sensor readings per voxel: area, vx, vy, touch.
-pub const SENSORS_PER_VOXEL: usize = 4;
+pub(crate) const SENSORS_PER_VOXEL: usize = 4;
 /// Number of floats per voxel in an attention matrix (4x4, row-major).
-pub const ATTENTION_FLOATS_PER_VOXEL: usize = 16;
+pub(crate) const ATTENTION_FLOATS_PER_VOXEL: usize = 16;
 
 /// A voxel controller: the same parameters drive every voxel of a robot.
 pub trait Controller: Send {
     /// The stored genome, in the controller's documented layout.
     fn genome(&self) -> &Params;
-    /// The stored genome, to replace through [`Params::set`] (which checks it).
+    /// The stored genome, to replace through `Params::set` (which checks it).
     fn genome_mut(&mut self) -> &mut Params;
     /// Length of the genome this controller reads.
     fn param_count(&self) -> usize {
@@ -69,7 +70,7 @@ pub trait Controller: Send {
     /// controllers without attention.
     fn attention(&self) -> Option<&[f32]>;
     /// Freezes (`true`) every voxel's attention matrix where it is now, or releases it
-    /// (`false`), as the ablation does (SPEC 7). Only [`FrozenAttention`] can; any other
+    /// (`false`), as the ablation does (SPEC 7). Only `FrozenAttention` can; any other
     /// controller answers an error saying it has no attention to freeze.
     fn set_attention_frozen(&mut self, _frozen: bool) -> Result<()> {
         Err(Error::Input(

@@ -13,13 +13,13 @@ pub struct Params(Vec<f32>);
 
 impl Params {
     /// `len` parameters, all zero.
-    pub fn zeros(len: usize) -> Self {
+    pub(crate) fn zeros(len: usize) -> Self {
         Params(vec![0.0; len])
     }
 
     /// Replaces every parameter. Fails, changing nothing, on a length mismatch or a
     /// non-finite value.
-    pub fn set(&mut self, p: &[f32]) -> Result<()> {
+    pub(crate) fn set(&mut self, p: &[f32]) -> Result<()> {
         check_genes("the new genome", "this controller", self.0.len(), p)?;
         self.0.copy_from_slice(p);
         Ok(())

@@ -12,20 +12,20 @@ use super::{io_fits, Attention, Controller, Params, ATTENTION_FLOATS_PER_VOXEL};
 use crate::Result;
 
 /// Genes slow attention appends to the attention genome: g1 (alpha), then g2 (eta).
-pub const SLOW_GENES: usize = 2;
+pub(crate) const SLOW_GENES: usize = 2;
 
 /// The two rates of slow attention, derived from its last two genes.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SlowRates {
+pub(crate) struct SlowRates {
     /// Weight of the fresh matrix: min(|g1|, 1).
-    pub alpha: f32,
+    pub(crate) alpha: f32,
     /// Weight of the previous matrix: min(|g2|, 1).
-    pub eta: f32,
+    pub(crate) eta: f32,
 }
 
 /// Splits a slow-attention genome into its attention genome and its rates; `None` when it is
 /// too short to hold the two genes.
-pub fn split_slow_genome(genome: &[f32]) -> Option<(&[f32], SlowRates)> {
+pub(crate) fn split_slow_genome(genome: &[f32]) -> Option<(&[f32], SlowRates)> {
     let cut = genome.len().checked_sub(SLOW_GENES)?;
     let (attention, genes) = genome.split_at(cut);
     let rates = SlowRates {
@@ -65,7 +65,7 @@ impl SlowAttention {
     }
 
     /// Genome length: 32 + 4 n + 1 + 2 (75 for the biped, 79 for the comb).
-    pub fn param_count_for(n_voxels: usize) -> usize {
+    pub(crate) fn param_count_for(n_voxels: usize) -> usize {
         Attention::param_count_for(n_voxels) + SLOW_GENES
     }
 

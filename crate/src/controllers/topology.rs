@@ -1,25 +1,18 @@
 //! The neighbour table a controller sees instead of the world.
 //!
 //! Layout: one `[Option<usize>; 4]` per voxel, in voxel index order, holding the index of the
-//! neighbour in each direction `[UP, RIGHT, DOWN, LEFT]` (`None` where there is no voxel).
+//! neighbour in each direction, in the order up, right, down, left (indices 0 to 3,
+//! `DIRECTION_NAMES`; `None` where there is no voxel).
 //! The table is symmetric: if `w` is the up neighbour of `v`, then `v` is the down neighbour
 //! of `w`. Directions follow the world: up is +y, right is +x.
 
 use crate::{Error, Result};
 
-/// Index of the up (+y) neighbour in a neighbour row.
-pub const UP: usize = 0;
-/// Index of the right (+x) neighbour in a neighbour row.
-pub const RIGHT: usize = 1;
-/// Index of the down (-y) neighbour in a neighbour row.
-pub const DOWN: usize = 2;
-/// Index of the left (-x) neighbour in a neighbour row.
-pub const LEFT: usize = 3;
 /// Direction names in row order, for messages.
-pub const DIRECTION_NAMES: [&str; 4] = ["up", "right", "down", "left"];
+pub(crate) const DIRECTION_NAMES: [&str; 4] = ["up", "right", "down", "left"];
 
 /// The direction seen from the other side: up <-> down, right <-> left.
-pub fn opposite(direction: usize) -> usize {
+pub(crate) fn opposite(direction: usize) -> usize {
     (direction + 2) % 4
 }
 
@@ -33,7 +26,7 @@ impl Topology {
     /// Builds a topology from one `[up, right, down, left]` row per voxel, in voxel index order.
     /// Fails on an empty table, an index out of range, a voxel that is its own neighbour, or a
     /// table that is not symmetric.
-    pub fn new(neighbours: Vec<[Option<usize>; 4]>) -> Result<Self> {
+    pub(crate) fn new(neighbours: Vec<[Option<usize>; 4]>) -> Result<Self> {
         let n = neighbours.len();
         if n == 0 {
             return Err(Error::Input("a topology needs at least one voxel".into()));
@@ -93,20 +86,15 @@ impl Topology {
     }
 
     /// Number of voxels.
-    pub fn voxel_count(&self) -> usize {
+    pub(crate) fn voxel_count(&self) -> usize {
         self.neighbours.len()
     }
 
-    /// The neighbour of `voxel` in `direction` (`UP`, `RIGHT`, `DOWN`, `LEFT`), if any.
-    pub fn neighbour(&self, voxel: usize, direction: usize) -> Option<usize> {
+    /// The neighbour of `voxel` in `direction` (0 up, 1 right, 2 down, 3 left), if any.
+    pub(crate) fn neighbour(&self, voxel: usize, direction: usize) -> Option<usize> {
         self.neighbours
             .get(voxel)
             .and_then(|row| row.get(direction).copied().flatten())
-    }
-
-    /// The whole table, one `[up, right, down, left]` row per voxel.
-    pub fn rows(&self) -> &[[Option<usize>; 4]] {
-        &self.neighbours
     }
 }
 
@@ -118,9 +106,10 @@ mod tests {
     fn cells_of_an_l_shape_give_symmetric_neighbours() {
         // (0,0) (1,0) on the bottom row, (0,1) above the first.
         let t = Topology::from_cells(&[(0, 0), (1, 0), (0, 1)]).unwrap();
-        assert_eq!(t.rows()[0], [Some(2), Some(1), None, None]);
-        assert_eq!(t.rows()[1], [None, None, None, Some(0)]);
-        assert_eq!(t.rows()[2], [None, None, Some(0), None]);
+        let row = |v| [0, 1, 2, 3].map(|d| t.neighbour(v, d));
+        assert_eq!(row(0), [Some(2), Some(1), None, None]);
+        assert_eq!(row(1), [None, None, None, Some(0)]);
+        assert_eq!(row(2), [None, None, Some(0), None]);
     }
 
     #[test]

@@ -17,26 +17,26 @@ use crate::genetics::GaState;
 use serde::{Deserialize, Serialize};
 
 /// The value of the `format` field.
-pub const CHECKPOINT_FORMAT: &str = "vsr-checkpoint";
+pub(crate) const CHECKPOINT_FORMAT: &str = "vsr-checkpoint";
 /// The checkpoint version this code writes and reads.
-pub const CHECKPOINT_VERSION: u32 = 1;
+pub(crate) const CHECKPOINT_VERSION: u32 = 1;
 
 /// A run stopped between two generations; see the module doc.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Checkpoint {
     /// Always [`CHECKPOINT_FORMAT`].
-    pub format: String,
+    pub(crate) format: String,
     /// Always [`CHECKPOINT_VERSION`].
-    pub version: u32,
+    pub(crate) version: u32,
     /// The code that wrote it (`vsr --version`), when the writer knows: a run continued by
     /// other code is bit-identical to an uninterrupted one only if nothing that shapes a run
     /// changed between the two.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub code: Option<String>,
     /// The run's configuration.
-    pub config: EvolutionConfig,
+    pub(crate) config: EvolutionConfig,
     /// Per-generation records so far, generation 0 first.
-    pub generations: Vec<GenerationRecord>,
+    pub(crate) generations: Vec<GenerationRecord>,
     /// The GA's exact state.
     pub ga: GaState,
 }

@@ -13,14 +13,14 @@ use crate::simulation::{Shape, Terrain};
 use serde::{Deserialize, Serialize};
 
 /// The paper's training terrain family: a fresh `hilly-1-10-SEED` for every evaluation.
-pub const PAPER_TERRAIN: &str = "hilly-1-10";
+pub(crate) const PAPER_TERRAIN: &str = "hilly-1-10";
 /// The paper's episode length (s).
-pub const PAPER_SECONDS: f64 = 30.0;
+pub(crate) const PAPER_SECONDS: f64 = 30.0;
 /// Longest episode accepted (s).
 pub const MAX_SECONDS: f64 = 3600.0;
 /// Largest seed accepted: 2^53 - 1, the largest integer a JavaScript number holds exactly,
 /// so the page reads the same seed as the command line.
-pub const MAX_SEED: u64 = (1 << 53) - 1;
+pub(crate) const MAX_SEED: u64 = (1 << 53) - 1;
 
 /// The one check of an episode's length: in (0, [`MAX_SECONDS`]] s.
 pub fn check_seconds(seconds: f64) -> Result<()> {
@@ -65,7 +65,7 @@ impl TrainingTerrain {
 
     /// The terrain of an evaluation whose derived terrain seed is `seed`; for the paper's
     /// family this is exactly [`terrain_name_for`].
-    pub fn name_for(&self, seed: u64) -> String {
+    pub(crate) fn name_for(&self, seed: u64) -> String {
         match self {
             TrainingTerrain::Family(f) if f == PAPER_TERRAIN => terrain_name_for(seed),
             TrainingTerrain::Family(f) => format!("{f}-{}", seed % TERRAIN_SEEDS),
@@ -126,7 +126,7 @@ pub struct EvolutionConfig {
     /// GA settings, including the evaluation budget `budget_evals`.
     pub ga: GaConfig,
     /// For fine-tuning runs: the individual whose attention block is frozen.
-    pub source: Option<SourceRun>,
+    pub(crate) source: Option<SourceRun>,
 }
 
 impl EvolutionConfig {
@@ -156,12 +156,12 @@ impl EvolutionConfig {
     }
 
     /// Genome length of the evolved controller on the evolved shape.
-    pub fn genome_len(&self) -> usize {
+    pub(crate) fn genome_len(&self) -> usize {
         self.controller.param_count(self.shape.voxel_count())
     }
 
     /// Checks every setting; messages say what is accepted.
-    pub fn validate(&self) -> Result<()> {
+    pub(crate) fn validate(&self) -> Result<()> {
         let bad = |m: String| Err(Error::Input(m));
         check_seconds(self.seconds)?;
         // The ground of the first evaluation: a bad terrain fails here, before generation 0.

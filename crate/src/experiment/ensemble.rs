@@ -27,7 +27,7 @@ pub struct Ensemble {
 
 impl Ensemble {
     /// Summarises velocities measured at `offsets`.
-    pub fn new(offsets: Vec<f64>, velocities: Vec<f64>) -> Ensemble {
+    pub(crate) fn new(offsets: Vec<f64>, velocities: Vec<f64>) -> Ensemble {
         let n = velocities.len() as f64;
         let mean = velocities.iter().sum::<f64>() / n;
         let sd = (velocities.len() > 1).then(|| {

@@ -235,12 +235,12 @@ impl Episode {
     }
 
     /// The policy driving the voxels.
-    pub fn policy(&self) -> &Policy {
+    pub(crate) fn policy(&self) -> &Policy {
         &self.policy
     }
 
     /// Mutable access to the policy (e.g. to freeze attention mid-episode).
-    pub fn policy_mut(&mut self) -> &mut Policy {
+    pub(crate) fn policy_mut(&mut self) -> &mut Policy {
         &mut self.policy
     }
 

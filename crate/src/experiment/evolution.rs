@@ -44,16 +44,16 @@ pub struct Job {
     #[serde(skip)]
     pub genome: Vec<f32>,
     /// The robot's shape.
-    pub shape: Shape,
+    pub(crate) shape: Shape,
     /// The controller family.
-    pub controller: ControllerKind,
+    pub(crate) controller: ControllerKind,
     /// The terrain name, e.g. `hilly-1-10-4821`.
-    pub terrain: String,
+    pub(crate) terrain: String,
     /// Seed of the sensor-noise stream.
     #[serde(with = "super::json::decimal")]
-    pub noise_seed: u64,
+    pub(crate) noise_seed: u64,
     /// Simulated seconds.
-    pub seconds: f64,
+    pub(crate) seconds: f64,
     /// The run's ground when every job shares it (a fixed terrain), built once per run.
     #[serde(skip)]
     pub(super) ground: Option<Arc<Terrain>>,
@@ -94,7 +94,7 @@ pub struct Evolution {
 
 impl Evolution {
     /// Starts a run: from scratch, or as a fine-tuning run when `config.source` is set
-    /// (SPEC 10, see [`initial_population`]). Fails on an invalid configuration.
+    /// (SPEC 10, see `initial_population`). Fails on an invalid configuration.
     pub fn new(config: EvolutionConfig) -> Result<Evolution> {
         config.validate()?;
         let ga_seed = ga_seed(&config);
@@ -205,7 +205,7 @@ impl Evolution {
         self.ga.evaluations()
     }
 
-    /// Evaluations the whole run will take ([`planned_evaluations`]).
+    /// Evaluations the whole run will take (`planned_evaluations`).
     pub fn planned_evaluations(&self) -> u64 {
         planned_evaluations(
             self.config.ga.population as u64,
@@ -214,7 +214,7 @@ impl Evolution {
     }
 
     /// The configuration.
-    pub fn config(&self) -> &EvolutionConfig {
+    pub(crate) fn config(&self) -> &EvolutionConfig {
         &self.config
     }
 
@@ -250,7 +250,7 @@ impl Evolution {
 /// Generations after generation 0 that a run of `population` and `budget` evaluations takes:
 /// each evaluates two populations (the parents again, on fresh terrains, and as many
 /// children), and the last one is completed even when it passes the budget.
-pub fn planned_generations(population: u64, budget: u64) -> u64 {
+pub(crate) fn planned_generations(population: u64, budget: u64) -> u64 {
     budget
         .saturating_sub(population)
         .div_ceil(2 * population.max(1))
@@ -259,6 +259,6 @@ pub fn planned_generations(population: u64, budget: u64) -> u64 {
 /// Evaluations a run of `population` and `budget` evaluations takes: generation 0 (the
 /// first population) plus two populations per later generation (30100 for the paper's
 /// 30000 with 100, 2020 for 2000 with 20).
-pub fn planned_evaluations(population: u64, budget: u64) -> u64 {
+pub(crate) fn planned_evaluations(population: u64, budget: u64) -> u64 {
     population + 2 * population * planned_generations(population, budget)
 }

@@ -21,7 +21,7 @@ use rand::Rng;
 
 /// SPEC 10's transplant, as `vsr finetune --from RUN --shape SHAPE --seed SEED` starts it:
 /// the best individual of `run` put on `shape`, the first genome of that fine-tuning run
-/// ([`initial_population`]): its 32 attention genes kept, the downstream genes re-drawn for
+/// (`initial_population`): its 32 attention genes kept, the downstream genes re-drawn for
 /// the new body (unchanged on its own body). An MLP or MLP-Comm module has no
 /// body-independent part: it keeps its own body and is refused on another.
 pub fn transplant(run: &RunFile, shape: Shape, seed: u64) -> Result<Vec<f32>> {
@@ -50,7 +50,7 @@ pub fn transplant(run: &RunFile, shape: Shape, seed: u64) -> Result<Vec<f32>> {
 
 /// The first member(s) of a fine-tuning run's population: the source individual, adapted
 /// to the new genome length (see the module doc). The configuration is already validated.
-pub fn initial_population(config: &EvolutionConfig, source: &SourceRun) -> Vec<Vec<f32>> {
+pub(crate) fn initial_population(config: &EvolutionConfig, source: &SourceRun) -> Vec<Vec<f32>> {
     let same_layout = source.shape == config.shape && source.controller == config.controller;
     if same_layout {
         return vec![source.genome.clone()];

@@ -37,7 +37,7 @@ impl PhaseGait {
     }
 
     /// Actuation of every voxel at time t, given each voxel's grid column.
-    pub fn actuate(&self, t: f64, columns: &[usize], out: &mut [f64]) {
+    pub(crate) fn actuate(&self, t: f64, columns: &[usize], out: &mut [f64]) {
         let w = 2.0 * std::f64::consts::PI * self.frequency * t;
         for (u, &x) in out.iter_mut().zip(columns) {
             *u = libm::sin(w + self.phase * x as f64);

@@ -24,7 +24,7 @@ pub(crate) mod finite_or_null {
     use serde::{Deserialize, Deserializer, Serializer};
 
     /// Writes a finite value as a number, anything else as null.
-    pub fn serialize<S: Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Error> {
+    pub(crate) fn serialize<S: Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Error> {
         if v.is_finite() {
             s.serialize_f64(*v)
         } else {
@@ -33,7 +33,7 @@ pub(crate) mod finite_or_null {
     }
 
     /// Reads a number, or null as -infinity.
-    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+    pub(crate) fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
         Ok(Option::<f64>::deserialize(d)?.unwrap_or(f64::NEG_INFINITY))
     }
 }
@@ -43,12 +43,12 @@ pub(crate) mod decimal {
     use serde::{de::Error, Deserialize, Deserializer, Serializer};
 
     /// Writes the value as a decimal string.
-    pub fn serialize<S: Serializer>(value: &u64, s: S) -> Result<S::Ok, S::Error> {
+    pub(crate) fn serialize<S: Serializer>(value: &u64, s: S) -> Result<S::Ok, S::Error> {
         s.serialize_str(&value.to_string())
     }
 
     /// Reads a decimal string.
-    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<u64, D::Error> {
+    pub(crate) fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<u64, D::Error> {
         let text = String::deserialize(d)?;
         text.trim().parse().map_err(|_| {
             D::Error::custom(format!(

@@ -2,23 +2,23 @@
 //! seeds, evolutionary runs and their run files, fine-tuning (and the page's transplant),
 //! validation, the ablation, and the playground's defaults.
 
-pub mod ablation;
-pub mod checkpoint;
+pub(crate) mod ablation;
+pub(crate) mod checkpoint;
 pub mod config;
-pub mod ensemble;
-pub mod episode;
+pub(crate) mod ensemble;
+pub(crate) mod episode;
 pub mod evaluate;
-pub mod evolution;
-pub mod finetune;
-pub mod freeze;
-pub mod gait;
+pub(crate) mod evolution;
+pub(crate) mod finetune;
+pub(crate) mod freeze;
+pub(crate) mod gait;
 mod ground;
 mod json;
 pub mod playground;
-pub mod policy;
+pub(crate) mod policy;
 pub mod run;
 pub mod seeds;
-pub mod trajectory;
+pub(crate) mod trajectory;
 pub mod validation;
 
 pub use ablation::{ablate, AblationPoint, ABLATION_TERRAIN};

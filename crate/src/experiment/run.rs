@@ -20,9 +20,9 @@ use crate::simulation::Shape;
 use serde::{Deserialize, Serialize};
 
 /// The value of the `format` field.
-pub const FORMAT: &str = "vsr-run";
+pub(crate) const FORMAT: &str = "vsr-run";
 /// The run-file version this code writes and reads.
-pub const VERSION: u32 = 1;
+pub(crate) const VERSION: u32 = 1;
 
 /// Fitness summary of one generation's survivors, plus the wall time so far.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -36,30 +36,30 @@ pub struct GenerationRecord {
     pub best: f64,
     /// Upper quartile.
     #[serde(with = "super::json::finite_or_null")]
-    pub q3: f64,
+    pub(crate) q3: f64,
     /// Median.
     #[serde(with = "super::json::finite_or_null")]
     pub median: f64,
     /// Lower quartile.
     #[serde(with = "super::json::finite_or_null")]
-    pub q1: f64,
+    pub(crate) q1: f64,
     /// Worst survivor's fitness.
     #[serde(with = "super::json::finite_or_null")]
-    pub worst: f64,
+    pub(crate) worst: f64,
     /// Wall-clock seconds from the start of the run to the end of this generation, as
     /// measured by the caller (0 when unknown); never part of a comparison.
     pub wall_seconds: f64,
     /// Slow attention only: alpha of the generation's best individual (absent otherwise).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub alpha: Option<f32>,
+    pub(crate) alpha: Option<f32>,
     /// Slow attention only: eta of the generation's best individual (absent otherwise).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub eta: Option<f32>,
+    pub(crate) eta: Option<f32>,
 }
 
 impl GenerationRecord {
     /// The GA's statistics with the caller's wall time.
-    pub fn new(stats: &GenerationStats, wall_seconds: f64) -> Self {
+    pub(crate) fn new(stats: &GenerationStats, wall_seconds: f64) -> Self {
         GenerationRecord {
             generation: stats.generation,
             evaluations: stats.evaluations,
@@ -121,7 +121,7 @@ impl Best {
     }
 
     /// Checks that the genome fits the controller and shape and that every gene is finite.
-    pub fn validate(&self, what: &str) -> Result<()> {
+    pub(crate) fn validate(&self, what: &str) -> Result<()> {
         self.controller
             .check_genome(what, self.shape.voxel_count(), &self.genome)
     }
@@ -140,9 +140,9 @@ pub struct Timing {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct RunFile {
     /// Always [`FORMAT`].
-    pub format: String,
+    pub(crate) format: String,
     /// Always [`VERSION`].
-    pub version: u32,
+    pub(crate) version: u32,
     /// The run's configuration.
     pub config: EvolutionConfig,
     /// Per-generation statistics, generation 0 first.

@@ -32,10 +32,10 @@ impl Purpose {
 }
 
 /// Number of distinct training terrain seeds, as in the paper (`nextInt(10000)`).
-pub const TERRAIN_SEEDS: u64 = 10_000;
+pub(crate) const TERRAIN_SEEDS: u64 = 10_000;
 
 /// The splitmix64 finaliser: a bijective 64-bit mix with good avalanche.
-pub fn splitmix64(x: u64) -> u64 {
+pub(crate) fn splitmix64(x: u64) -> u64 {
     let mut z = x.wrapping_add(0x9E37_79B9_7F4A_7C15);
     z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
     z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
@@ -43,7 +43,7 @@ pub fn splitmix64(x: u64) -> u64 {
 }
 
 /// The seed of one evaluation's `purpose` stream, mixing every input through splitmix64.
-pub fn evaluation_seed(run_seed: u64, generation: u32, index: u32, purpose: Purpose) -> u64 {
+pub(crate) fn evaluation_seed(run_seed: u64, generation: u32, index: u32, purpose: Purpose) -> u64 {
     let mut h = splitmix64(run_seed);
     h = splitmix64(h ^ u64::from(generation));
     h = splitmix64(h ^ u64::from(index));
@@ -51,7 +51,7 @@ pub fn evaluation_seed(run_seed: u64, generation: u32, index: u32, purpose: Purp
 }
 
 /// The paper's training terrain for a derived seed: `hilly-1-10-{seed % 10000}`.
-pub fn terrain_name_for(seed: u64) -> String {
+pub(crate) fn terrain_name_for(seed: u64) -> String {
     format!("hilly-1-10-{}", seed % TERRAIN_SEEDS)
 }
 

@@ -17,15 +17,15 @@ use super::episode::Episode;
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Frame {
     /// Simulated time after the step (s).
-    pub t: f64,
+    pub(crate) t: f64,
     /// Robot centre [x, y] (m).
-    pub centre: [f64; 2],
+    pub(crate) centre: [f64; 2],
     /// Area ratio of each voxel.
-    pub area: Vec<f64>,
+    pub(crate) area: Vec<f64>,
     /// Held actuation of each voxel, in [-1, 1].
-    pub actuation: Vec<f64>,
+    pub(crate) actuation: Vec<f64>,
     /// Centre x, y (m) and angle (rad) of each corner square, 4 per voxel.
-    pub squares: Vec<[f64; 3]>,
+    pub(crate) squares: Vec<[f64; 3]>,
 }
 
 impl Frame {

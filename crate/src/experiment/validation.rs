@@ -20,7 +20,7 @@ use std::fmt;
 use std::str::FromStr;
 
 /// Number of validation terrains in a set.
-pub const VALIDATION_TERRAINS: u32 = 10;
+pub(crate) const VALIDATION_TERRAINS: u32 = 10;
 
 /// A set of 10 validation terrains; see the module doc.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
@@ -50,7 +50,7 @@ impl ValidationSet {
     }
 
     /// The terrain seed of the set's terrain `i` (0..10).
-    pub fn terrain_seed(self, i: u32) -> u32 {
+    pub(crate) fn terrain_seed(self, i: u32) -> u32 {
         match self {
             ValidationSet::Paper => i,
             ValidationSet::Unseen => TERRAIN_SEEDS as u32 + i,
@@ -81,18 +81,18 @@ impl FromStr for ValidationSet {
 }
 
 /// The name of validation terrain `i` (`hilly-1-10-i`; the unseen set's are i >= 10000).
-pub fn validation_terrain(i: u32) -> String {
+pub(crate) fn validation_terrain(i: u32) -> String {
     format!("hilly-1-10-{i}")
 }
 
 /// The sensor-noise seed of validation terrain `hilly-1-10-K` (also used by the ablation).
-pub fn validation_noise_seed(k: u32) -> u64 {
+pub(crate) fn validation_noise_seed(k: u32) -> u64 {
     evaluation_seed(0, 0, k, Purpose::Validation)
 }
 
 /// The sensor-noise seed of an episode on `terrain` outside evolution: that of validation
 /// terrain K for `hilly-1-10-K`, that of terrain 0 for any other terrain.
-pub fn noise_seed_for(terrain: &str) -> u64 {
+pub(crate) fn noise_seed_for(terrain: &str) -> u64 {
     let k = terrain
         .strip_prefix("hilly-1-10-")
         .and_then(|k| k.parse().ok());
@@ -113,7 +113,7 @@ pub struct TerrainVelocity {
 pub struct Validation {
     /// Which terrains (absent in files written before there were two sets: paper).
     #[serde(default = "paper_set")]
-    pub set: ValidationSet,
+    pub(crate) set: ValidationSet,
     /// One entry per terrain, in terrain order.
     pub terrains: Vec<TerrainVelocity>,
     /// Median of the velocities (mean of the middle two).

@@ -45,7 +45,7 @@ impl Default for GaConfig {
 
 impl GaConfig {
     /// Checks the settings against a genome length; messages say what is accepted.
-    pub fn validate(&self, genome_len: usize) -> Result<()> {
+    pub(crate) fn validate(&self, genome_len: usize) -> Result<()> {
         let bad = |m: String| Err(Error::Input(m));
         if self.population == 0 || self.tournament == 0 {
             return bad("population and tournament size must be at least 1".into());

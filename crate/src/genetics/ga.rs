@@ -237,9 +237,4 @@ impl Ga {
     pub fn generation(&self) -> u32 {
         self.generation
     }
-
-    /// The settings in use.
-    pub fn config(&self) -> &GaConfig {
-        &self.config
-    }
 }

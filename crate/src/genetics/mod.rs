@@ -3,11 +3,11 @@
 //!
 //! - [`operators`]: tournament selection, Gaussian mutation, extended geometric crossover,
 //!   all with an explicit RNG and an optional frozen prefix of genes they never touch;
-//! - [`ga`]: the paper's mu + lambda GA with overlapping generations and parent
+//! - `ga`: the paper's mu + lambda GA with overlapping generations and parent
 //!   re-evaluation ([`Ga`], [`GaConfig`], [`Candidate`], [`GenerationStats`]).
 
 mod config;
-pub mod ga;
+pub(crate) mod ga;
 pub mod operators;
 mod stats;
 

@@ -15,7 +15,7 @@ pub const ALPHA_HIGH: f64 = 1.5;
 pub use crate::random::standard_normal;
 
 /// Fitness as a sort key: NaN counts as the worst possible value.
-pub fn fitness_key(f: f64) -> f64 {
+pub(crate) fn fitness_key(f: f64) -> f64 {
     if f.is_nan() {
         f64::NEG_INFINITY
     } else {

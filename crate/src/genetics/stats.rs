@@ -15,11 +15,11 @@ pub struct GenerationStats {
     /// Highest fitness.
     pub best: f64,
     /// Upper quartile.
-    pub q3: f64,
+    pub(crate) q3: f64,
     /// Median.
-    pub median: f64,
+    pub(crate) median: f64,
     /// Lower quartile.
-    pub q1: f64,
+    pub(crate) q1: f64,
     /// Lowest fitness.
     pub worst: f64,
 }

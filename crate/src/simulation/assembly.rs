@@ -17,15 +17,15 @@ use super::springs::{SpringDef, SpringKind};
 
 /// A robot's rigid parts and joints, ready to simulate.
 #[derive(Debug, Clone)]
-pub struct Assembly {
+pub(crate) struct Assembly {
     /// Rigid pieces (merged welded squares).
-    pub pieces: Pieces,
+    pub(crate) pieces: Pieces,
     /// Corner squares, 4 per voxel.
-    pub squares: Squares,
+    pub(crate) squares: Squares,
     /// Spring descriptions, 18 per voxel.
-    pub springs: Vec<SpringDef>,
+    pub(crate) springs: Vec<SpringDef>,
     /// Rope descriptions, 4 per voxel.
-    pub ropes: Vec<RopeDef>,
+    pub(crate) ropes: Vec<RopeDef>,
 }
 
 const HALF: f64 = CORNER_SIDE / 2.0;
@@ -96,7 +96,7 @@ fn merge_welds(cells: &[(usize, usize)]) -> Vec<usize> {
 
 /// Assembles and places a robot whose voxels sit at grid `cells` (index order), its
 /// start shifted right by `offset` metres (0 for the reference placement).
-pub fn assemble(cells: &[(usize, usize)], ground: &Ground, offset: f64) -> Assembly {
+pub(crate) fn assemble(cells: &[(usize, usize)], ground: &Ground, offset: f64) -> Assembly {
     let (tx, ty) = placement(cells, ground, offset);
     let piece_of = merge_welds(cells);
     let n_pieces = piece_of.iter().max().map_or(0, |m| m + 1);

@@ -10,7 +10,7 @@
 
 /// Corner of a voxel, in the order used by every per-voxel array.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Corner {
+pub(crate) enum Corner {
     /// South-west (bottom left).
     Sw = 0,
     /// South-east (bottom right).
@@ -23,10 +23,10 @@ pub enum Corner {
 
 impl Corner {
     /// All corners in index order.
-    pub const ALL: [Corner; 4] = [Corner::Sw, Corner::Se, Corner::Ne, Corner::Nw];
+    pub(crate) const ALL: [Corner; 4] = [Corner::Sw, Corner::Se, Corner::Ne, Corner::Nw];
 
     /// Unit direction (+-1, +-1) from the voxel centre toward this corner.
-    pub fn sign(self) -> (f64, f64) {
+    pub(crate) fn sign(self) -> (f64, f64) {
         match self {
             Corner::Sw => (-1.0, -1.0),
             Corner::Se => (1.0, -1.0),
@@ -42,9 +42,9 @@ pub struct Velocity {
     /// Linear velocity along x (m/s).
     pub vx: f64,
     /// Linear velocity along y (m/s).
-    pub vy: f64,
+    pub(crate) vy: f64,
     /// Angular velocity (rad/s, counter-clockwise).
-    pub w: f64,
+    pub(crate) w: f64,
 }
 
 /// All rigid pieces of a robot, struct-of-arrays.
@@ -57,15 +57,15 @@ pub struct Pieces {
     /// Angle (rad).
     pub angle: Vec<f64>,
     /// Cached cos(angle).
-    pub cos: Vec<f64>,
+    pub(crate) cos: Vec<f64>,
     /// Cached sin(angle).
-    pub sin: Vec<f64>,
+    pub(crate) sin: Vec<f64>,
     /// Velocities.
     pub vel: Vec<Velocity>,
     /// 1 / mass (1/kg).
     pub inv_mass: Vec<f64>,
     /// 1 / moment of inertia about the centre of mass (1/(kg m^2)).
-    pub inv_inertia: Vec<f64>,
+    pub(crate) inv_inertia: Vec<f64>,
 }
 
 impl Pieces {
@@ -93,28 +93,28 @@ impl Pieces {
 
     /// Rotates a piece-frame offset into the world frame.
     #[inline]
-    pub fn rotate(&self, p: usize, lx: f64, ly: f64) -> (f64, f64) {
+    pub(crate) fn rotate(&self, p: usize, lx: f64, ly: f64) -> (f64, f64) {
         let (c, s) = (self.cos[p], self.sin[p]);
         (c * lx - s * ly, s * lx + c * ly)
     }
 
     /// World position of a piece-frame offset.
     #[inline]
-    pub fn to_world(&self, p: usize, lx: f64, ly: f64) -> (f64, f64) {
+    pub(crate) fn to_world(&self, p: usize, lx: f64, ly: f64) -> (f64, f64) {
         let (rx, ry) = self.rotate(p, lx, ly);
         (self.x[p] + rx, self.y[p] + ry)
     }
 
     /// Velocity of the material point at world offset (rx, ry) from the centre of mass.
     #[inline]
-    pub fn point_velocity(&self, p: usize, rx: f64, ry: f64) -> (f64, f64) {
+    pub(crate) fn point_velocity(&self, p: usize, rx: f64, ry: f64) -> (f64, f64) {
         let v = self.vel[p];
         (v.vx - v.w * ry, v.vy + v.w * rx)
     }
 
     /// Sets a piece's angle and refreshes its cached cos and sin.
     #[inline]
-    pub fn set_angle(&mut self, p: usize, angle: f64) {
+    pub(crate) fn set_angle(&mut self, p: usize, angle: f64) {
         self.angle[p] = angle;
         self.cos[p] = libm::cos(angle);
         self.sin[p] = libm::sin(angle);
@@ -134,29 +134,24 @@ impl Pieces {
 
 /// The corner squares: which piece each belongs to and where it sits in that piece.
 #[derive(Debug, Clone, Default)]
-pub struct Squares {
+pub(crate) struct Squares {
     /// Piece of each square.
-    pub piece: Vec<usize>,
+    pub(crate) piece: Vec<usize>,
     /// Square centre offset from the piece's centre of mass, piece frame, x (m).
-    pub lx: Vec<f64>,
+    pub(crate) lx: Vec<f64>,
     /// Square centre offset from the piece's centre of mass, piece frame, y (m).
-    pub ly: Vec<f64>,
+    pub(crate) ly: Vec<f64>,
 }
 
 impl Squares {
     /// Number of squares (4 per voxel).
-    pub fn len(&self) -> usize {
+    pub(crate) fn len(&self) -> usize {
         self.piece.len()
-    }
-
-    /// True if there is no square.
-    pub fn is_empty(&self) -> bool {
-        self.piece.is_empty()
     }
 
     /// World position of square `s`'s centre plus a square-frame offset.
     #[inline]
-    pub fn point(&self, pieces: &Pieces, s: usize, ox: f64, oy: f64) -> (f64, f64) {
+    pub(crate) fn point(&self, pieces: &Pieces, s: usize, ox: f64, oy: f64) -> (f64, f64) {
         pieces.to_world(self.piece[s], self.lx[s] + ox, self.ly[s] + oy)
     }
 }
@@ -165,7 +160,7 @@ impl Pieces {
     /// Moves piece `p` as if hit by position impulse (px, py) at world offset (rx, ry)
     /// from its centre of mass (non-linear Gauss-Seidel position correction).
     #[inline]
-    pub fn push_position(&mut self, p: usize, px: f64, py: f64, rx: f64, ry: f64) {
+    pub(crate) fn push_position(&mut self, p: usize, px: f64, py: f64, rx: f64, ry: f64) {
         let im = self.inv_mass[p];
         self.x[p] += im * px;
         self.y[p] += im * py;

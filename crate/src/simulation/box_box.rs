@@ -13,22 +13,22 @@ use super::constants::CORNER_SIDE;
 const HALF: f64 = CORNER_SIDE / 2.0;
 /// Square-frame outward normals of the four faces: bottom, right, top, left (the same
 /// order as the ground collider's faces).
-pub const FACES: [(f64, f64); 4] = [(0.0, -1.0), (1.0, 0.0), (0.0, 1.0), (-1.0, 0.0)];
+pub(crate) const FACES: [(f64, f64); 4] = [(0.0, -1.0), (1.0, 0.0), (0.0, 1.0), (-1.0, 0.0)];
 /// How much deeper B's best face must be than A's before B becomes the reference
 /// (m): a hysteresis so near-ties do not flip the manifold between steps (Box2D).
 const REFERENCE_TOLERANCE: f64 = 0.1 * super::constants::LINEAR_SLOP;
 
 /// A square in the world: centre and the cos / sin of its angle.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
-pub struct SquarePose {
+pub(crate) struct SquarePose {
     /// Centre x (m).
-    pub x: f64,
+    pub(crate) x: f64,
     /// Centre y (m).
-    pub y: f64,
+    pub(crate) y: f64,
     /// cos(angle).
-    pub c: f64,
+    pub(crate) c: f64,
     /// sin(angle).
-    pub s: f64,
+    pub(crate) s: f64,
 }
 
 impl SquarePose {
@@ -47,28 +47,28 @@ impl SquarePose {
 
 /// One contact point of a manifold.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ClipPoint {
+pub(crate) struct ClipPoint {
     /// The point on the incident square (world, m).
-    pub point: (f64, f64),
+    pub(crate) point: (f64, f64),
     /// Its distance from the reference face along the normal (m), negative inside.
-    pub separation: f64,
+    pub(crate) separation: f64,
     /// Which end of the clipped incident face (0 or 1), for warm starting.
-    pub slot: u8,
+    pub(crate) slot: u8,
 }
 
 /// The contact between two squares.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Manifold {
+pub(crate) struct Manifold {
     /// True when square B holds the reference face (the normal points from B to A).
-    pub flipped: bool,
+    pub(crate) flipped: bool,
     /// Reference face index (into [`FACES`], in the reference square's frame).
-    pub reference_face: usize,
+    pub(crate) reference_face: usize,
     /// Incident face index (in the incident square's frame).
-    pub incident_face: usize,
+    pub(crate) incident_face: usize,
     /// Points closer than the margin (the first `count` entries are valid).
-    pub points: [ClipPoint; 2],
+    pub(crate) points: [ClipPoint; 2],
     /// Number of valid points (1 or 2).
-    pub count: usize,
+    pub(crate) count: usize,
 }
 
 /// The face of `a` along which `b` is farthest out, and that separation (m).
@@ -135,7 +135,7 @@ fn clip(seg: [(f64, f64); 2], t: (f64, f64), limit: f64) -> Option<[(f64, f64); 
 
 /// Contact between squares `a` and `b` when they are closer than `margin` (m); the
 /// normal points from the reference square to the other one.
-pub fn collide(a: &SquarePose, b: &SquarePose, margin: f64) -> Option<Manifold> {
+pub(crate) fn collide(a: &SquarePose, b: &SquarePose, margin: f64) -> Option<Manifold> {
     let (face_a, sep_a) = best_face(a, b);
     if sep_a > margin {
         return None;

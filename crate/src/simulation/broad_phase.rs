@@ -20,17 +20,17 @@ use super::constants::{CORNER_SIDE, DT};
 /// Half the side of a corner square (m).
 const HALF: f64 = CORNER_SIDE / 2.0;
 /// Half the diagonal of a corner square (m): the farthest a point of it is from its centre.
-pub const RADIUS: f64 = HALF * std::f64::consts::SQRT_2;
+pub(crate) const RADIUS: f64 = HALF * std::f64::consts::SQRT_2;
 
 /// How a square moves: velocity of its centre (m/s) and angular velocity (rad/s).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
-pub struct Motion {
+pub(crate) struct Motion {
     /// Velocity of the centre along x.
-    pub vx: f64,
+    pub(crate) vx: f64,
     /// Velocity of the centre along y.
-    pub vy: f64,
+    pub(crate) vy: f64,
     /// Angular velocity.
-    pub w: f64,
+    pub(crate) w: f64,
 }
 
 /// An axis-aligned box: min x, max x, min y, max y (m).
@@ -43,7 +43,7 @@ fn overlap_y(a: &Aabb, b: &Aabb) -> bool {
 
 /// Square and piece boxes, the pieces' x order and the candidate pairs of this step.
 #[derive(Debug, Clone, Default)]
-pub struct BroadPhase {
+pub(crate) struct BroadPhase {
     /// Squares of piece p: `members[start[p]..start[p + 1]]`, ascending.
     members: Vec<u32>,
     start: Vec<usize>,
@@ -64,7 +64,7 @@ pub struct BroadPhase {
 
 impl BroadPhase {
     /// A broad phase over the squares of a robot.
-    pub fn new(squares: &Squares, n_pieces: usize) -> Self {
+    pub(crate) fn new(squares: &Squares, n_pieces: usize) -> Self {
         let mut start = vec![0; n_pieces + 1];
         for &p in &squares.piece {
             start[p + 1] += 1;
@@ -93,7 +93,7 @@ impl BroadPhase {
 
     /// Finds the pairs of squares whose boxes overlap and that belong to different
     /// voxels and different pieces; also records every square's pose and motion.
-    pub fn update(&mut self, pieces: &Pieces, squares: &Squares, margin: f64) {
+    pub(crate) fn update(&mut self, pieces: &Pieces, squares: &Squares, margin: f64) {
         self.compute_boxes(pieces, squares, margin);
         self.sort();
         self.pairs.clear();
@@ -119,19 +119,19 @@ impl BroadPhase {
     }
 
     /// The candidate pairs (a < b) of the last update, sorted.
-    pub fn pairs(&self) -> &[(u32, u32)] {
+    pub(crate) fn pairs(&self) -> &[(u32, u32)] {
         &self.pairs
     }
 
     /// Pose of square `s` at the last update.
     #[inline]
-    pub fn pose(&self, s: usize) -> SquarePose {
+    pub(crate) fn pose(&self, s: usize) -> SquarePose {
         self.poses[s]
     }
 
     /// Motion of square `s` at the last update.
     #[inline]
-    pub fn motion(&self, s: usize) -> Motion {
+    pub(crate) fn motion(&self, s: usize) -> Motion {
         self.motions[s]
     }
 

@@ -21,7 +21,7 @@ const FACES: [(f64, f64); 4] = [(0.0, -1.0), (1.0, 0.0), (0.0, 1.0), (-1.0, 0.0)
 
 /// Geometry of a contact, enough to recompute its separation after bodies move.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Feature {
+pub(crate) enum Feature {
     /// A body point (piece-frame offset from the centre of mass) under a ground plane
     /// (upward normal, offset).
     Vertex {
@@ -46,24 +46,24 @@ pub enum Feature {
 
 /// One contact point between a corner square and the ground.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Contact {
+pub(crate) struct Contact {
     /// Stable identity across steps: square and feature.
-    pub key: u64,
+    pub(crate) key: u64,
     /// The square touching the ground.
-    pub square: usize,
+    pub(crate) square: usize,
     /// The piece it belongs to.
-    pub piece: usize,
+    pub(crate) piece: usize,
     /// Geometry.
-    pub feature: Feature,
+    pub(crate) feature: Feature,
     /// Separation when detected (m): negative when penetrating, at most the margin.
-    pub separation: f64,
+    pub(crate) separation: f64,
 }
 
 impl Contact {
     /// Push direction (unit, toward the body), offset of the contact point from the
     /// piece's centre of mass (world) and separation (negative when penetrating).
     #[inline]
-    pub fn evaluate(&self, pieces: &Pieces) -> ((f64, f64), (f64, f64), f64) {
+    pub(crate) fn evaluate(&self, pieces: &Pieces) -> ((f64, f64), (f64, f64), f64) {
         let p = self.piece;
         match self.feature {
             Feature::Vertex {
@@ -92,7 +92,7 @@ impl Contact {
 
 /// Finds every contact between the squares and the ground. `hints` holds one segment
 /// index per square, updated in place, so the search is a short walk.
-pub fn detect(
+pub(crate) fn detect(
     pieces: &Pieces,
     squares: &Squares,
     ground: &Ground,

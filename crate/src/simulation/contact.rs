@@ -25,9 +25,9 @@ struct Row {
 
 /// The contact solver's state: this step's rows and last step's impulses by key.
 #[derive(Debug, Clone)]
-pub struct ContactSolver {
+pub(crate) struct ContactSolver {
     /// Coulomb friction coefficient between the robot and the ground.
-    pub friction: f64,
+    pub(crate) friction: f64,
     rows: Vec<Row>,
     keys: Vec<u64>,
     warm: WarmStart,
@@ -47,7 +47,7 @@ impl Default for ContactSolver {
 impl ContactSolver {
     /// Prepares the rows for `contacts` and applies warm-start impulses of contacts
     /// that persist from the previous step.
-    pub fn prepare(&mut self, contacts: &[Contact], pieces: &mut Pieces) {
+    pub(crate) fn prepare(&mut self, contacts: &[Contact], pieces: &mut Pieces) {
         let last = self.keys.iter().zip(&self.rows);
         self.warm
             .remember(last.map(|(&key, row)| (key, row.impulses)));
@@ -80,7 +80,7 @@ impl ContactSolver {
     }
 
     /// One sweep: friction, then the normal impulse, for every contact.
-    pub fn solve_velocity(&mut self, pieces: &mut Pieces) {
+    pub(crate) fn solve_velocity(&mut self, pieces: &mut Pieces) {
         let friction = self.friction;
         for row in &mut self.rows {
             let t = (row.n.1, -row.n.0);
@@ -98,7 +98,7 @@ impl ContactSolver {
 
     /// One position sweep over `contacts`; true when none penetrates by more than
     /// three times the slop.
-    pub fn solve_position(contacts: &[Contact], pieces: &mut Pieces) -> bool {
+    pub(crate) fn solve_position(contacts: &[Contact], pieces: &mut Pieces) -> bool {
         let mut min_separation: f64 = 0.0;
         for c in contacts {
             let (n, r, separation) = c.evaluate(pieces);
@@ -114,16 +114,6 @@ impl ContactSolver {
             pieces.push_position(p, impulse * n.0, impulse * n.1, r.0, r.1);
         }
         resolved(min_separation)
-    }
-
-    /// Number of contact rows this step.
-    pub fn len(&self) -> usize {
-        self.rows.len()
-    }
-
-    /// True if nothing touches the ground.
-    pub fn is_empty(&self) -> bool {
-        self.rows.is_empty()
     }
 }
 

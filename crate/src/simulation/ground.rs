@@ -17,7 +17,7 @@ pub struct Ground {
 
 impl Ground {
     /// Builds the ground from a polyline with at least two vertices and increasing x.
-    pub fn new(xs: &[f64], ys: &[f64]) -> Self {
+    pub(crate) fn new(xs: &[f64], ys: &[f64]) -> Self {
         let n = xs.len();
         let mut normal = Vec::with_capacity(n - 1);
         let mut offset = Vec::with_capacity(n - 1);
@@ -48,32 +48,32 @@ impl Ground {
     }
 
     /// Number of segments.
-    pub fn segments(&self) -> usize {
+    pub(crate) fn segments(&self) -> usize {
         self.xs.len() - 1
     }
 
     /// Vertex i.
     #[inline]
-    pub fn vertex(&self, i: usize) -> (f64, f64) {
+    pub(crate) fn vertex(&self, i: usize) -> (f64, f64) {
         (self.xs[i], self.ys[i])
     }
 
     /// Whether vertex i is a peak that can poke into a body.
     #[inline]
-    pub fn is_convex(&self, i: usize) -> bool {
+    pub(crate) fn is_convex(&self, i: usize) -> bool {
         self.convex[i]
     }
 
     /// Upward normal and offset of segment i.
     #[inline]
-    pub fn plane(&self, i: usize) -> ((f64, f64), f64) {
+    pub(crate) fn plane(&self, i: usize) -> ((f64, f64), f64) {
         (self.normal[i], self.offset[i])
     }
 
     /// Segment containing x (xs[i] <= x < xs[i + 1], clamped), found by walking from a
     /// hint, which is cheap because bodies move little between steps.
     #[inline]
-    pub fn segment_near(&self, x: f64, hint: usize) -> usize {
+    pub(crate) fn segment_near(&self, x: f64, hint: usize) -> usize {
         let last = self.segments() - 1;
         let mut i = hint.min(last);
         while i > 0 && x < self.xs[i] {
@@ -89,7 +89,7 @@ impl Ground {
     /// Compare and select rather than f64::max, which is a libm call in wasm (heights
     /// are never NaN; a zero's sign is irrelevant to the callers' comparisons).
     #[inline]
-    pub fn max_height(&self, i0: usize, i1: usize) -> f64 {
+    pub(crate) fn max_height(&self, i0: usize, i1: usize) -> f64 {
         self.ys[i0..=i1 + 1]
             .iter()
             .fold(f64::NEG_INFINITY, |m, &y| if y > m { y } else { m })

@@ -16,14 +16,14 @@ const DOUBLE_UNIT: f64 = 1.0 / (1u64 << 53) as f64;
 
 /// A bit-exact `java.util.Random`.
 #[derive(Debug, Clone)]
-pub struct JavaRandom {
+pub(crate) struct JavaRandom {
     seed: i64,
     next_next_gaussian: Option<f64>,
 }
 
 impl JavaRandom {
     /// Same as Java's `new Random(seed)`.
-    pub fn new(seed: i64) -> Self {
+    pub(crate) fn new(seed: i64) -> Self {
         Self {
             seed: (seed ^ MULTIPLIER) & MASK,
             next_next_gaussian: None,
@@ -32,42 +32,15 @@ impl JavaRandom {
 
     /// Java's `next(bits)`: advances the LCG and returns its top `bits` bits
     /// (1..=32) as a Java `int` (so 32 bits may come back negative).
-    pub fn next(&mut self, bits: u32) -> i32 {
+    pub(crate) fn next(&mut self, bits: u32) -> i32 {
         debug_assert!((1..=32).contains(&bits));
         self.seed = self.seed.wrapping_mul(MULTIPLIER).wrapping_add(ADDEND) & MASK;
         // `>>>` on a non-negative 48-bit value, then Java's narrowing (int) cast.
         (self.seed as u64 >> (48 - bits)) as u32 as i32
     }
 
-    /// Java's `nextInt()`: 32 uniformly random bits.
-    pub fn next_int(&mut self) -> i32 {
-        self.next(32)
-    }
-
-    /// Java's `nextInt(bound)`: uniform in `0..bound`, with Java's special
-    /// case for powers of two and its rejection loop otherwise.
-    ///
-    /// # Panics
-    /// If `bound <= 0` (Java throws `IllegalArgumentException`); callers pass
-    /// constants, never user input.
-    pub fn next_int_bound(&mut self, bound: i32) -> i32 {
-        assert!(bound > 0, "bound must be positive, got {bound}");
-        let m = bound - 1;
-        if bound & m == 0 {
-            return ((i64::from(bound) * i64::from(self.next(31))) >> 31) as i32;
-        }
-        loop {
-            let bits = self.next(31);
-            let val = bits % bound;
-            // Java rejects when this int sum overflows (goes negative).
-            if bits.wrapping_sub(val).wrapping_add(m) >= 0 {
-                return val;
-            }
-        }
-    }
-
     /// Java's `nextDouble()`: `((next(26) << 27) + next(27)) * 2^-53`, in [0, 1).
-    pub fn next_double(&mut self) -> f64 {
+    pub(crate) fn next_double(&mut self) -> f64 {
         let high = i64::from(self.next(26)) << 27;
         let low = i64::from(self.next(27));
         (high + low) as f64 * DOUBLE_UNIT
@@ -76,7 +49,7 @@ impl JavaRandom {
     /// Java's `nextGaussian()`: the polar method, returning the cached second
     /// value on every other call. Uses `libm` so the logarithm and square root
     /// match `StrictMath` bit for bit.
-    pub fn next_gaussian(&mut self) -> f64 {
+    pub(crate) fn next_gaussian(&mut self) -> f64 {
         if let Some(cached) = self.next_next_gaussian.take() {
             return cached;
         }
@@ -100,45 +73,11 @@ mod tests {
     use super::*;
 
     #[test]
-    fn next_int_matches_java() {
-        assert_eq!(JavaRandom::new(42).next_int(), -1_170_105_035);
-        assert_eq!(JavaRandom::new(0).next_int(), -1_155_484_576);
+    fn next_32_bits_match_javas_next_int() {
+        assert_eq!(JavaRandom::new(42).next(32), -1_170_105_035);
+        assert_eq!(JavaRandom::new(0).next(32), -1_155_484_576);
         // Only the low 48 bits of the seed matter.
-        assert_eq!(JavaRandom::new(i64::MIN).next_int(), -1_155_484_576);
-    }
-
-    #[test]
-    fn next_int_bound_matches_java() {
-        let mut r = JavaRandom::new(42);
-        assert_eq!(r.next_int_bound(10), 0);
-        assert_eq!(r.next_int_bound(10), 3);
-        assert_eq!(JavaRandom::new(0).next_int_bound(100), 60);
-        assert_eq!(
-            JavaRandom::new(5).next_int_bound(1_000_000_007),
-            568_779_480
-        );
-    }
-
-    #[test]
-    fn next_int_bound_power_of_two_matches_java() {
-        assert_eq!(JavaRandom::new(7).next_int_bound(16), 11);
-    }
-
-    #[test]
-    fn next_int_bound_rejection_loop_matches_java() {
-        // With bound 2^30 + 1 about half of the draws are rejected.
-        let mut r = JavaRandom::new(3);
-        let got: Vec<i32> = (0..6).map(|_| r.next_int_bound((1 << 30) + 1)).collect();
-        let want = [
-            152_454_210,
-            144_139_128,
-            488_197_459,
-            757_666_882,
-            142_793_614,
-            64_032_981,
-        ];
-        assert_eq!(got, want);
-        assert_eq!(r.next_int(), 1_767_665_612);
+        assert_eq!(JavaRandom::new(i64::MIN).next(32), -1_155_484_576);
     }
 
     #[test]
@@ -146,7 +85,7 @@ mod tests {
         assert_eq!(JavaRandom::new(0).next_double(), 0.730_967_787_376_657);
         assert_eq!(JavaRandom::new(42).next_double(), 0.727_563_680_032_868_1);
         let mut r = JavaRandom::new(i64::MIN);
-        r.next_int();
+        r.next(32);
         assert_eq!(r.next_double(), 0.831_440_988_787_061_2);
     }
 
@@ -161,12 +100,5 @@ mod tests {
             "the second value comes from the cache"
         );
         assert_eq!(r.next_gaussian(), 2.080_920_790_428_163);
-    }
-
-    #[test]
-    fn next_gaussian_then_next_int_matches_java() {
-        let mut r = JavaRandom::new(-5);
-        assert_eq!(r.next_gaussian(), -1.220_567_517_307_438_8);
-        assert_eq!(r.next_int_bound(i32::MAX), 817_965_352);
     }
 }

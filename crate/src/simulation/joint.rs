@@ -6,34 +6,34 @@ use super::body::{Pieces, Velocity};
 
 /// A distance constraint prepared for one step.
 #[derive(Debug, Clone, Copy, Default)]
-pub struct JointRow {
+pub(crate) struct JointRow {
     /// First piece.
-    pub a: u32,
+    pub(crate) a: u32,
     /// Second piece.
-    pub b: u32,
+    pub(crate) b: u32,
     /// Unit direction from anchor a to anchor b.
-    pub nx: f64,
+    pub(crate) nx: f64,
     /// Unit direction from anchor a to anchor b.
-    pub ny: f64,
+    pub(crate) ny: f64,
     /// Lever arm of a across n: r_a x n.
-    pub rna: f64,
+    pub(crate) rna: f64,
     /// Lever arm of b across n: r_b x n.
-    pub rnb: f64,
+    pub(crate) rnb: f64,
     /// Current distance between the anchors (m).
-    pub length: f64,
+    pub(crate) length: f64,
     /// Velocity change of a per unit impulse: (n / m_a, (r_a x n) / I_a).
-    pub da: [f64; 3],
+    pub(crate) da: [f64; 3],
     /// Velocity change of b per unit impulse.
-    pub db: [f64; 3],
+    pub(crate) db: [f64; 3],
     /// Inverse of the constraint's effective mass (1/kg), without softness.
-    pub inv_mass: f64,
+    pub(crate) inv_mass: f64,
 }
 
 impl JointRow {
     /// Prepares the row between two world anchors given as offsets (ra, rb) from the
     /// pieces' centres of mass.
     #[inline]
-    pub fn new(pieces: &Pieces, a: usize, b: usize, ra: (f64, f64), rb: (f64, f64)) -> Self {
+    pub(crate) fn new(pieces: &Pieces, a: usize, b: usize, ra: (f64, f64), rb: (f64, f64)) -> Self {
         let dx = pieces.x[b] + rb.0 - pieces.x[a] - ra.0;
         let dy = pieces.y[b] + rb.1 - pieces.y[a] - ra.1;
         let length = (dx * dx + dy * dy).sqrt();
@@ -62,7 +62,7 @@ impl JointRow {
 
     /// Relative velocity of the anchors along n (m/s).
     #[inline]
-    pub fn velocity(&self, vel: &[Velocity]) -> f64 {
+    pub(crate) fn velocity(&self, vel: &[Velocity]) -> f64 {
         let va = vel[self.a as usize];
         let vb = vel[self.b as usize];
         self.nx * (vb.vx - va.vx) + self.ny * (vb.vy - va.vy) + self.rnb * vb.w - self.rna * va.w
@@ -70,7 +70,7 @@ impl JointRow {
 
     /// Applies impulse `lambda` along n: -lambda on a, +lambda on b.
     #[inline]
-    pub fn apply(&self, vel: &mut [Velocity], lambda: f64) {
+    pub(crate) fn apply(&self, vel: &mut [Velocity], lambda: f64) {
         let va = &mut vel[self.a as usize];
         va.vx -= self.da[0] * lambda;
         va.vy -= self.da[1] * lambda;

@@ -15,16 +15,16 @@ const SURELY_SLACK2: f64 = ROPE_MIN_LENGTH * ROPE_MIN_LENGTH * (1.0 + 1e-9);
 
 /// One rope between the centres of two corner squares.
 #[derive(Debug, Clone, Copy)]
-pub struct RopeDef {
+pub(crate) struct RopeDef {
     /// Piece and offset of the first square centre from its centre of mass.
-    pub a: (usize, f64, f64),
+    pub(crate) a: (usize, f64, f64),
     /// Piece and offset of the second square centre.
-    pub b: (usize, f64, f64),
+    pub(crate) b: (usize, f64, f64),
 }
 
 /// Every rope of a robot, with the active rows of the current step.
 #[derive(Debug, Clone, Default)]
-pub struct Ropes {
+pub(crate) struct Ropes {
     defs: Vec<RopeDef>,
     active: Vec<(usize, JointRow)>,
     impulse: Vec<f64>,
@@ -32,7 +32,7 @@ pub struct Ropes {
 
 impl Ropes {
     /// Builds the rope set.
-    pub fn new(defs: Vec<RopeDef>) -> Self {
+    pub(crate) fn new(defs: Vec<RopeDef>) -> Self {
         let n = defs.len();
         Ropes {
             defs,
@@ -59,7 +59,7 @@ impl Ropes {
     }
 
     /// Finds the ropes at their limit and applies their warm-start impulses.
-    pub fn prepare(&mut self, pieces: &mut Pieces) {
+    pub(crate) fn prepare(&mut self, pieces: &mut Pieces) {
         self.active.clear();
         for i in 0..self.defs.len() {
             if self.surely_slack(pieces, i) {
@@ -78,7 +78,7 @@ impl Ropes {
 
     /// One sweep over the active ropes: the anchors may separate, never approach.
     #[inline]
-    pub fn solve_velocity(&mut self, vel: &mut [Velocity]) {
+    pub(crate) fn solve_velocity(&mut self, vel: &mut [Velocity]) {
         for (i, row) in &self.active {
             let lambda = -row.velocity(vel) / row.inv_mass;
             let old = self.impulse[*i];
@@ -90,7 +90,7 @@ impl Ropes {
 
     /// One position sweep; returns true when no rope is shorter than its limit by more
     /// than the slop.
-    pub fn solve_position(&self, pieces: &mut Pieces) -> bool {
+    pub(crate) fn solve_position(&self, pieces: &mut Pieces) -> bool {
         let mut ok = true;
         for (i, _) in &self.active {
             let row = self.row(pieces, *i);

@@ -27,39 +27,39 @@ const HALF: f64 = CORNER_SIDE / 2.0;
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PairContact {
     /// Stable identity across steps: the two squares and the feature.
-    pub key: u64,
+    pub(crate) key: u64,
     /// Piece holding the reference face.
-    pub a: usize,
+    pub(crate) a: usize,
     /// Piece holding the incident point.
-    pub b: usize,
+    pub(crate) b: usize,
     /// Reference face normal, piece a's frame.
-    pub normal: (f64, f64),
+    pub(crate) normal: (f64, f64),
     /// A point on the reference face: piece-frame offset from a's centre of mass.
-    pub face_point: (f64, f64),
+    pub(crate) face_point: (f64, f64),
     /// The incident point: piece-frame offset from b's centre of mass.
-    pub point: (f64, f64),
+    pub(crate) point: (f64, f64),
     /// Separation when detected (m): negative when penetrating, at most the margin.
     pub separation: f64,
 }
 
 /// A contact's geometry in the current pose.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PairGeometry {
+pub(crate) struct PairGeometry {
     /// World normal, from piece a toward piece b.
-    pub n: (f64, f64),
+    pub(crate) n: (f64, f64),
     /// Offset of the contact point from a's centre of mass (world).
-    pub ra: (f64, f64),
+    pub(crate) ra: (f64, f64),
     /// Offset of the contact point from b's centre of mass (world).
-    pub rb: (f64, f64),
+    pub(crate) rb: (f64, f64),
     /// Separation (m), negative when penetrating.
-    pub separation: f64,
+    pub(crate) separation: f64,
 }
 
 impl PairContact {
     /// The contact's geometry for the pieces' current pose. The contact point is
     /// halfway between the incident point and the reference face.
     #[inline]
-    pub fn evaluate(&self, pieces: &Pieces) -> PairGeometry {
+    pub(crate) fn evaluate(&self, pieces: &Pieces) -> PairGeometry {
         let (a, b) = (self.a, self.b);
         let n = pieces.rotate(a, self.normal.0, self.normal.1);
         let (fx, fy) = pieces.to_world(a, self.face_point.0, self.face_point.1);
@@ -98,7 +98,7 @@ fn margin(broad: &BroadPhase, base: f64, a: usize, b: usize) -> f64 {
 
 /// Finds every contact between squares of different voxels and pieces, speculative
 /// up to `base` (m) plus what the pair's speeds close in one step.
-pub fn detect_self(
+pub(crate) fn detect_self(
     pieces: &Pieces,
     squares: &Squares,
     broad: &mut BroadPhase,

@@ -29,7 +29,7 @@ struct Row {
 
 /// The self-contact solver's state: this step's rows and last step's impulses by key.
 #[derive(Debug, Clone, Default)]
-pub struct SelfContactSolver {
+pub(crate) struct SelfContactSolver {
     rows: Vec<Row>,
     keys: Vec<u64>,
     warm: WarmStart,
@@ -68,7 +68,7 @@ fn apply(pieces: &mut Pieces, row: &Row, px: f64, py: f64) {
 impl SelfContactSolver {
     /// Prepares the rows for `contacts` (sorted by key) and applies the warm-start
     /// impulses of contacts that persist from the previous step.
-    pub fn prepare(&mut self, contacts: &[PairContact], pieces: &mut Pieces) {
+    pub(crate) fn prepare(&mut self, contacts: &[PairContact], pieces: &mut Pieces) {
         let last = self.keys.iter().zip(&self.rows);
         self.warm
             .remember(last.map(|(&key, row)| (key, row.impulses)));
@@ -107,7 +107,7 @@ impl SelfContactSolver {
     }
 
     /// One sweep: friction, then the normal impulse, for every contact.
-    pub fn solve_velocity(&mut self, pieces: &mut Pieces) {
+    pub(crate) fn solve_velocity(&mut self, pieces: &mut Pieces) {
         for row in &mut self.rows {
             let t = (row.n.1, -row.n.0);
             let (vx, vy) = relative_velocity(pieces, row);
@@ -124,7 +124,7 @@ impl SelfContactSolver {
 
     /// One position sweep over `contacts`; true when none penetrates by more than
     /// three times the slop.
-    pub fn solve_position(contacts: &[PairContact], pieces: &mut Pieces) -> bool {
+    pub(crate) fn solve_position(contacts: &[PairContact], pieces: &mut Pieces) -> bool {
         let mut min_separation: f64 = 0.0;
         for c in contacts {
             let PairGeometry {

@@ -15,9 +15,9 @@ use super::world::World;
 use crate::random::NormalStream;
 
 /// Readings per voxel.
-pub const READINGS: usize = 4;
+pub(crate) const READINGS: usize = 4;
 /// Standard deviation of the sensor noise.
-pub const NOISE_SD: f64 = 0.01;
+pub(crate) const NOISE_SD: f64 = 0.01;
 /// Samples in the velocity average (0.5 s).
 const VELOCITY_WINDOW: usize = (0.5 / DT + 0.5) as usize;
 /// Samples in the touch average (0.25 s).
@@ -126,7 +126,7 @@ impl Sensors {
     }
 
     /// The readings of the last [`Sensors::read`]: 4 per voxel (area, vx, vy, touch).
-    pub fn readings(&self) -> &[f32] {
+    pub(crate) fn readings(&self) -> &[f32] {
         &self.readings
     }
 }

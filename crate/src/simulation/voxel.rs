@@ -10,7 +10,7 @@ const HALF: f64 = CORNER_SIDE / 2.0;
 
 impl World {
     /// Outer corner points of voxel `v` in order SW, SE, NE, NW (world, m).
-    pub fn voxel_corners(&self, v: usize) -> [(f64, f64); 4] {
+    pub(crate) fn voxel_corners(&self, v: usize) -> [(f64, f64); 4] {
         Corner::ALL.map(|c| {
             let (sx, sy) = c.sign();
             self.squares
@@ -30,7 +30,7 @@ impl World {
     }
 
     /// Centre of voxel `v`: mean of its outer corners.
-    pub fn voxel_centre(&self, v: usize) -> (f64, f64) {
+    pub(crate) fn voxel_centre(&self, v: usize) -> (f64, f64) {
         let p = self.voxel_corners(v);
         (
             (p[0].0 + p[1].0 + p[2].0 + p[3].0) / 4.0,
@@ -38,19 +38,11 @@ impl World {
         )
     }
 
-    /// Angle of voxel `v` (rad): mean direction of its bottom and top edges, both
-    /// taken left to right.
-    pub fn voxel_angle(&self, v: usize) -> f64 {
-        let p = self.voxel_corners(v);
-        let bottom = libm::atan2(p[1].1 - p[0].1, p[1].0 - p[0].0);
-        let top = libm::atan2(p[2].1 - p[3].1, p[2].0 - p[3].0);
-        (bottom + top) / 2.0
-    }
-
-    /// Cosine and sine of voxel `v`'s angle, computed without trigonometry: the
+    /// Cosine and sine of voxel `v`'s angle (the mean direction of its bottom and top
+    /// edges, both taken left to right), computed without trigonometry: the
     /// bisector of its bottom and top edge directions (the same angle as the mean of
     /// the two edge angles whenever the edges are less than 180 degrees apart).
-    pub fn voxel_frame(&self, v: usize) -> (f64, f64) {
+    pub(crate) fn voxel_frame(&self, v: usize) -> (f64, f64) {
         let p = self.voxel_corners(v);
         let unit = |dx: f64, dy: f64| {
             let len = (dx * dx + dy * dy).sqrt();

@@ -61,7 +61,7 @@ impl World {
 
     /// As [`World::new`], with the robot's start shifted right by `offset` metres
     /// before it is lowered onto the ground (SPEC 12's ensembles shift by k x 1e-5 m).
-    pub fn with_start_offset(
+    pub(crate) fn with_start_offset(
         cells: &[(usize, usize)],
         xs: &[f64],
         ys: &[f64],
@@ -209,7 +209,7 @@ impl World {
     }
 
     /// Simulated time (s): steps x dt.
-    pub fn time(&self) -> f64 {
+    pub(crate) fn time(&self) -> f64 {
         self.steps as f64 * DT
     }
 
@@ -220,7 +220,7 @@ impl World {
 
     /// Whether any corner square of voxel `v` touches the ground now (a contact closer
     /// than the slop: resting contacts sit within a hair of zero separation).
-    pub fn touching(&self, v: usize) -> bool {
+    pub(crate) fn touching(&self, v: usize) -> bool {
         self.touching[v]
     }
 

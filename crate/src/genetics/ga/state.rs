@@ -15,17 +15,17 @@ pub struct GaState {
     /// Evaluations told so far.
     pub evaluations: u64,
     /// Survivors, best first: each gene's `f32::to_bits`.
-    pub genomes: Vec<Vec<u32>>,
+    pub(crate) genomes: Vec<Vec<u32>>,
     /// The survivors' latest fitness: `f64::to_bits`.
-    pub fitness: Vec<u64>,
+    pub(crate) fitness: Vec<u64>,
     /// Words of the GA's ChaCha8 stream consumed so far.
-    pub rng_word_pos: u64,
+    pub(crate) rng_word_pos: u64,
 }
 
 impl Ga {
     /// The state between generations (see [`GaState`]); `None` before generation 0 is told
     /// or while a batch is pending.
-    pub fn state(&self) -> Option<GaState> {
+    pub(crate) fn state(&self) -> Option<GaState> {
         if self.pending.is_some() || self.generation == 0 {
             return None;
         }
@@ -49,7 +49,7 @@ impl Ga {
     /// The GA of `config` and `seed` continued from `state`: asking and telling from here on
     /// gives exactly what the uninterrupted GA would. Fails on a state that does not fit the
     /// configuration (population size, genome length, non-finite genes).
-    pub fn from_state(
+    pub(crate) fn from_state(
         config: GaConfig,
         genome_len: usize,
         seed: u64,

@@ -13,7 +13,7 @@
 use super::lanes::{L, LANES};
 
 /// Rows per group at most: the four springs between two corner squares of a side.
-pub const MAX_ROWS: usize = 4;
+pub(crate) const MAX_ROWS: usize = 4;
 
 /// Entries of T below the diagonal for a group of [`MAX_ROWS`] rows.
 pub(super) const MAX_COUPLING: usize = MAX_ROWS * (MAX_ROWS - 1) / 2;

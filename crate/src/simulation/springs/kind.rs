@@ -16,7 +16,7 @@ pub enum SpringKind {
 
 impl SpringKind {
     /// Spring length for a voxel whose side measures `side` metres.
-    pub fn length_for_side(self, side: f64) -> f64 {
+    pub(crate) fn length_for_side(self, side: f64) -> f64 {
         let gap = side - 2.0 * CORNER_SIDE;
         match self {
             SpringKind::Side => gap,

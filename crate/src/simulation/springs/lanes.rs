@@ -11,10 +11,10 @@
 use crate::simulation::body::Velocity;
 
 /// Lanes per batch: groups of springs solved at once (the SIMD width of the solver).
-pub const LANES: usize = 4;
+pub(crate) const LANES: usize = 4;
 
 /// One value per lane.
-pub type L = [f64; LANES];
+pub(super) type L = [f64; LANES];
 
 /// Piece index of a padding lane: no piece.
 pub(super) const PAD: u32 = u32::MAX;

@@ -11,7 +11,7 @@
 //! simplify to gamma = 1 / (dt (c + dt k)) = G / m_ref and bias = stretch dt k gamma =
 //! stretch B, with G and B constants of the law ([`Springs::prepare`]). The impulse
 //! acts on the merged rigid pieces, so the implicit spring is exact for the merged
-//! system. Actuation only moves each spring's target length ([`Springs::set_actuation`]).
+//! system. Actuation only moves each spring's target length (`Springs::set_actuation`).
 //!
 //! **Row.** Spring j between anchors on pieces a and b, direction n_j (unit, from a's
 //! anchor to b's), lever arms r_a, r_b from the pieces' centres of mass, has the
@@ -21,9 +21,9 @@
 //! v += M^-1 J_j^T lambda_j and acc_j += lambda_j.
 //!
 //! **Group.** The springs joining the same two corner squares (the 4 springs of a
-//! side, or one diagonal: at most [`MAX_ROWS`] rows) form a group. Projecting row i
+//! side, or one diagonal: at most `MAX_ROWS` rows) form a group. Projecting row i
 //! changes row j's relative velocity by K_ji lambda_i, K_ji = J_j M^-1 J_i^T, so one
-//! Gauss-Seidel sweep over a group is, in closed form ([`group`]):
+//! Gauss-Seidel sweep over a group is, in closed form (`group`):
 //!
 //! ```text
 //! base_j   = -inv_k_j (J_j v + bias_j + gamma_j acc_j)   (all j, from the group's v)
@@ -37,25 +37,25 @@
 //! chain from the velocities to the impulses: T c depends only on earlier sweeps.
 //!
 //! **Batch.** Sequential impulses are latency-bound: each group reads the velocities the
-//! previous one wrote. Groups that share no piece commute, so [`packing`] puts up to
-//! [`LANES`] groups of equal length into a *batch* and every batch is prepared and swept
+//! previous one wrote. Groups that share no piece commute, so `packing` puts up to
+//! `LANES` groups of equal length into a *batch* and every batch is prepared and swept
 //! lane-parallel (`wide::f64x4`: SSE2 pairs natively, SIMD128 pairs in wasm), with the
-//! same arithmetic per lane as one group alone: [`LANES`] chains in flight instead of one.
+//! same arithmetic per lane as one group alone: `LANES` chains in flight instead of one.
 //! A batch with fewer groups fills its empty lanes with *padding*: no piece, zero
 //! inverse masses and a zero `live` flag, so the lane reads zero velocities and its
-//! (zero) results are dropped ([`lanes`]).
+//! (zero) results are dropped (`lanes`).
 //!
 //! **Step.** [`Springs::prepare`] computes every row's geometry, inv_k, bias and gamma
-//! ([`prepare`]), builds each group's T and A ([`group`]) and applies the warm-start
-//! impulses; [`Springs::solve_velocity`] is one sweep over every batch ([`sweep`]),
+//! (`prepare`), builds each group's T and A (`group`) and applies the warm-start
+//! impulses; [`Springs::solve_velocity`] is one sweep over every batch (`sweep`),
 //! called once per velocity iteration.
 //!
 //! # Files
-//! - [`kind`]: spring kinds, rest lengths, [`SpringDef`] (what the assembler describes);
-//! - [`lanes`]: the lane width, one value per lane, velocities gathered per lane;
-//! - [`batch`]: the packed data ([`batch::Batches`]), struct-of-arrays over the lanes;
-//! - [`packing`]: springs into groups, groups into batches;
-//! - [`prepare`], [`group`], [`sweep`]: the per-step work described above.
+//! - `kind`: spring kinds, rest lengths, [`SpringDef`] (what the assembler describes);
+//! - `lanes`: the lane width, one value per lane, velocities gathered per lane;
+//! - `batch`: the packed data (`batch::Batches`), struct-of-arrays over the lanes;
+//! - `packing`: springs into groups, groups into batches;
+//! - `prepare`, `group`, `sweep`: the per-step work described above.
 
 mod batch;
 mod group;
@@ -65,9 +65,7 @@ mod packing;
 mod prepare;
 mod sweep;
 
-pub use batch::MAX_ROWS;
 pub use kind::{SpringDef, SpringKind};
-pub use lanes::LANES;
 
 use super::body::{Pieces, Velocity};
 use super::constants::{DT, SPRING_DAMPING_RATIO, SPRING_FREQUENCY};
@@ -99,20 +97,10 @@ impl Springs {
         }
     }
 
-    /// Number of springs.
-    pub fn len(&self) -> usize {
-        self.voxel.len()
-    }
-
-    /// True if there is no spring.
-    pub fn is_empty(&self) -> bool {
-        self.voxel.is_empty()
-    }
-
     /// Sets every spring's rest length from its voxel's actuation u in [-1, 1]
     /// (+1 contracts, -1 expands), moving linearly toward the range's end. NaN acts
     /// as 0.
-    pub fn set_actuation(&mut self, actuation: &[f64]) {
+    pub(crate) fn set_actuation(&mut self, actuation: &[f64]) {
         for (i, &v) in self.voxel.iter().enumerate() {
             let u = actuation[v];
             let u = if u.is_nan() { 0.0 } else { u.clamp(-1.0, 1.0) };
@@ -139,7 +127,7 @@ impl Springs {
 
     /// Potential energy stored in the springs (J): sum of k x^2 / 2 with the stiffness
     /// and stretch of the last prepared step.
-    pub fn potential_energy(&self) -> f64 {
+    pub(crate) fn potential_energy(&self) -> f64 {
         self.batches.potential_energy(law().omega2)
     }
 }
