@@ -6,6 +6,9 @@
 //! wasm build compiles. `study` (campaigns, reports, statistics) sits on `experiment` for the
 //! command line only and is not compiled for wasm. The core has no clock, no I/O and no
 //! ambient randomness: every random draw comes from an explicit seed.
+//!
+//! What is `pub` here is what the command line, the page, the Python package (`python/`) and
+//! the tests use; everything else is `pub(crate)`.
 
 pub mod controllers;
 pub(crate) mod error;
