@@ -140,7 +140,7 @@ pub struct Timing {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct RunFile {
     /// Always [`FORMAT`].
-    pub(crate) format: String,
+    pub format: String,
     /// Always [`VERSION`].
     pub(crate) version: u32,
     /// The run's configuration.
