@@ -48,15 +48,15 @@ pub(crate) enum Feature {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Contact {
     /// Stable identity across steps: square and feature.
-    pub(crate) key: u64,
+    pub key: u64,
     /// The square touching the ground.
-    pub(crate) square: usize,
+    pub square: usize,
     /// The piece it belongs to.
-    pub(crate) piece: usize,
+    pub piece: usize,
     /// Geometry.
-    pub(crate) feature: Feature,
+    pub feature: Feature,
     /// Separation when detected (m): negative when penetrating, at most the margin.
-    pub(crate) separation: f64,
+    pub separation: f64,
 }
 
 impl Contact {

@@ -8,25 +8,25 @@ use super::body::{Pieces, Velocity};
 #[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct JointRow {
     /// First piece.
-    pub(crate) a: u32,
+    pub a: u32,
     /// Second piece.
-    pub(crate) b: u32,
+    pub b: u32,
     /// Unit direction from anchor a to anchor b.
-    pub(crate) nx: f64,
+    pub nx: f64,
     /// Unit direction from anchor a to anchor b.
-    pub(crate) ny: f64,
+    pub ny: f64,
     /// Lever arm of a across n: r_a x n.
-    pub(crate) rna: f64,
+    pub rna: f64,
     /// Lever arm of b across n: r_b x n.
-    pub(crate) rnb: f64,
+    pub rnb: f64,
     /// Current distance between the anchors (m).
-    pub(crate) length: f64,
+    pub length: f64,
     /// Velocity change of a per unit impulse: (n / m_a, (r_a x n) / I_a).
-    pub(crate) da: [f64; 3],
+    pub da: [f64; 3],
     /// Velocity change of b per unit impulse.
-    pub(crate) db: [f64; 3],
+    pub db: [f64; 3],
     /// Inverse of the constraint's effective mass (1/kg), without softness.
-    pub(crate) inv_mass: f64,
+    pub inv_mass: f64,
 }
 
 impl JointRow {
