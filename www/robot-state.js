@@ -2,8 +2,10 @@
 /**
  * The robot's state as the page keeps it across reloads and shares it as a link (share.js
  * writes and reads it as text): the drawing, the chosen family, the viewer's terrain, the run
- * settings and the brain that fits the drawing; and showing such a state on the robot.
+ * settings and the brain that fits the drawing (with the episode length it was trained on);
+ * and showing such a state on the robot.
  */
+import { describeRun } from './core.js';
 import { messageOf } from './kit.js';
 
 /** @param {import('./robot.js').Robot} robot @returns {import('./share.js').PageState} */
@@ -13,7 +15,7 @@ export function pageState(robot) {
   return {
     rows: drawing.rows(), controller: robot.controllerSelect.value, terrain: viewer.terrain.value, run: runs.values(),
     brain: brain && brain.rows === drawing.rows()
-      ? { controller: brain.controller, genome: brain.genome, label: brain.label, module: brain.module } : null,
+      ? { controller: brain.controller, genome: brain.genome, label: brain.label, module: brain.module, seconds: brain.seconds ?? null } : null,
   };
 }
 
@@ -39,6 +41,7 @@ export async function applyState(robot, state) {
       try {
         const text = await fetch(state.brain.module).then((r) => (r.ok ? r.text() : Promise.reject(new Error(`HTTP ${r.status}`))));
         brain.source = text;
+        brain.seconds ??= await describeRun(text).then((info) => info.seconds, () => null); // kept before its seconds were: the module's
       } catch (error) {
         robot.error(`the module ${state.brain.module} could not be fetched, so this robot cannot be fine-tuned: ${messageOf(error)}`);
       }

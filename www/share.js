@@ -15,8 +15,9 @@ import { messageOf } from './kit.js';
  * @property {string} controller   the family chosen for Evolve
  * @property {string} terrain      the viewer's terrain
  * @property {Record<string, string>} run  run settings: population, seconds, budget, seed, terrain
- * @property {{controller: string, genome: Float32Array, label: string, module: string | null} | null} brain
- *   what drives the robot; module = the pretrained file it came from (for fine-tuning)
+ * @property {{controller: string, genome: Float32Array, label: string, module: string | null, seconds: number | null} | null} brain
+ *   what drives the robot; module = the pretrained file it came from (for fine-tuning); seconds =
+ *   the episode length it was trained on, over which the viewer measures it (null: not known)
  */
 
 const RUN_KEYS = ['population', 'seconds', 'budget', 'seed', 'terrain'];
@@ -33,14 +34,16 @@ export function encodeState(state) {
     p.set('genome', genomeToBase64(state.brain.genome));
     p.set('label', state.brain.label);
     if (state.brain.module) p.set('module', state.brain.module);
+    if (state.brain.seconds !== null) p.set('brain-seconds', String(state.brain.seconds));
   }
   return p.toString();
 }
 
 /**
  * Reads a state and checks all of it: the robot (valid, and within the grid), the controller,
- * the terrains, every run setting and the genome (the core's checks). A draft (the kept state
- * of a drawing not finished yet) may be an invalid robot; it then has no brain.
+ * the terrains, every run setting, the genome (the core's checks) and its episode length. A
+ * draft (the kept state of a drawing not finished yet) may be an invalid robot; it then has no
+ * brain.
  * @param {string} text URL-hash parameters (with or without '#')
  * @param {string[]} controllers the families the page knows
  * @param {{width: number, height: number}} grid the editor's grid
@@ -80,7 +83,11 @@ export async function decodeState(text, controllers, grid, draft = false) {
       const genome = base64ToGenome(genomeText);
       await checkGenome(kind, rows, genome);
       const module = p.get('module');
-      brain = { controller: kind, genome, label: p.get('label') ?? `${kind} from a link`, module: module && /^pretrained\/[\w.-]+\.json$/.test(module) ? module : null };
+      const seconds = p.get('brain-seconds'); // links made before it was kept have none
+      const secondsProblem = seconds === null ? '' : settingProblem('seconds', seconds);
+      if (secondsProblem) return { error: `its brain's ${secondsProblem}` };
+      brain = { controller: kind, genome, label: p.get('label') ?? `${kind} from a link`,
+        module: module && /^pretrained\/[\w.-]+\.json$/.test(module) ? module : null, seconds: seconds === null ? null : Number(seconds) };
     }
     return { state: { rows, controller, terrain: view, run, brain } };
   } catch (error) {

@@ -7,7 +7,9 @@
  * the speed measured at once beside the training figure; the distance counts from the start
  * (0 m at first, not the robot's place on the terrain). A module transplanted onto a drawn
  * robot shows its one-shot speed at once, says what to do next, and the viewer's own measure
- * over the episode agrees with it. A budget says what it becomes (2020 evaluations).
+ * over the episode agrees with it. A budget says what it becomes (2020 evaluations). A
+ * pretrained brain reloaded from the kept state or opened from its link (an older link
+ * without its seconds too) is still measured over its own 30-s episode when the form says 12.
  * Saves screenshots/numbers.png.
  */
 import assert from 'node:assert/strict';
@@ -31,13 +33,19 @@ async function episodeSpeed(page) {
   return figure(page, 'robot-speed');
 }
 
+/** A new page walking the pretrained biped module on its own body, on TERRAIN. */
+async function openOwnBody() {
+  const opened = await openPage(env.browser, env.url);
+  await opened.page.locator('#terrain').fill(TERRAIN);
+  await opened.page.locator('#terrain').press('Enter');
+  await byTestId(opened.page, 'pretrained').selectOption(ATTENTION);
+  await opened.page.locator('#module-open').click();
+  await waitForText(opened.page, 'status', /^10 voxels, attention$/);
+  return opened;
+}
+
 test('the viewer\'s speed over an episode is `vsr evaluate`\'s; the distance counts from the start', async () => {
-  const { page, problems, context } = await openPage(env.browser, env.url);
-  await page.locator('#terrain').fill(TERRAIN);
-  await page.locator('#terrain').press('Enter');
-  await byTestId(page, 'pretrained').selectOption(ATTENTION);
-  await page.locator('#module-open').click();
-  await waitForText(page, 'status', /^10 voxels, attention$/);
+  const { page, problems, context } = await openOwnBody();
   await waitForText(page, 'module-details', /budget 30000 evaluations \(it took 30100: a run finishes its last generation\)/);
   await page.waitForFunction(() => Number(document.getElementById('sim-time')?.dataset.value) < 1);
   const x = await figure(page, 'robot-x');
@@ -53,6 +61,51 @@ test('the viewer\'s speed over an episode is `vsr evaluate`\'s; the distance cou
   const atOnce = await figure(page, 'speed-note');
   assert.ok(Math.abs(atOnce - cli.velocity) <= 1e-9, `measured at once ${atOnce} m/s, vsr evaluate ${cli.velocity} m/s`);
   assert.match(String(await byTestId(page, 'speed-note').textContent()), /In training: .* drawn fresh/);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('a pretrained brain kept across a reload, or shared as a link, is measured over its own episode, not the form\'s', async () => {
+  const { page, problems, context } = await openOwnBody();
+  const seconds = JSON.parse(await readFile(path.join(ROOT, ATTENTION), 'utf8')).config.seconds;
+  assert.equal(seconds, 30);
+  await page.locator('#run-seconds').fill('12'); // the form's episodes for the next run (10 at first)
+  await page.locator('#run-seconds').press('Enter');
+  await page.waitForFunction(() => /(^|&)seconds=12&.*genome=/.test(localStorage.getItem('vsr-playground/state/v1') ?? ''), undefined, { timeout: 20_000 });
+
+  await page.reload();
+  await waitForText(page, 'status', /^10 voxels, attention$/);
+  assert.equal(await page.locator('#run-seconds').inputValue(), '12', 'the form kept its 12 s');
+  const cli = JSON.parse(execFileSync(BIN, ['evaluate', '--genome', path.join(ROOT, ATTENTION), '--terrain', TERRAIN,
+    '--seconds', String(seconds)], { encoding: 'utf8' }));
+  await page.waitForFunction(() => Number.isFinite(Number(document.getElementById('speed-note')?.dataset.value)), undefined, { timeout: 60_000 });
+  assert.match(String(await byTestId(page, 'speed-note').textContent()), /over a 30-s episode/);
+  const atOnce = await figure(page, 'speed-note');
+  assert.ok(Math.abs(atOnce - cli.velocity) <= 1e-9, `measured at once after the reload ${atOnce} m/s, vsr evaluate ${cli.velocity} m/s`);
+  await page.locator('#speed').selectOption('0');
+  const viewed = await episodeSpeed(page);
+  assert.match(String(await byTestId(page, 'viewer-speed').textContent()), new RegExp(`over its 30-s episode on ${TERRAIN}`));
+  assert.ok(Math.abs(viewed - cli.velocity) <= 1e-9, `viewer after the reload ${viewed} m/s, vsr evaluate ${cli.velocity} m/s`);
+
+  // Its link carries the seconds; a link made before they were kept takes the module's; a bad value is refused.
+  await byTestId(page, 'share').click();
+  await page.waitForFunction(() => (document.getElementById('share-link')?.dataset.value ?? '').includes('#'));
+  const link = new URL(String(await page.locator('#share-link').getAttribute('data-value')));
+  assert.equal(new URLSearchParams(link.hash.slice(1)).get('brain-seconds'), '30');
+  /** @param {(p: URLSearchParams) => void} change @returns {string} the link changed */
+  const variant = (change) => { const p = new URLSearchParams(link.hash.slice(1)); change(p); return `${env.url}#${p}`; };
+  for (const [what, url] of [['its link', link.href], ['an older link', variant((p) => p.delete('brain-seconds'))]]) {
+    const opened = await openPage(env.browser, url);
+    await waitForText(opened.page, 'status', /^10 voxels, attention$/);
+    await waitForText(opened.page, 'robot-speed', new RegExp(`\\b30-s episode on ${TERRAIN}`), 30_000);
+    await opened.page.waitForFunction(() => Number.isFinite(Number(document.getElementById('speed-note')?.dataset.value)), undefined, { timeout: 60_000 });
+    assert.ok(Math.abs(await figure(opened.page, 'speed-note') - cli.velocity) <= 1e-9, `${what}: measured over its 30 s`);
+    assert.deepEqual(opened.problems, [], what);
+    await opened.context.close();
+  }
+  const bad = await openPage(env.browser, variant((p) => p.set('brain-seconds', '0')));
+  await waitForText(bad.page, 'message', /could not be opened: its brain's episode seconds "0" are not in \(0, 3600\]/);
+  await bad.context.close();
   assert.deepEqual(problems, []);
   await context.close();
 });
