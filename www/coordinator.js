@@ -6,8 +6,8 @@
  * them out one at a time to whichever worker is idle, stores each fitness at its job's
  * index, and tells the GA once all are back: the result is the same for any number of
  * workers, and when a worker dies, a new one re-runs its job with the same result. Pausing
- * stops handing out jobs; a step runs one generation; stopping drops the unfinished
- * generation. Messages: protocol.js (ToCoordinator, FromCoordinator, EvaluatorMessage).
+ * stops handing out jobs (the run holds once the jobs under way are back, which may finish a
+ * generation); a step runs one generation; stopping drops the unfinished generation. Messages: protocol.js (ToCoordinator, FromCoordinator, EvaluatorMessage).
  */
 import init, { Evolution, start as installPanicHook } from './pkg/vsr.js';
 import { loadWasm, messageOf, spawn } from './kit.js';
@@ -112,6 +112,7 @@ function replace(dead, why) {
   self.postMessage({ type: FromCoordinator.RECOVERED,
     message: `evaluation worker ${index + 1} stopped (${why}); a new one re-runs its job` });
   dispatch();
+  if (paused && slot !== undefined && busy.size === 0) postState();
 }
 
 /** @param {Worker} w @param {{type: string, slot?: number, fitness?: number, message?: string}} msg */
@@ -155,7 +156,9 @@ function onResult(w, slot, fitness) {
   idle.push(w);
   batch.fitness[slot] = fitness;
   batch.left -= 1;
+  const settled = paused && busy.size === 0; // the last evaluation under way when paused came back
   if (batch.left === 0) tellGeneration(); else dispatch();
+  if (settled) postState();
 }
 
 /** Tells the GA the finished generation, reports it, and goes on (or pauses after a step). */
@@ -202,8 +205,13 @@ function setPaused(pause) {
   const now = performance.now();
   if (pause) clock.ms += now - clock.since; else clock.since = now;
   paused = pause;
-  self.postMessage({ type: FromCoordinator.STATE, paused, stepping });
+  postState();
   dispatch();
+}
+
+/** Tells the page the pause state and the evaluations still under way (a pause holds once they are back). */
+function postState() {
+  self.postMessage({ type: FromCoordinator.STATE, paused, stepping, underWay: busy.size });
 }
 
 /** @returns {number} wall seconds of the run, pauses excluded */

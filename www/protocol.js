@@ -189,7 +189,9 @@ export function frameIsConsistent(frame) {
  *                                        beat every earlier generation's, else null; top =
  *                                        {fitness, genome} of this generation's best evaluation
  *                                        (kept by the page to race generations)
- *   {type: 'state', paused}              pause state changed
+ *   {type: 'state', paused, stepping, underWay}
+ *                                        pause state changed, or (underWay 0) the last
+ *                                        evaluation under way when paused came back: it holds
  *   {type: 'run-file', runFile}          the run so far (JSON text, format 'vsr-run'), or null
  *   {type: 'recovered', message}         an evaluation worker died; a new one re-runs its job
  *   {type: 'done', stopped, runFile}     the run ended (budget spent, or stopped); runFile is

@@ -5,7 +5,8 @@
  * corner squares outlined, a metre grid and scale, with a camera following the robot.
  * World units are metres with y up; the canvas transform does the flip. The core's constants
  * (area limits, corner size) come from the simulation worker's 'ready' ({@link Renderer.setPhysics});
- * the robot is drawn once they are known.
+ * the robot is drawn once they are known. The canvas's data-camera-still says whether the
+ * camera has reached where it heads (to half a pixel): the view of a held robot is settled.
  */
 import { BODY_FLOATS, CORNER_FLOATS } from './protocol.js';
 import { voxelAt } from './voxel-pick.js';
@@ -90,7 +91,12 @@ export class Renderer {
     const box = this.frame ? robotBox(this.frame) : null;
     const s = Math.min(w / Math.max(VIEW_WIDTH_M, ROBOT_VIEW_FACTOR * (box ? box.right - box.left : 0)),
       h / Math.max(VIEW_HEIGHT_M, ROBOT_VIEW_FACTOR * (box ? box.top - box.bottom : 0)));
-    if (box && Number.isFinite(box.left) && s > 0) this.keepInView(box, w / s, h / s);
+    if (box && this.frame && Number.isFinite(box.left) && s > 0) {
+      this.camera = inView(this.camera, box, w / s, h / s);
+      const rest = inView({ x: this.frame.centreX, y: this.frame.centreY }, box, w / s, h / s);
+      const still = String(Math.max(Math.abs(rest.x - this.camera.x), Math.abs(rest.y - this.camera.y)) * s < 0.5);
+      if (canvas.dataset.cameraStill !== still) canvas.dataset.cameraStill = still;
+    }
     const view = { s, left: this.camera.x - w / 2 / s, right: this.camera.x + w / 2 / s,
       bottom: this.camera.y - h / 2 / s, top: this.camera.y + h / 2 / s };
     this.view = { ...view, w, h, dpr };
@@ -114,19 +120,6 @@ export class Renderer {
     this.camera.x += (target.x - this.camera.x) * smooth(CAMERA_LAG_X_S);
     this.camera.y += (target.y - this.camera.y) * smooth(CAMERA_LAG_Y_S);
     this.snapCamera = false;
-  }
-
-  /**
-   * Moves the camera just enough that the whole robot is on screen with a margin, however
-   * fast it goes (the smoothing alone would let a fast robot slide off the edge).
-   * @param {{left: number, right: number, bottom: number, top: number}} box
-   * @param {number} viewW @param {number} viewH metres visible
-   */
-  keepInView(box, viewW, viewH) {
-    const mx = Math.min(viewW * 0.15, Math.max(0, (viewW - (box.right - box.left)) / 2));
-    const my = Math.min(viewH * 0.15, Math.max(0, (viewH - (box.top - box.bottom)) / 2));
-    this.camera.x = clamp(this.camera.x, box.right + mx - viewW / 2, box.left - mx + viewW / 2);
-    this.camera.y = clamp(this.camera.y, box.top + my - viewH / 2, box.bottom - my + viewH / 2);
   }
 
   /**
@@ -250,6 +243,18 @@ function squarePath(ctx, x, y, angle, side) {
   ctx.lineTo(x + cos - sin, y + sin + cos);
   ctx.lineTo(x - cos - sin, y - sin + cos);
   ctx.closePath();
+}
+
+/**
+ * The camera place nearest `at` that shows the whole robot with a margin, however fast it goes
+ * (the smoothing alone would let a fast robot slide off the edge).
+ * @param {{x: number, y: number}} at @param {{left: number, right: number, bottom: number, top: number}} box
+ * @param {number} viewW @param {number} viewH metres visible
+ */
+function inView(at, box, viewW, viewH) {
+  const mx = Math.min(viewW * 0.15, Math.max(0, (viewW - (box.right - box.left)) / 2));
+  const my = Math.min(viewH * 0.15, Math.max(0, (viewH - (box.top - box.bottom)) / 2));
+  return { x: clamp(at.x, box.right + mx - viewW / 2, box.left - mx + viewW / 2), y: clamp(at.y, box.top + my - viewH / 2, box.bottom - my + viewH / 2) };
 }
 
 /** @param {number} v @param {number} lo @param {number} hi */

@@ -173,7 +173,8 @@ export class RunPanel {
       case FromCoordinator.GENERATION: this.onGeneration(msg, settings); break;
       case FromCoordinator.STATE:
         this.paused = msg.paused;
-        this.setStatus(msg.paused ? 'paused' : msg.stepping ? 'stepping' : this.verb());
+        this.setStatus(msg.paused ? (msg.underWay > 0 ? 'pausing (the evaluations under way finish)' : 'paused')
+          : msg.stepping ? 'stepping' : this.verb());
         this.update();
         break;
       case FromCoordinator.RUN_FILE:

@@ -115,6 +115,7 @@ function load(asked) {
 function setRunning(run) {
   running = run;
   restartClocks();
+  if (!run) postFrame(); // held: the page shows the robot as it stopped, not the last frame sent
   self.postMessage({ type: FromWorker.STATE, running });
   schedule();
 }
@@ -145,7 +146,7 @@ function tick() {
     return;
   }
   const now = performance.now();
-  if (params?.until && episode.stepsLeft(params.until) === 0) { postFrame(); setRunning(false); return; }
+  if (params?.until && episode.stepsLeft(params.until) === 0) { setRunning(false); return; }
   if (now - lastFramePosted >= FRAME_INTERVAL_MS) postFrame();
   if (speed > 0 && targetSteps(episode, now) === 0) {
     setTimeout(schedule, FRAME_INTERVAL_MS / 2);

@@ -166,23 +166,26 @@ test('Evolve runs live on the chosen workers, the best walks, Export and Import 
 test('Pause holds, Step runs one generation, Stop ends the run and keeps its run file', async () => {
   await fillRun({ population: '4', seconds: '1', budget: '30000', seed: '2', workers: '2' });
   await byTestId(page, 'evolve').click();
-  await waitForFigure(page, 'run-generation', 'v >= 0');
+  // This run's generation 0 (the figures of the run before stay until it starts).
+  await page.waitForFunction(() => document.body.dataset.run === 'evolving', undefined, { timeout: 60_000 });
+  await waitForFigure(page, 'run-generation', 'v >= 0', 120_000);
   await byTestId(page, 'pause').click();
-  await page.waitForFunction(() => document.body.dataset.run === 'paused', undefined, { timeout: 10_000 });
-  await page.waitForTimeout(1500); // the generation under way finishes; no new one starts
+  // Paused once the evaluations under way are back (they may finish a generation); then no new one starts.
+  await page.waitForFunction(() => document.body.dataset.run === 'paused', undefined, { timeout: 60_000 });
   const held = await figure(page, 'run-generation');
+  assert.ok(Number.isInteger(held) && held >= 0, `a generation was told: ${held}`);
   await page.waitForTimeout(1000);
   assert.equal(await figure(page, 'run-generation'), held, 'no generation while paused');
   assert.equal(await byTestId(page, 'pause').textContent(), 'Resume');
   await byTestId(page, 'step').click();
-  await waitForFigure(page, 'run-generation', `v === ${held + 1}`, 30_000);
-  await page.waitForFunction(() => document.body.dataset.run === 'paused', undefined, { timeout: 10_000 });
+  await waitForFigure(page, 'run-generation', `v === ${held + 1}`, 120_000);
+  await page.waitForFunction(() => document.body.dataset.run === 'paused', undefined, { timeout: 60_000 });
   await page.waitForTimeout(1000);
   assert.equal(await figure(page, 'run-generation'), held + 1, 'one step, one generation');
   await byTestId(page, 'pause').click();
-  await waitForFigure(page, 'run-generation', `v > ${held + 1}`, 30_000);
+  await waitForFigure(page, 'run-generation', `v > ${held + 1}`, 120_000);
   await byTestId(page, 'stop').click();
-  await page.waitForFunction(() => document.body.dataset.run === 'stopped', undefined, { timeout: 10_000 });
+  await page.waitForFunction(() => document.body.dataset.run === 'stopped', undefined, { timeout: 60_000 });
   assert.equal(await byTestId(page, 'export').isEnabled(), true, 'the stopped run can be exported');
   assert.equal(await byTestId(page, 'evolve').isEnabled(), true);
   assert.deepEqual(problems, []);

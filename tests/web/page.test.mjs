@@ -140,11 +140,10 @@ test('clicking a voxel of the walking robot removes it where it stands, in its p
   await waitForFigure(page, 'robot-x', `Math.abs(v - ${start}) > 4`, 60_000);
   await page.locator('#speed').selectOption('1');
   await page.locator('#sim-hold').click();
-  await page.waitForFunction(() => document.body.dataset.running === 'false');
-  await page.waitForTimeout(300);
-  const before = await figure(page, 'robot-x');
+  await page.waitForFunction(() => document.body.dataset.running === 'false', undefined, { timeout: 30_000 });
   // Click once the camera has caught up, so that the click hits the voxel it aims at.
   const boxBefore = await settledRobotBox();
+  const before = await figure(page, 'robot-x');
   const centre = { x: (boxBefore.left + boxBefore.right) / 2, y: (boxBefore.top + boxBefore.bottom) / 2 };
   await byTestId(page, 'viewer').click({ position: centre });
   await waitForText(page, 'status', /^9 voxels/);
@@ -168,16 +167,15 @@ test('clicking next to the robot adds a voxel; an edit that would split it is re
   await page.locator('#rows').press('Enter');
   await waitForText(page, 'status', /^3 voxels/);
   await page.locator('#sim-hold').click();
-  await page.waitForFunction(() => document.body.dataset.running === 'false');
-  await page.waitForTimeout(300);
-  const box = await robotBox();
+  await page.waitForFunction(() => document.body.dataset.running === 'false', undefined, { timeout: 30_000 });
+  const box = await settledRobotBox();
   const cell = (box.right - box.left) / 3;
   await byTestId(page, 'viewer').click({ position: { x: box.right + 0.45 * cell, y: (box.top + box.bottom) / 2 } });
   await waitForText(page, 'status', /^4 voxels/);
   assert.equal(await page.locator('#rows').inputValue(), '1111', 'a voxel added on the right');
   await page.locator('#undo').click();
   await waitForText(page, 'status', /^3 voxels/);
-  await page.waitForTimeout(300);
+  await settledRobotBox();
   await byTestId(page, 'viewer').click({ position: await robotCentre() });
   await waitForText(page, 'message', /would split the robot into 2 pieces; not done/);
   assert.equal(await page.locator('#rows').inputValue(), '111', 'the robot is unchanged');
@@ -195,16 +193,23 @@ test('clicking next to the robot adds a voxel; an edit that would split it is re
   assert.deepEqual(problems, []);
 });
 
-/** The robot's box once the camera has caught up with the held robot (two equal reads). */
+/**
+ * The robot's box once the view of the held robot is settled: two reads in a row, each drawn
+ * after the camera reached where it heads (the renderer's data-camera-still; a frame that
+ * arrives between them moves it again, and the reads differ).
+ */
 async function settledRobotBox() {
-  let last = await robotBox();
-  for (let i = 0; i < 50; i++) {
-    await page.waitForTimeout(200);
-    const box = await robotBox();
-    if (JSON.stringify(box) === JSON.stringify(last)) return box;
-    last = box;
+  const deadline = Date.now() + 60_000;
+  let last = '';
+  while (Date.now() < deadline) {
+    const drawn = await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(() => resolve(
+      /** @type {HTMLElement} */ (document.querySelector('[data-testid="viewer"]')).dataset.cameraStill === 'true')))));
+    const box = JSON.stringify(await robotBox());
+    if (drawn && box === last) return JSON.parse(box);
+    last = drawn ? box : '';
+    await page.waitForTimeout(100);
   }
-  return last;
+  throw new Error(`the view of the held robot did not settle in 60 s: ${last}`);
 }
 
 /** The box around the robot's coloured pixels on the viewer (CSS px). */
