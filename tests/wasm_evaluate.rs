@@ -56,12 +56,15 @@ fn a_pretrained_genome_gives_the_cores_outcome_bit_for_bit() {
     }
 }
 
+/// Shape, controller, terrain, genome, seconds, noise, and a word the error must say.
+type BadCase<'a> = (&'a str, &'a str, &'a str, &'a [f32], f64, f64, &'a str);
+
 #[wasm_bindgen_test]
 fn bad_input_is_a_js_error_that_says_what_is_wrong() {
     let best = RunFile::from_json(ATTENTION_RUN).expect("valid").best;
     let mut nan = best.genome.clone();
     nan[3] = f32::NAN;
-    let cases: [(&str, &str, &str, &[f32], f64, f64, &str); 6] = [
+    let cases: [BadCase; 6] = [
         (
             "biped-4x3",
             "attention",

@@ -44,7 +44,7 @@ impl Episode {
 }
 
 /// The four numbers a, b, c, d of an attention genome (its first 32 genes) that fix every
-/// entry of its matrices: A[r][c] = tanh(a s_r s_c + b s_r + c s_c + d), s_r the row's
+/// entry of its matrices: `A[r][c] = tanh(a s_r s_c + b s_r + c s_c + d)`, s_r the row's
 /// reading and s_c the column's. Throws on a genome shorter than the attention block.
 #[wasm_bindgen(js_name = attentionTerms)]
 pub fn attention_terms(genome: &[f32]) -> Result<Vec<f32>, JsError> {

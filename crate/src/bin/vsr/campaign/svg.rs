@@ -93,6 +93,17 @@ fn chart<'a, 'b>(
         .map_err(plot_error)
 }
 
+/// The chart's legend at `position`, on a light box that lets the grid show through.
+fn legend<'b: 'a, 'a>(chart: &mut Chart<'a, 'b>, position: SeriesLabelPosition) -> Result<()> {
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .position(position)
+        .draw()
+        .map_err(plot_error)
+}
+
 fn lines(root: &Area, figure: &Figure, bands: &[Band]) -> Result<()> {
     let xs = range(bands.iter().flat_map(|b| b.x.iter().copied()));
     let ys = range(
@@ -128,13 +139,7 @@ fn lines(root: &Area, figure: &Figure, bands: &[Band]) -> Result<()> {
                 PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
             });
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()
-        .map_err(plot_error)
+    legend(&mut chart, SeriesLabelPosition::UpperRight)
 }
 
 /// Box plots: box from q1 to q3, median line, whiskers to the smallest and largest value
@@ -240,11 +245,5 @@ fn versus(root: &Area, figure: &Figure, series: &[Points]) -> Result<()> {
             .label(s.label.clone())
             .legend(move |(x, y)| Circle::new((x + 10, y), 5, style));
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperLeft)
-        .draw()
-        .map_err(plot_error)
+    legend(&mut chart, SeriesLabelPosition::UpperLeft)
 }
