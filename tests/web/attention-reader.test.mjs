@@ -3,7 +3,8 @@
  * Browser test of two lessons of the paper in the page (node --test): reading attention
  * (a click or tap on a voxel's map opens its matrix enlarged, rows named by query and
  * columns by key in the controller's sensor order, live values in [-1, 1], the value under
- * the pointer spelled out) and freezing it (paper Fig. 6, live: the pretrained attention
+ * the pointer spelled out; at 1400 px it takes a row of its own under the robot and the
+ * maps, with no blank area) and freezing it (paper Fig. 6, live: the pretrained attention
  * biped, frozen while it walks, loses more than two thirds of its speed; released, it is
  * no longer frozen). Saves screenshots/attention-reader-{1400,420}.png.
  */
@@ -56,6 +57,12 @@ test('a click on a voxel\'s map shows its matrix enlarged, named and live; freez
   await page.mouse.click(point.x, point.y);
   await reader.waitFor({ state: 'visible' });
   assert.match(String(await page.locator('#attention-reader-title').textContent()), /column 4, row 3/);
+  // Laid out without a blank area: a row of its own right under the robot and the maps, as wide as both.
+  const [scene, maps, opened] = await Promise.all(['#scene', '#attention-panel', '#attention-reader'].map((s) => page.locator(s).boundingBox()));
+  if (!scene || !maps || !opened) throw new Error('the viewer, the maps and the reader are on screen');
+  const gap = opened.y - Math.max(scene.y + scene.height, maps.y + maps.height);
+  assert.ok(gap >= 0 && gap < 20, `the reader starts ${gap} px under the robot and the maps`);
+  assert.ok(Math.abs(opened.x - scene.x) < 2 && Math.abs(opened.x + opened.width - (maps.x + maps.width)) < 2, `as wide as both: ${JSON.stringify([scene, maps, opened])}`);
   const first = await readMatrix(page);
   assert.deepEqual(first.columns, NAMES);
   assert.deepEqual(first.rows, NAMES);
