@@ -9,9 +9,7 @@ import { checkTrainingTerrain, freshSeed } from './core.js';
 import { messageOf } from './kit.js';
 import { planWords } from './run-plan.js';
 import { MAX_EVALUATORS } from './protocol.js';
-
-/** The settings the page stores and shares (the workers are this computer's, never shared). */
-const SHARED = ['population', 'seconds', 'budget', 'seed', 'terrain'];
+import { RUN_KEYS } from './share.js';
 
 export class RunSettings {
   /**
@@ -61,7 +59,7 @@ export class RunSettings {
 
   /** The settings in the form as the page stores and shares them. @returns {Record<string, string>} */
   values() {
-    return Object.fromEntries(SHARED.map((k) => [k, this.inputs[k].value]));
+    return Object.fromEntries(RUN_KEYS.map((k) => [k, this.inputs[k].value]));
   }
 
   /** @param {Partial<Record<string, string>>} values settings to put in the form */

@@ -20,7 +20,8 @@ import { messageOf } from './kit.js';
  *   the episode length it was trained on, over which the viewer measures it (null: not known)
  */
 
-const RUN_KEYS = ['population', 'seconds', 'budget', 'seed', 'terrain'];
+/** The run settings a state carries (the workers are this computer's, never shared). */
+export const RUN_KEYS = Object.freeze(['population', 'seconds', 'budget', 'seed', 'terrain']);
 
 /** @param {PageState} state @returns {string} URL-hash parameters (without '#') */
 export function encodeState(state) {
