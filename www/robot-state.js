@@ -2,7 +2,8 @@
 /**
  * The robot's state as the page keeps it across reloads and shares it as a link (share.js
  * writes and reads it as text): the drawing, the chosen family, the viewer's terrain, the run
- * settings and the brain that fits the drawing (with the episode length it was trained on);
+ * settings and the brain that fits the drawing (with the episode length it was trained on, its
+ * training figure and whether it is a one-shot transplant: the speed note's words);
  * and showing such a state on the robot.
  */
 import { describeRun } from './core.js';
@@ -15,7 +16,8 @@ export function pageState(robot) {
   return {
     rows: drawing.rows(), controller: robot.controllerSelect.value, terrain: viewer.terrain.value, run: runs.values(),
     brain: brain && brain.rows === drawing.rows()
-      ? { controller: brain.controller, genome: brain.genome, label: brain.label, module: brain.module, seconds: brain.seconds ?? null } : null,
+      ? { controller: brain.controller, genome: brain.genome, label: brain.label, module: brain.module, seconds: brain.seconds ?? null,
+        trained: brain.trained ?? null, oneShot: brain.oneShot ?? false } : null,
   };
 }
 

@@ -3,7 +3,9 @@
  * The page's state as text: for a link (`#shape=...&controller=...&genome=...`) and for the
  * browser's storage. The state is the drawing, the chosen controller, the viewer's terrain,
  * the run settings, and the genome that drives the robot (base64 of its float32 values,
- * little-endian, so every bit survives) with where it came from. Reading checks everything
+ * little-endian, so every bit survives) with where it came from, the episode length it was
+ * trained on, its training figure and whether it is a one-shot transplant (so that the speed
+ * note says after a reload what it said before). Reading checks everything
  * with the core and returns a message instead of a state when anything is wrong.
  */
 import { checkGenome, checkShape, checkTerrain, checkTrainingTerrain } from './core.js';
@@ -15,9 +17,18 @@ import { messageOf } from './kit.js';
  * @property {string} controller   the family chosen for Evolve
  * @property {string} terrain      the viewer's terrain
  * @property {Record<string, string>} run  run settings: population, seconds, budget, seed, terrain
- * @property {{controller: string, genome: Float32Array, label: string, module: string | null, seconds: number | null} | null} brain
- *   what drives the robot; module = the pretrained file it came from (for fine-tuning); seconds =
- *   the episode length it was trained on, over which the viewer measures it (null: not known)
+ * @property {KeptBrain | null} brain what drives the robot
+ */
+
+/**
+ * @typedef {object} KeptBrain
+ * @property {string} controller
+ * @property {Float32Array} genome
+ * @property {string} label
+ * @property {string | null} module  the pretrained file it came from (for fine-tuning)
+ * @property {number | null} seconds the episode length it was trained on, over which the viewer measures it (null: not known)
+ * @property {import('./brain.js').Trained | null} trained its training figure (null: none, or not known)
+ * @property {boolean} oneShot       a module transplanted onto this body, not fine-tuned yet
  */
 
 /** The run settings a state carries (the workers are this computer's, never shared). */
@@ -36,6 +47,12 @@ export function encodeState(state) {
     p.set('label', state.brain.label);
     if (state.brain.module) p.set('module', state.brain.module);
     if (state.brain.seconds !== null) p.set('brain-seconds', String(state.brain.seconds));
+    const trained = state.brain.trained;
+    if (trained && Number.isFinite(trained.speed)) {
+      p.set('brain-speed', String(trained.speed));
+      p.set('brain-terrain', trained.terrain);
+    }
+    if (state.brain.oneShot) p.set('one-shot', '1');
   }
   return p.toString();
 }
@@ -87,13 +104,35 @@ export async function decodeState(text, controllers, grid, draft = false) {
       const seconds = p.get('brain-seconds'); // links made before it was kept have none
       const secondsProblem = seconds === null ? '' : settingProblem('seconds', seconds);
       if (secondsProblem) return { error: `its brain's ${secondsProblem}` };
+      const notes = await trainingNotes(p);
+      if ('error' in notes) return { error: `its brain's ${notes.error}` };
       brain = { controller: kind, genome, label: p.get('label') ?? `${kind} from a link`,
-        module: module && /^pretrained\/[\w.-]+\.json$/.test(module) ? module : null, seconds: seconds === null ? null : Number(seconds) };
+        module: module && /^pretrained\/[\w.-]+\.json$/.test(module) ? module : null, seconds: seconds === null ? null : Number(seconds),
+        ...notes };
     }
     return { state: { rows, controller, terrain: view, run, brain } };
   } catch (error) {
     return { error: messageOf(error) };
   }
+}
+
+/**
+ * The brain's training figure (speed and terrain, both or neither) and one-shot flag, checked;
+ * links made before they were kept have none (no figure, not one-shot).
+ * @param {URLSearchParams} p
+ * @returns {Promise<{trained: import('./brain.js').Trained | null, oneShot: boolean} | {error: string}>}
+ */
+async function trainingNotes(p) {
+  const speed = p.get('brain-speed');
+  const terrain = p.get('brain-terrain');
+  const oneShot = p.get('one-shot');
+  if (oneShot !== null && oneShot !== '1') return { error: `one-shot flag "${oneShot.slice(0, 20)}" is not 1` };
+  if ((speed === null) !== (terrain === null)) return { error: 'training speed and training terrain do not come together (one is missing)' };
+  if (speed === null || terrain === null) return { trained: null, oneShot: oneShot === '1' };
+  if (speed.trim() === '' || !Number.isFinite(Number(speed))) return { error: `training speed "${speed.slice(0, 20)}" is not a number` };
+  const problem = await checkTrainingTerrain(terrain);
+  if (problem) return { error: `training terrain: ${problem}` };
+  return { trained: { speed: Number(speed), terrain }, oneShot: oneShot === '1' };
 }
 
 /**

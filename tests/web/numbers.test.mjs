@@ -9,8 +9,11 @@
  * robot shows its one-shot speed at once, says what to do next, and the viewer's own measure
  * over the episode agrees with it. A budget says what it becomes (2020 evaluations). A
  * pretrained brain reloaded from the kept state or opened from its link (an older link
- * without its seconds too) is still measured over its own 30-s episode when the form says 12.
- * Saves screenshots/numbers.png.
+ * without its seconds too) is still measured over its own 30-s episode when the form says 12,
+ * and its speed note says the same (its training figure) as before. A transplant reloaded or
+ * opened from its link still says it walks one-shot and why to fine-tune; an older link
+ * without that flag shows its speed only; a bad flag or training figure is refused.
+ * Saves screenshots/numbers.png and screenshots/one-shot-reloaded.png.
  */
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
@@ -31,6 +34,19 @@ after(async () => { await env?.close(); });
 async function episodeSpeed(page) {
   await page.waitForFunction(() => document.getElementById('robot-speed')?.dataset.ended === 'true', undefined, { timeout: 120_000 });
   return figure(page, 'robot-speed');
+}
+
+/** The speed note once measured. @param {import('playwright-core').Page} page */
+async function speedNote(page) {
+  await page.waitForFunction(() => Number.isFinite(Number(document.getElementById('speed-note')?.dataset.value)), undefined, { timeout: 60_000 });
+  return String(await byTestId(page, 'speed-note').textContent());
+}
+
+/** The link the page shares now. @param {import('playwright-core').Page} page */
+async function shareLink(page) {
+  await byTestId(page, 'share').click();
+  await page.waitForFunction(() => (document.getElementById('share-link')?.dataset.value ?? '').includes('#'));
+  return new URL(String(await page.locator('#share-link').getAttribute('data-value')));
 }
 
 /** A new page walking the pretrained biped module on its own body, on TERRAIN. */
@@ -69,6 +85,8 @@ test('a pretrained brain kept across a reload, or shared as a link, is measured 
   const { page, problems, context } = await openOwnBody();
   const seconds = JSON.parse(await readFile(path.join(ROOT, ATTENTION), 'utf8')).config.seconds;
   assert.equal(seconds, 30);
+  const before = await speedNote(page);
+  assert.match(before, /In training: -?\d+\.\d\d m\/s \(its latest evaluation, on a hilly-1-10 terrain drawn fresh/);
   await page.locator('#run-seconds').fill('12'); // the form's episodes for the next run (10 at first)
   await page.locator('#run-seconds').press('Enter');
   await page.waitForFunction(() => /(^|&)seconds=12&.*genome=/.test(localStorage.getItem('vsr-playground/state/v1') ?? ''), undefined, { timeout: 20_000 });
@@ -78,8 +96,7 @@ test('a pretrained brain kept across a reload, or shared as a link, is measured 
   assert.equal(await page.locator('#run-seconds').inputValue(), '12', 'the form kept its 12 s');
   const cli = JSON.parse(execFileSync(BIN, ['evaluate', '--genome', path.join(ROOT, ATTENTION), '--terrain', TERRAIN,
     '--seconds', String(seconds)], { encoding: 'utf8' }));
-  await page.waitForFunction(() => Number.isFinite(Number(document.getElementById('speed-note')?.dataset.value)), undefined, { timeout: 60_000 });
-  assert.match(String(await byTestId(page, 'speed-note').textContent()), /over a 30-s episode/);
+  assert.equal(await speedNote(page), before, 'the same speed note (its training figure) after the reload');
   const atOnce = await figure(page, 'speed-note');
   assert.ok(Math.abs(atOnce - cli.velocity) <= 1e-9, `measured at once after the reload ${atOnce} m/s, vsr evaluate ${cli.velocity} m/s`);
   await page.locator('#speed').selectOption('0');
@@ -88,24 +105,31 @@ test('a pretrained brain kept across a reload, or shared as a link, is measured 
   assert.ok(Math.abs(viewed - cli.velocity) <= 1e-9, `viewer after the reload ${viewed} m/s, vsr evaluate ${cli.velocity} m/s`);
 
   // Its link carries the seconds; a link made before they were kept takes the module's; a bad value is refused.
-  await byTestId(page, 'share').click();
-  await page.waitForFunction(() => (document.getElementById('share-link')?.dataset.value ?? '').includes('#'));
-  const link = new URL(String(await page.locator('#share-link').getAttribute('data-value')));
+  const link = await shareLink(page);
   assert.equal(new URLSearchParams(link.hash.slice(1)).get('brain-seconds'), '30');
   /** @param {(p: URLSearchParams) => void} change @returns {string} the link changed */
   const variant = (change) => { const p = new URLSearchParams(link.hash.slice(1)); change(p); return `${env.url}#${p}`; };
-  for (const [what, url] of [['its link', link.href], ['an older link', variant((p) => p.delete('brain-seconds'))]]) {
+  for (const [what, url] of [['its link', link.href], ['an older link', variant((p) => ['brain-seconds', 'brain-speed', 'brain-terrain'].forEach((k) => p.delete(k)))]]) {
     const opened = await openPage(env.browser, url);
     await waitForText(opened.page, 'status', /^10 voxels, attention$/);
     await waitForText(opened.page, 'robot-speed', new RegExp(`\\b30-s episode on ${TERRAIN}`), 30_000);
-    await opened.page.waitForFunction(() => Number.isFinite(Number(document.getElementById('speed-note')?.dataset.value)), undefined, { timeout: 60_000 });
+    const note = await speedNote(opened.page);
+    if (what === 'its link') assert.equal(note, before, 'its link: the same speed note');
+    else assert.doesNotMatch(note, /In training/, 'an older link: no training figure (not kept then)');
     assert.ok(Math.abs(await figure(opened.page, 'speed-note') - cli.velocity) <= 1e-9, `${what}: measured over its 30 s`);
     assert.deepEqual(opened.problems, [], what);
     await opened.context.close();
   }
-  const bad = await openPage(env.browser, variant((p) => p.set('brain-seconds', '0')));
-  await waitForText(bad.page, 'message', /could not be opened: its brain's episode seconds "0" are not in \(0, 3600\]/);
-  await bad.context.close();
+  for (const [change, pattern] of /** @type {[(p: URLSearchParams) => void, RegExp][]} */ ([
+    [(p) => p.set('brain-seconds', '0'), /its brain's episode seconds "0" are not in \(0, 3600\]/],
+    [(p) => p.set('brain-speed', 'fast'), /its brain's training speed "fast" is not a number/],
+    [(p) => p.set('brain-terrain', 'moon'), /its brain's training terrain: .*neither a terrain family/],
+    [(p) => p.delete('brain-terrain'), /its brain's training speed and training terrain do not come together/],
+  ])) {
+    const bad = await openPage(env.browser, variant(change));
+    await waitForText(bad.page, 'message', new RegExp(`could not be opened: ${pattern.source}`));
+    await bad.context.close();
+  }
   assert.deepEqual(problems, []);
   await context.close();
 });
@@ -125,6 +149,43 @@ test('a transplant shows its one-shot speed at once and says to fine-tune; a bud
   assert.equal(viewed, oneShot, 'the viewer measures over the episode what was measured at once');
   assert.match(String(await page.locator('#run-plan').textContent()), /budget of 2000 evaluations.*50 generations.*takes 2020/);
   await screenshot(page, 'numbers.png');
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('a transplant reloaded, or opened from its link, still says it walks one-shot and why to fine-tune', async () => {
+  const { page, problems, context } = await openPage(env.browser, env.url);
+  await page.locator('#terrain').fill(TERRAIN);
+  await page.locator('#terrain').press('Enter');
+  await page.locator('#clear').click();
+  await clickCells(page, [[0, 0], [1, 0], [2, 0], [3, 0], [4, 0]]); // a 5-voxel worm
+  await byTestId(page, 'pretrained').selectOption(ATTENTION);
+  await byTestId(page, 'load-pretrained').click();
+  await waitForText(page, 'status', /^5 voxels, attention$/);
+  const before = await speedNote(page);
+  assert.match(before, /over a 30-s episode on hilly-1-10-7\. That is its one-shot speed.*press Fine-tune/);
+  await page.waitForFunction(() => /one-shot=1/.test(localStorage.getItem('vsr-playground/state/v1') ?? ''), undefined, { timeout: 20_000 });
+  await page.reload();
+  await waitForText(page, 'status', /^5 voxels, attention$/);
+  assert.equal(await speedNote(page), before, 'the same one-shot note after the reload');
+  await screenshot(page, 'one-shot-reloaded.png');
+
+  const link = await shareLink(page);
+  assert.equal(new URLSearchParams(link.hash.slice(1)).get('one-shot'), '1');
+  /** @param {(p: URLSearchParams) => void} change @returns {string} the link changed */
+  const variant = (change) => { const p = new URLSearchParams(link.hash.slice(1)); change(p); return `${env.url}#${p}`; };
+  const opened = await openPage(env.browser, link.href);
+  await waitForText(opened.page, 'status', /^5 voxels, attention$/);
+  assert.equal(await speedNote(opened.page), before, 'its link: the same one-shot note');
+  await opened.context.close();
+  const older = await openPage(env.browser, variant((p) => p.delete('one-shot')));
+  const words = await speedNote(older.page);
+  assert.match(words, /^Speed here: .* over a 30-s episode on hilly-1-10-7\.$/, 'an older link: its speed, no one-shot note (not kept then)');
+  assert.deepEqual([...opened.problems, ...older.problems], []);
+  await older.context.close();
+  const bad = await openPage(env.browser, variant((p) => p.set('one-shot', 'yes')));
+  await waitForText(bad.page, 'message', /could not be opened: its brain's one-shot flag "yes" is not 1/);
+  await bad.context.close();
   assert.deepEqual(problems, []);
   await context.close();
 });
