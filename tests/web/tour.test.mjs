@@ -79,6 +79,10 @@ async function checkSetup(page, n) {
       assert.equal(genome.length, 32 + 4 * voxels + 1, `chapter ${n}: output weights for every voxel of the new body`);
     }
   }
+  if (setup.gait) {
+    assert.equal(await page.locator('#frequency').inputValue(), String(setup.gait.frequency), `chapter ${n}: the gait's f`);
+    assert.equal(await page.locator('#phase').inputValue(), String(setup.gait.phase), `chapter ${n}: the gait's φ`);
+  }
   for (const [key, value] of Object.entries(setup.run ?? {})) {
     assert.equal(await page.locator(`#run-${key}`).inputValue(), value, `chapter ${n}: run setting ${key}`);
   }

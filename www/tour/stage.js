@@ -37,7 +37,7 @@ const WALK_TIMEOUT_MS = 10_000;
 export async function stage(page, chapter) {
   const { setup } = chapter;
   if (page.running()) await page.stopRun();
-  page.setView(setup.terrain, page.defaults.gait);
+  page.setView(setup.terrain, setup.gait ?? page.defaults.gait);
   if (setup.run) page.setRun(setup.run, setup.compare ?? false);
   const brain = setup.brain ? await page.module(setup.brain.module) : null;
   if (setup.rows !== null && setup.brain?.on !== 'own') await page.setBody(setup.rows);
