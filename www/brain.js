@@ -6,7 +6,7 @@
  * operations (asked of the core worker: those functions return promises); none keeps state.
  * The page holds the current brain.
  */
-import { describeRun, remapGenome, runGenome, transplant } from './core.js';
+import { describeRun, ready, remapGenome, runGenome, transplant } from './core.js';
 
 /**
  * @typedef {object} Brain
@@ -39,13 +39,14 @@ import { describeRun, remapGenome, runGenome, transplant } from './core.js';
  * @returns {Promise<Brain>}
  */
 export async function transplanted(module, rows, origin, seed) {
-  const [info, genome] = await Promise.all([describeRun(module.text), transplant(module.text, rows, seed)]);
+  const [info, genome, { presets }] = await Promise.all([describeRun(module.text), transplant(module.text, rows, seed), ready]);
   const own = info.shape === rows;
+  const from = presets.find((p) => p.rows === info.shape)?.name ?? info.shape;
   return {
     controller: info.controller, genome, rows, origin, module: pretrainedKey(module), source: attentionSource(info, module.text),
     seconds: info.seconds, trained: own ? { speed: info.fitness, terrain: info.terrain } : null, oneShot: !own,
     label: own ? `${module.label}, on its own body`
-      : `a module transplanted from ${info.shape}: its attention as evolved there, the rest of its brain new for this body (seed ${seed})`,
+      : `a module transplanted from ${from}: its attention as evolved there, the rest of its brain new for this body, drawn with seed ${seed}`,
   };
 }
 
@@ -84,7 +85,7 @@ export function bestSoFar(genome, fitness, settings, kind, finetuning, source, o
   return {
     controller: kind, genome, rows: settings.shape, origin, module: null, source: finetuning ? source : null,
     seconds: settings.seconds, trained: { speed: fitness, terrain: settings.terrain }, run: true,
-    label: `the best so far while ${finetuning ? 'fine-tuning' : 'evolving'} (${fitness.toFixed(2)} m/s in one evaluation, seed ${settings.seed})`,
+    label: `the best so far while ${finetuning ? 'fine-tuning' : 'evolving'}: ${fitness.toFixed(2)} m/s in one evaluation, seed ${settings.seed}`,
   };
 }
 

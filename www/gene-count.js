@@ -14,8 +14,8 @@ export function showGeneCount(el, check, kind, attentionGenes) {
   const genes = check.params.find(([k]) => k === kind)?.[1] ?? 0;
   const n = check.voxels;
   const detail = kind === 'attention' && n > 0
-    ? `: ${attentionGenes} for the attention block, shared by every voxel, and ${genes - attentionGenes} for the outputs, `
-      + `one set of weights per voxel position (each voxel adds ${SENSOR_NAMES.length}, one per sensor)` : '';
+    ? `: ${attentionGenes} for the attention block, shared by every voxel, ${genes - attentionGenes - 1} for the outputs, `
+      + `one set of weights per voxel position (each voxel adds ${SENSOR_NAMES.length}, one per sensor), and 1 bias shared by every voxel` : '';
   el.textContent = n > 0 ? `${genes} genes${detail}` : '';
   el.title = 'Genes: the numbers evolution changes. Every voxel runs the same small network; '
     + 'what differs between voxels is only the output weights of its position.';

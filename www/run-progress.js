@@ -14,6 +14,9 @@ const STYLE = {
   scratch: { label: 'from scratch (best)', colour: 'rgb(90, 90, 90)', dashed: true },
 };
 
+/** Which run of a fine-tune and its comparison the figures are, shown before them. @type {Record<string, string>} */
+const PHASE = { finetune: 'Fine-tuning:', scratch: 'From scratch, the comparison:' };
+
 /** The figures that start empty with every run. */
 const FIGURES = ['generation', 'evaluations', 'best', 'genBest', 'median'];
 
@@ -24,7 +27,7 @@ export class RunProgress {
     this.out = {
       generation: el('run-generation'), evaluations: el('run-evaluations'), best: el('run-best'),
       genBest: el('run-gen-best'), median: el('run-median'), rate: el('run-rate'),
-      caption: el('run-caption'), progress: el('run-progress'),
+      caption: el('run-caption'), progress: el('run-progress'), phase: el('run-phase'),
     };
     this.chart = new FitnessChart(el('run-chart'));
   }
@@ -41,6 +44,8 @@ export class RunProgress {
    */
   started(planned, mode) {
     if (mode !== 'scratch') this.chart.clear(planned); else this.chart.extend(planned);
+    this.out.phase.textContent = PHASE[mode] ?? '';
+    this.out.phase.hidden = !this.out.phase.textContent;
     show(this.out.evaluations, 0, `0 / ${planned}`);
   }
 

@@ -47,7 +47,7 @@ test('the page\'s main thread loads no wasm: drawing, a transplant and a link ar
   await byTestId(page, 'pretrained').selectOption('pretrained/biped-4x3-attention.json');
   await waitForText(page, 'module-details', /^attention, 73 genes, evolved on 1111-1111-1001/);
   await byTestId(page, 'load-pretrained').click();
-  await waitForText(page, 'driver', /a module transplanted from 1111-1111-1001/);
+  await waitForText(page, 'driver', /a module transplanted from biped-4x3:/);
   await waitForText(page, 'status', /^13 voxels, attention$/);
   await page.locator('#share').click();
   await page.waitForFunction(() => /genome=/.test(/** @type {HTMLInputElement} */ (document.getElementById('share-link')).value));

@@ -161,6 +161,8 @@ test('the study panel shows its figures, and one click walks a run\'s best robot
   await byTestId(page, 'study-figure').selectOption('finetune-biped-large');
   const run = await byTestId(page, 'study-run').inputValue();
   assert.match(run, /^biped-4x3-attention-20000-to-biped-6x4-10000-s\d+$/, 'the fastest fine-tuned run is offered first');
+  const words = await byTestId(page, 'study-run').locator('option:checked').textContent();
+  assert.match(String(words), /^attention on biped-6x4, fine-tuned from biped-4x3-attention, seed \d+: /, 'the run in words, its seed once');
   await byTestId(page, 'study-watch').click();
   const runBest = best(`study/runs/${run}.json`);
   const state = await kept(page, runBest.shape, null, true);

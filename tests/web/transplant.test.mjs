@@ -46,7 +46,7 @@ test('a pretrained attention module loads onto a drawn body and walks at once', 
   await byTestId(page, 'pretrained').selectOption(ATTENTION);
   await byTestId(page, 'load-pretrained').click();
   await waitForText(page, 'status', /^13 voxels, attention$/);
-  await waitForText(page, 'driver', /a module transplanted from 1111-1111-1001: its attention as evolved there, the rest of its brain new for this body/);
+  await waitForText(page, 'driver', /^Driven by: a module transplanted from biped-4x3: its attention as evolved there, the rest of its brain new for this body, drawn with seed \d+ \(attention, 85 genes\)\.$/);
   assert.equal(await byTestId(page, 'finetune').isEnabled(), true);
   const t0 = await figure(page, 'sim-time');
   await waitForFigure(page, 'sim-time', `v >= ${t0 + 3}`, 30_000);

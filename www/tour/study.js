@@ -52,7 +52,9 @@ export function runsOf(figure, runs) {
 
 /** A run in words. @param {StudyRun} r */
 export function describe(r) {
-  const how = r.kind === 'finetune' ? `fine-tuned from ${r.source.replace(/-\d+-s(\d+)$/, ', seed $1')}` : `from scratch, ${r.evals} evaluations`;
+  const [, source = r.source, sourceSeed = String(r.seed)] = r.source.match(/^(.*)-\d+-s(\d+)$/) ?? [];
+  const how = r.kind === 'finetune' ? `fine-tuned from ${source}${sourceSeed === String(r.seed) ? '' : ` (its seed ${sourceSeed})`}`
+    : `from scratch, ${r.evals} evaluations`;
   const speed = Number.isFinite(r.unseen) ? `: ${unseenWords(r.unseen)}` : '';
   return `${r.controller} on ${r.shape}, ${how}, seed ${r.seed}${speed}`;
 }
