@@ -12,12 +12,13 @@
  * @param {import('./drawing.js').Drawing} drawing
  * @param {import('./editor.js').Editor} editor
  * @param {{changed: () => void, running: () => boolean, message: (text: string) => void}} hooks
+ *   message: about the rows typed ('' takes it away)
  */
 export function wireDrawControls(doc, defaults, drawing, editor, hooks) {
   const el = (/** @type {string} */ id) => /** @type {any} */ (doc.getElementById(id));
   const presetSelect = /** @type {HTMLSelectElement} */ (el('preset'));
   const rowsInput = /** @type {HTMLInputElement} */ (el('rows'));
-  const redraw = () => { editor.draw(); hooks.changed(); };
+  const redraw = () => { hooks.message(''); editor.draw(); hooks.changed(); }; // the rows are valid again
   for (const p of defaults.presets) presetSelect.append(new Option(p.name, p.rows));
   presetSelect.addEventListener('change', () => {
     if (!presetSelect.value) return;

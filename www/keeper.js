@@ -4,7 +4,8 @@
  * change (drafts too), put in a link by Share (address bar and clipboard), and read back at
  * start-up (a link first, else what was kept) or when a link is pasted into this tab. Every
  * state read is checked in full (share.js) before anything changes; a refused link says why
- * and what is shown instead, until the person closes the message.
+ * and what is shown instead, and a link whose brain is damaged opens without it and says so,
+ * until the person closes the message.
  *
  * The latest state wins: a link in the address bar is read once. Once opened (or refused) it
  * leaves the address bar, and Share's link leaves it at the next change, so that a reload
@@ -72,6 +73,7 @@ export class Keeper {
     if (!shown) await fallback();
     if (fromLink) dropLink(); // read once: from now on the kept state is the page's
     if (refused) this.refuse(refused, shown ? 'the robot you had here before' : `the example robot ${this.defaults.presets[0].name}`);
+    else if (fromLink && 'damaged' in fromLink) this.brainDamaged(fromLink.damaged ?? '');
   }
 
   /** A link pasted into this tab (only the part after '#' changed): open it, unless a run goes on. */
@@ -82,6 +84,7 @@ export class Keeper {
     const problem = 'error' in opened ? opened.error : await this.hooks.apply(opened.state);
     dropLink();
     if (problem) this.refuse(problem, 'the robot you had before');
+    else if ('damaged' in opened) this.brainDamaged(opened.damaged ?? '');
   }
 
   /** The Share button: the state in the address bar and on the clipboard. */
@@ -104,6 +107,12 @@ export class Keeper {
   refuse(why, instead) {
     this.hooks.say(`This link could not be opened: ${plain(why)}. It may have been cut short or changed on the way; `
       + `ask for it again. Shown instead: ${instead}, ${this.hooks.shown()}.`);
+  }
+
+  /** A link opened without its brain, which was damaged. @param {string} why */
+  brainDamaged(why) {
+    this.hooks.say(`The brain in this link is damaged (${why}): the robot and settings are opened without it, `
+      + `${this.hooks.shown()}. Ask for the link again to get the brain.`);
   }
 }
 

@@ -27,13 +27,17 @@ import { Viewer } from './viewer.js';
 import { editWalking } from './walking-edit.js';
 
 const el = (/** @type {string} */ id) => /** @type {any} */ (document.getElementById(id));
-const messages = new MessageBox(el('message'));
+const messages = new MessageBox(el('message'), el('shape-message'));
 const defaults = await ready.catch((error) => {
   messages.show(`The simulator could not load: ${messageOf(error)}`);
   throw error;
 });
-/** @param {string} text an error for the person (it stays until closed) */
-const showMessage = (text) => messages.show(text, 'error');
+/**
+ * An error for the person: it stays until closed, or, with a source (the input it is about),
+ * until that source says something else ('' once the input is valid).
+ * @param {string} text @param {string} [source]
+ */
+const showMessage = (text, source) => messages.show(text, 'error', source);
 const drawing = new Drawing(defaults.grid.width, defaults.grid.height);
 const controllerSelect = /** @type {HTMLSelectElement} */ (el('controller'));
 
@@ -88,7 +92,7 @@ function wire() {
   wireDrawControls(document, defaults, drawing, editor, {
     changed: () => robot.bodyChanged(),
     running: () => robot.running,
-    message: showMessage,
+    message: (text) => showMessage(text, 'rows'),
   });
   for (const c of defaults.controllers) controllerSelect.append(new Option(c));
   controllerSelect.addEventListener('change', () => robot.controllerChosen());

@@ -1,13 +1,16 @@
 // @ts-check
 /**
- * The one place where the page speaks to the person: a list fixed at the bottom of the screen
- * (so that it never moves what is being drawn on), each message with its own close button.
- * - An error (bad input, a dying worker, a failed request, a link that could not be opened)
- *   stays until the person closes it: no timer, no later success and no other message takes
- *   it away. The same error said again is shown once, as the newest.
+ * The one place where the page speaks to the person: a list in the page's flow under its
+ * header (so that it covers no control), each message with its own close button.
+ * - An error stays until the person closes it: no timer takes it away. The same error said
+ *   again is shown once, as the newest.
+ * - An error about an input has a source ('rows', 'run-settings', 'import', ...): a newer
+ *   message from that source replaces it, and it goes once that input is valid (drop). Errors
+ *   without a source (a crashed worker, a damaged link) only go by their close button.
  * - A note ("Link copied") goes away by itself after a while; a newer note replaces it.
  * - The validation message (the drawing is not a robot yet) stays while that is so: the
- *   drawing's check replaces or clears it.
+ *   drawing's check replaces or clears it. It is shown under the drawing grid, so that its
+ *   coming and going never moves the grid being drawn on.
  * The core's category prefixes ("invalid input: ") are dropped: the sentence after them says
  * what is wrong.
  */
@@ -18,20 +21,25 @@ const NOTE_MS = 6_000;
 /** @typedef {'error' | 'note' | 'validation'} Kind */
 
 export class MessageBox {
-  /** @param {HTMLElement} box the list of messages, hidden while empty */
-  constructor(box) {
+  /**
+   * @param {HTMLElement} box the list of messages, hidden while empty (its room is kept)
+   * @param {HTMLElement} [drawingBox] where the validation message goes (else in `box`)
+   */
+  constructor(box, drawingBox = box) {
     this.box = box;
+    this.drawingBox = drawingBox;
     /** @type {Map<HTMLElement, number>} the notes' timers */
     this.timers = new Map();
   }
 
   /**
-   * Shows `words` (nothing when empty) of a kind.
-   * @param {string} words @param {Kind} [kind]
+   * Shows `words` (nothing when empty) of a kind, in place of the message of its source.
+   * @param {string} words @param {Kind} [kind] @param {string} [source] the input it is about
    */
-  show(words, kind = 'error') {
+  show(words, kind = 'error', source) {
     const sentence = plain(words);
     if (kind !== 'error') this.clear(kind); // one note, one validation message at a time
+    if (source) this.drop(source);
     if (sentence === '') return;
     for (const old of this.entries()) {
       if (old.dataset.kind === kind && old.firstChild?.textContent === sentence) this.remove(old);
@@ -39,6 +47,7 @@ export class MessageBox {
     const entry = document.createElement('p');
     entry.className = 'message';
     entry.dataset.kind = kind;
+    if (source) entry.dataset.source = source;
     entry.setAttribute('role', kind === 'note' ? 'status' : 'alert');
     const text = document.createElement('span');
     text.textContent = sentence;
@@ -51,8 +60,11 @@ export class MessageBox {
     close.textContent = '\u00d7';
     close.addEventListener('click', () => this.remove(entry));
     entry.append(text, close);
-    this.box.append(entry);
-    this.box.hidden = false;
+    const box = kind === 'validation' ? this.drawingBox : this.box;
+    box.append(entry);
+    box.hidden = false;
+    // An error said while the person is further down the page: brought into view to be read.
+    if (kind === 'error' && box.getBoundingClientRect().bottom < 0) box.scrollIntoView({ block: 'nearest' });
     if (kind === 'note') this.timers.set(entry, window.setTimeout(() => this.remove(entry), NOTE_MS));
   }
 
@@ -61,17 +73,24 @@ export class MessageBox {
     for (const entry of this.entries()) if (entry.dataset.kind === kind) this.remove(entry);
   }
 
+  /** Takes away the message of `source` (its input is valid now). @param {string} source */
+  drop(source) {
+    for (const entry of this.entries()) if (entry.dataset.source === source) this.remove(entry);
+  }
+
   /** @returns {HTMLElement[]} the messages shown, oldest first */
   entries() {
-    return /** @type {HTMLElement[]} */ ([...this.box.children]);
+    const boxes = this.drawingBox === this.box ? [this.box] : [this.box, this.drawingBox];
+    return /** @type {HTMLElement[]} */ (boxes.flatMap((b) => [...b.children]));
   }
 
   /** @param {HTMLElement} entry */
   remove(entry) {
     window.clearTimeout(this.timers.get(entry));
     this.timers.delete(entry);
+    const box = entry.parentElement;
     entry.remove();
-    this.box.hidden = this.box.children.length === 0;
+    if (box) box.hidden = box.children.length === 0;
   }
 }
 

@@ -18,7 +18,7 @@ const PRETRAINED_DIR = 'pretrained/';
  * @typedef {object} ModuleHooks
  * @property {(module: Module) => void} loadOnto  put the module on the drawn robot
  * @property {(module: Module) => void} openOwn   replace the drawing by the module's body
- * @property {(text: string) => void} message
+ * @property {(text: string, source?: string) => void} message  shows an error (about `source`: '' takes it away)
  */
 
 export class ModuleList {
@@ -152,8 +152,9 @@ export class ModuleList {
     try {
       const text = await file.text();
       await this.add({ key: `disk:${file.name}`, label: `${file.name} (imported)`, text });
+      this.hooks.message('', 'import'); // an earlier file's message goes
     } catch (error) {
-      this.hooks.message(`${file.name} is not a run file this page can read: ${messageOf(error)}`);
+      this.hooks.message(`${file.name} is not a run file this page can read: ${messageOf(error)}`, 'import');
     }
   }
 }

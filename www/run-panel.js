@@ -26,7 +26,7 @@ import { RunSettings } from './run-settings.js';
  *   settings: import('./protocol.js').EvolveSettings, kind: string, mode: string) => void} [generation]
  *   each generation's best evaluation (kept to race generations)
  * @property {(running: boolean) => void} running        a run started or ended
- * @property {(text: string) => void} message            shows an error
+ * @property {(text: string, source?: string) => void} message  shows an error (about `source`: '' takes it away)
  * @property {(text: string) => void} note               shows a note
  */
 
@@ -49,7 +49,7 @@ export class RunPanel {
       if (!found) throw new Error(`the page has no #${id}`);
       return /** @type {any} */ (found);
     };
-    this.form = new RunSettings(el, defaults, (text) => hooks.message(text));
+    this.form = new RunSettings(el, defaults, (text) => hooks.message(text, 'run-settings'), () => this.update());
     this.inputs = this.form.inputs;
     /** @type {Record<string, HTMLButtonElement>} */
     this.buttons = {
@@ -129,7 +129,7 @@ export class RunPanel {
   async start(mode) {
     if (this.coordinator || this.starting) return;
     const source = mode === 'finetune' ? this.hooks.source() : null;
-    if (mode === 'finetune' && !source) { this.refuse('load an attention module onto your robot first (Load onto my robot)'); return; }
+    if (mode === 'finetune' && !source) { this.refuse('load an attention module onto your robot first (Load onto my robot)', 'run-start'); return; }
     this.starting = true;
     this.update();
     let read;
@@ -192,9 +192,9 @@ export class RunPanel {
     return { evolve: 'evolving', finetune: 'fine-tuning', scratch: 'from scratch: evolving' }[this.mode] ?? 'running';
   }
 
-  /** A run that cannot start: the message, and the status says so. @param {string} why */
-  refuse(why) {
-    this.hooks.message(why);
+  /** A run that cannot start: the message, and the status says so. @param {string} why @param {string} [source] */
+  refuse(why, source = 'run-settings') {
+    this.hooks.message(why, source);
     this.setStatus('not started');
   }
 
@@ -263,8 +263,9 @@ export class RunPanel {
     const running = this.coordinator !== null;
     const b = this.buttons;
     const body = this.hooks.body();
-    b.evolve.disabled = running || this.starting || !body.ok;
-    b.finetune.disabled = running || this.starting || !body.ok || this.hooks.source() === null;
+    const off = running || this.starting || !body.ok || this.form.invalid;
+    b.evolve.disabled = off;
+    b.finetune.disabled = off || this.hooks.source() === null;
     b.finetune.title = b.finetune.disabled && !running && this.hooks.source() === null
       ? 'First load an attention module onto your robot (Transplant a module, Load onto my robot)'
       : 'Train the module on your robot: evolve the rest of its brain for this body while its attention stays as it is';

@@ -3,7 +3,8 @@
  * The run settings form (“Run” under “3 · Give it a brain”): population, episode seconds,
  * budget, seed, training terrain and workers, the quick and paper presets, the fresh-seed
  * dice, and the plan the population and budget make, in words. It reads the form into the
- * settings a run starts with, or says what is wrong with them.
+ * settings a run starts with, or says what is wrong with them: at once, as they are typed, in
+ * the plan line (and Evolve is off until they are fixed; their message goes once they are).
  */
 import { checkTrainingTerrain, freshSeed } from './core.js';
 import { messageOf } from './kit.js';
@@ -15,10 +16,15 @@ export class RunSettings {
   /**
    * @param {(id: string) => any} el the page's element by id
    * @param {import('./core.js').Defaults} defaults
-   * @param {(text: string) => void} message shows an error
+   * @param {(text: string) => void} message shows an error about the settings ('' takes it away)
+   * @param {() => void} changed the settings became valid or invalid
    */
-  constructor(el, defaults, message) {
+  constructor(el, defaults, message, changed) {
     this.defaults = defaults;
+    this.message = message;
+    this.changed = changed;
+    /** The settings in the form are not valid (the plan line says why). */
+    this.invalid = false;
     /** @type {Record<string, HTMLInputElement>} */
     this.inputs = {
       population: el('run-population'), seconds: el('run-seconds'), budget: el('run-budget'),
@@ -29,23 +35,28 @@ export class RunSettings {
     this.plan = /** @type {HTMLElement} */ (el('run-plan'));
     /** Plans asked: only the latest one's words are shown. */
     this.plans = 0;
-    this.preset(defaults.quick);
     this.inputs.seed.value = '1';
     this.inputs.terrain.value = defaults.trainingTerrain;
     this.inputs.workers.value = String(Math.max(1, Math.min(MAX_EVALUATORS, navigator.hardwareConcurrency || 1)));
     this.inputs.workers.max = String(MAX_EVALUATORS);
+    this.preset(defaults.quick); // after every input is filled: the plan checks them all
     this.buttons.quick.addEventListener('click', () => this.preset(defaults.quick));
     this.buttons.paper.addEventListener('click', () => this.preset(defaults.paper));
     this.buttons.dice.addEventListener('click', () => freshSeed().then((seed) => { this.inputs.seed.value = String(seed); },
       (error) => message(`no fresh seed: ${messageOf(error)}`)));
-    for (const input of [this.inputs.population, this.inputs.budget]) input.addEventListener('input', () => this.describePlan());
+    for (const input of Object.values(this.inputs)) input.addEventListener('input', () => this.describePlan());
   }
 
-  /** Says what the population and budget in the form make. */
+  /** Says what the settings in the form make, or what is wrong with them. */
   describePlan() {
     const ticket = ++this.plans;
-    planWords(Number(this.inputs.population.value), Number(this.inputs.budget.value)).then((words) => {
-      if (ticket === this.plans) this.plan.textContent = words?.text ?? '';
+    this.problem().then(async (problem) => {
+      const words = problem ? null : await planWords(Number(this.inputs.population.value), Number(this.inputs.budget.value));
+      if (ticket !== this.plans) return;
+      this.plan.textContent = problem ? `Not valid yet: ${problem}. Evolve is off until it is fixed.` : words?.text ?? '';
+      this.plan.dataset.invalid = String(problem !== '');
+      if (!problem) this.message('');
+      if (this.invalid !== (problem !== '')) { this.invalid = problem !== ''; this.changed(); }
     });
   }
 
@@ -80,16 +91,24 @@ export class RunSettings {
    * @returns {Promise<{settings: import('./protocol.js').EvolveSettings, workers: number} | {error: string}>}
    */
   async read(rows, controller) {
-    const number = (/** @type {string} */ key) => Number(this.inputs[key].value.trim() || NaN);
-    const [population, seconds, budget, seed, workers] = ['population', 'seconds', 'budget', 'seed', 'workers'].map(number);
-    if (!Number.isInteger(population) || population < 1) return { error: `population must be a whole number of at least 1, not "${this.inputs.population.value}"` };
-    if (!(seconds > 0) || !Number.isFinite(seconds)) return { error: `episode seconds must be a positive number, not "${this.inputs.seconds.value}"` };
-    if (!Number.isInteger(budget) || budget < population) return { error: `the budget must be a whole number of evaluations, at least one population (${population}), not "${this.inputs.budget.value}"` };
-    if (!Number.isSafeInteger(seed) || seed < 0) return { error: `the seed must be a whole number from 0 to 2^53 - 1, not "${this.inputs.seed.value}"` };
-    if (!Number.isInteger(workers) || workers < 1 || workers > MAX_EVALUATORS) return { error: `workers must be a whole number from 1 to ${MAX_EVALUATORS}, not "${this.inputs.workers.value}"` };
-    const terrain = this.inputs.terrain.value.trim();
-    const terrainProblem = await checkTrainingTerrain(terrain);
-    if (terrainProblem) return { error: `training terrain: ${terrainProblem}` };
-    return { settings: { shape: rows, controller, seed, seconds, terrain, population, budget }, workers };
+    const problem = await this.problem();
+    if (problem) return { error: problem };
+    const [population, seconds, budget, seed, workers] = ['population', 'seconds', 'budget', 'seed', 'workers'].map((k) => this.number(k));
+    return { settings: { shape: rows, controller, seed, seconds, terrain: this.inputs.terrain.value.trim(), population, budget }, workers };
+  }
+
+  /** @param {string} key @returns {number} the number in that input (NaN: none) */
+  number(key) { return Number(this.inputs[key].value.trim() || NaN); }
+
+  /** '' or what is wrong with the settings in the form. @returns {Promise<string>} */
+  async problem() {
+    const [population, seconds, budget, seed, workers] = ['population', 'seconds', 'budget', 'seed', 'workers'].map((k) => this.number(k));
+    if (!Number.isInteger(population) || population < 1) return `population must be a whole number of at least 1, not "${this.inputs.population.value}"`;
+    if (!(seconds > 0) || !Number.isFinite(seconds)) return `episode seconds must be a positive number, not "${this.inputs.seconds.value}"`;
+    if (!Number.isInteger(budget) || budget < population) return `the budget must be a whole number of evaluations, at least one population (${population}), not "${this.inputs.budget.value}"`;
+    if (!Number.isSafeInteger(seed) || seed < 0) return `the seed must be a whole number from 0 to 2^53 - 1, not "${this.inputs.seed.value}"`;
+    if (!Number.isInteger(workers) || workers < 1 || workers > MAX_EVALUATORS) return `workers must be a whole number from 1 to ${MAX_EVALUATORS}, not "${this.inputs.workers.value}"`;
+    const terrainProblem = await checkTrainingTerrain(this.inputs.terrain.value.trim());
+    return terrainProblem ? `training terrain: ${terrainProblem}` : '';
   }
 }

@@ -6,10 +6,12 @@
  * little-endian, so every bit survives) with where it came from, the episode length it was
  * trained on, its training figure and whether it is a one-shot transplant (so that the speed
  * note says after a reload what it said before). Reading checks everything
- * with the core and returns a message instead of a state when anything is wrong.
+ * with the core and returns a message instead of a state when anything is wrong, but for the
+ * brain: a damaged brain is dropped and the rest kept.
  */
 import { checkGenome, checkShape, checkTerrain, checkTrainingTerrain } from './core.js';
 import { messageOf } from './kit.js';
+import { plain } from './message.js';
 
 /**
  * @typedef {object} PageState
@@ -66,7 +68,8 @@ export function encodeState(state) {
  * @param {string[]} controllers the families the page knows
  * @param {{width: number, height: number}} grid the editor's grid
  * @param {boolean} [draft] accept an unfinished drawing
- * @returns {Promise<{state: PageState} | {error: string}>}
+ * @returns {Promise<{state: PageState, damaged?: string} | {error: string}>} a damaged brain
+ *   (`damaged` says how) is dropped: the rest of the state, all valid, is kept
  */
 export async function decodeState(text, controllers, grid, draft = false) {
   try {
@@ -93,26 +96,36 @@ export async function decodeState(text, controllers, grid, draft = false) {
       if (problem) return { error: problem };
       run[k] = v;
     }
-    let brain = null;
-    const genomeText = check.ok ? p.get('genome') : null;
-    if (genomeText !== null) {
-      const kind = p.get('brain') ?? '';
-      if (!controllers.includes(kind)) return { error: `unknown controller "${kind}" for its genome` };
-      const genome = base64ToGenome(genomeText);
-      await checkGenome(kind, rows, genome);
-      const module = p.get('module');
-      const seconds = p.get('brain-seconds'); // links made before it was kept have none
-      const secondsProblem = seconds === null ? '' : settingProblem('seconds', seconds);
-      if (secondsProblem) return { error: `its brain's ${secondsProblem}` };
-      const notes = await trainingNotes(p);
-      if ('error' in notes) return { error: `its brain's ${notes.error}` };
-      brain = { controller: kind, genome, label: p.get('label') ?? `${kind} from a link`,
-        module: module && /^pretrained\/[\w.-]+\.json$/.test(module) ? module : null, seconds: seconds === null ? null : Number(seconds),
-        ...notes };
-    }
-    return { state: { rows, controller, terrain: view, run, brain } };
+    const read = check.ok && p.get('genome') !== null ? await readBrain(p, rows, controllers) : { brain: null };
+    const state = { rows, controller, terrain: view, run, brain: 'brain' in read ? read.brain : null };
+    return 'error' in read ? { state, damaged: read.error } : { state };
   } catch (error) {
     return { error: messageOf(error) };
+  }
+}
+
+/**
+ * The brain of a state, checked (the core's checks of its genome for the robot `rows`).
+ * @param {URLSearchParams} p @param {string} rows @param {string[]} controllers
+ * @returns {Promise<{brain: KeptBrain} | {error: string}>}
+ */
+async function readBrain(p, rows, controllers) {
+  try {
+    const kind = p.get('brain') ?? '';
+    if (!controllers.includes(kind)) return { error: `unknown controller "${kind.slice(0, 20)}" for its genome` };
+    const genome = base64ToGenome(p.get('genome') ?? '');
+    await checkGenome(kind, rows, genome);
+    const module = p.get('module');
+    const seconds = p.get('brain-seconds'); // links made before it was kept have none
+    const secondsProblem = seconds === null ? '' : settingProblem('seconds', seconds);
+    if (secondsProblem) return { error: `its ${secondsProblem}` };
+    const notes = await trainingNotes(p);
+    if ('error' in notes) return { error: `its ${notes.error}` };
+    return { brain: { controller: kind, genome, label: p.get('label') ?? `${kind} from a link`,
+      module: module && /^pretrained\/[\w.-]+\.json$/.test(module) ? module : null, seconds: seconds === null ? null : Number(seconds),
+      ...notes } };
+  } catch (error) {
+    return { error: plain(messageOf(error)) };
   }
 }
 

@@ -6,7 +6,7 @@
  *    with those settings (needs target/release/vsr; VSR_BIN);
  *  - an evaluation worker that crashes mid-run is replaced, its job re-run, and the run's
  *    result is unchanged;
- *  - bad settings show a readable message and start nothing;
+ *  - bad settings are said at once in the plan line, with Evolve off, and start nothing;
  *  - Evolve runs a tiny budget live on the chosen number of workers (figures change, the chart
  *    is against evaluations, the best walks), Export downloads its run file and Import lists
  *    it back as a module that opens with its own body;
@@ -101,15 +101,14 @@ async function fillRun(values) {
   for (const [key, value] of Object.entries(values)) await page.locator(`#run-${key}`).fill(value);
 }
 
-/** Clicks Evolve and expects `pattern` in the message, with no run started. @param {RegExp} pattern */
+/** Expects `pattern` in the plan line at once, with Evolve off and no run started. @param {RegExp} pattern */
 async function expectRefused(pattern) {
-  await byTestId(page, 'evolve').click();
-  await waitForText(page, 'message', pattern);
-  assert.equal(await byTestId(page, 'evolve').isEnabled(), true);
+  await waitForText(page, 'run-plan', new RegExp(`^Not valid yet: .*${pattern.source}`));
+  assert.equal(await byTestId(page, 'evolve').isDisabled(), true, 'Evolve is off');
   assert.equal(await byTestId(page, 'generation').textContent(), '–', 'no generation was run');
 }
 
-test('bad settings show a readable message and start nothing', async () => {
+test('bad settings are said at once in the plan line, with Evolve off, and start nothing', async () => {
   await fillRun({ population: '6', seconds: '2', budget: '0', terrain: 'flat' });
   await expectRefused(/budget must be a whole number/);
   await fillRun({ budget: '24', seconds: '' });
@@ -118,8 +117,10 @@ test('bad settings show a readable message and start nothing', async () => {
   await expectRefused(/workers must be a whole number from 1/);
   await fillRun({ workers: '1', terrain: 'hills' });
   await expectRefused(/neither a terrain family/);
-  assert.doesNotMatch(String(await byTestId(page, 'message').textContent()), /line \d+ column/, 'no parser internals');
+  assert.doesNotMatch(String(await page.locator('#run-plan').textContent()), /line \d+ column/, 'no parser internals');
   await fillRun({ terrain: 'flat' });
+  await waitForText(page, 'run-plan', /^A budget of 24 evaluations/);
+  assert.equal(await byTestId(page, 'evolve').isEnabled(), true, 'fixed: Evolve is on');
   assert.deepEqual(problems, []);
 });
 

@@ -85,7 +85,7 @@ test('when the core worker dies, the next question starts a new one: the drawing
   await core.evaluate(() => { setTimeout(() => { throw new Error('the core worker fails on purpose'); }); });
   await ended; // the page ended the failed worker
   await page.locator('#clear').click();
-  await waitForText(page, 'message', /draw at least one voxel/);
+  await waitForText(page, 'shape-message', /draw at least one voxel/);
   await clickCells(page, [[0, 0], [1, 0]]);
   await waitForText(page, 'shape-status', /^2 voxels · 11$/);
   await expectFigure(page, 'param-count', 32 + 4 * 2 + 1);

@@ -2,7 +2,8 @@
 /**
  * Browser test of what a visitor meets first (node --test): a link that cannot be opened
  * keeps its message on screen (3 s later it is still there, saying what is shown instead)
- * until it is closed; after Share, a later edit survives a reload (the shared link never
+ * until it is closed; a link whose brain is damaged opens its robot and settings without the
+ * brain, and says so; after Share, a later edit survives a reload (the shared link never
  * brings back an older robot); Evolve and Fine-tune are on the first screen at 1400 x 900,
  * and on a 420 px phone within one screen of the robot.
  * Saves screenshots/first-screen.png and screenshots/first-screen-phone.png.
@@ -17,7 +18,7 @@ before(async () => { env = await start(); });
 after(async () => { await env?.close(); });
 
 test('a damaged link keeps its message, saying what is shown instead, until it is closed', async () => {
-  for (const hash of ['#shape=1111-1111-1001&brain=attention&genome=AAAAAAAAAAA', '#x7Qp!!random', '#shape=101-000-101&controller=attention']) {
+  for (const hash of ['#shape=1111-1111-1001&controller=quantum', '#x7Qp!!random', '#shape=101-000-101&controller=attention']) {
     const { page, problems, context } = await openPage(env.browser, `${env.url}${hash}`);
     await waitForText(page, 'message', /could not be opened/);
     await page.waitForTimeout(3000); // the robot loads and walks meanwhile
@@ -27,6 +28,25 @@ test('a damaged link keeps its message, saying what is shown instead, until it i
     assert.equal(new URL(page.url()).hash, '', 'the link left the address bar: a reload shows the kept robot');
     await box.locator('[data-testid="message-close"]').click();
     assert.equal(await box.isHidden(), true, 'closed');
+    assert.deepEqual(problems, []);
+    await context.close();
+  }
+});
+
+test('a link whose brain is damaged opens its robot and settings without the brain, and says so', async () => {
+  const settings = 'shape=1111111-1010101&controller=attention&view=hilly-1-10-3&population=12&seconds=12&budget=240&seed=7&train=hilly-1-10';
+  for (const [genome, why] of [['AAAAAAAAAAA', /genome has 2 genes/], ['%%%', /not valid base64/]]) {
+    const { page, problems, context } = await openPage(env.browser, `${env.url}#${settings}&brain=attention&genome=${genome}`);
+    await waitForText(page, 'message', /The brain in this link is damaged/);
+    const text = String(await byTestId(page, 'message').textContent());
+    assert.match(text, new RegExp(`The brain in this link is damaged \\(.*${why.source}.*\\): the robot and settings are opened without it`));
+    await waitForText(page, 'status', /^11 voxels, phase gait$/);
+    assert.equal(await page.locator('#rows').inputValue(), '1111111-1010101', 'the link\'s comb, not the example');
+    const values = await page.evaluate(() => ['terrain', 'run-population', 'run-seconds', 'run-budget', 'run-seed', 'run-terrain']
+      .map((id) => /** @type {HTMLInputElement} */ (document.getElementById(id))?.value));
+    assert.deepEqual(values, ['hilly-1-10-3', '12', '12', '240', '7', 'hilly-1-10'], 'its terrain and run settings');
+    await page.waitForTimeout(3000);
+    assert.equal(await byTestId(page, 'message').isVisible(), true, 'the message stays');
     assert.deepEqual(problems, []);
     await context.close();
   }

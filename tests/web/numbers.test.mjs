@@ -121,13 +121,13 @@ test('a pretrained brain kept across a reload, or shared as a link, is measured 
     await opened.context.close();
   }
   for (const [change, pattern] of /** @type {[(p: URLSearchParams) => void, RegExp][]} */ ([
-    [(p) => p.set('brain-seconds', '0'), /its brain's episode seconds "0" are not in \(0, 3600\]/],
-    [(p) => p.set('brain-speed', 'fast'), /its brain's training speed "fast" is not a number/],
-    [(p) => p.set('brain-terrain', 'moon'), /its brain's training terrain: .*neither a terrain family/],
-    [(p) => p.delete('brain-terrain'), /its brain's training speed and training terrain do not come together/],
+    [(p) => p.set('brain-seconds', '0'), /its episode seconds "0" are not in \(0, 3600\]/],
+    [(p) => p.set('brain-speed', 'fast'), /its training speed "fast" is not a number/],
+    [(p) => p.set('brain-terrain', 'moon'), /its training terrain: .*neither a terrain family/],
+    [(p) => p.delete('brain-terrain'), /its training speed and training terrain do not come together/],
   ])) {
     const bad = await openPage(env.browser, variant(change));
-    await waitForText(bad.page, 'message', new RegExp(`could not be opened: ${pattern.source}`));
+    await waitForText(bad.page, 'message', new RegExp(`The brain in this link is damaged \\(${pattern.source}.*\\): the robot and settings are opened without it`));
     await bad.context.close();
   }
   assert.deepEqual(problems, []);
@@ -184,7 +184,7 @@ test('a transplant reloaded, or opened from its link, still says it walks one-sh
   assert.deepEqual([...opened.problems, ...older.problems], []);
   await older.context.close();
   const bad = await openPage(env.browser, variant((p) => p.set('one-shot', 'yes')));
-  await waitForText(bad.page, 'message', /could not be opened: its brain's one-shot flag "yes" is not 1/);
+  await waitForText(bad.page, 'message', /The brain in this link is damaged \(its one-shot flag "yes" is not 1\)/);
   await bad.context.close();
   assert.deepEqual(problems, []);
   await context.close();

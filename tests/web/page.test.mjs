@@ -38,7 +38,7 @@ test('the default biped walks: its x changes and the speed figure appears', asyn
 
 test('draw a robot cell by cell: the parameter count follows and the viewer walks the drawing', async () => {
   await page.locator('#clear').click();
-  await waitForText(page, 'message', /draw at least one voxel/);
+  await waitForText(page, 'shape-message', /draw at least one voxel/);
   assert.equal(await byTestId(page, 'evolve').isDisabled(), true, 'nothing to evolve');
   await clickCells(page, [[0, 0]]);
   await params(32 + 4 + 1);
@@ -53,32 +53,32 @@ test('draw a robot cell by cell: the parameter count follows and the viewer walk
   await params(32 + 4 * 4 + 1);
   await waitForText(page, 'status', /^4 voxels, phase gait$/);
   assert.equal(await page.locator('#rows').inputValue(), '100-111');
-  assert.equal(await byTestId(page, 'message').isHidden(), true, 'a valid drawing clears the message');
+  assert.equal(await byTestId(page, 'shape-message').isHidden(), true, 'a valid drawing clears the message');
   assert.equal(await byTestId(page, 'evolve').isEnabled(), true);
   assert.deepEqual(problems, []);
 });
 
 test('a disconnected drawing names its pieces and turns Evolve off; undo and redo', async () => {
   await clickCells(page, [[5, 0], [7, 3]]);
-  await waitForText(page, 'message', /3 separate pieces/);
-  assert.match(String(await byTestId(page, 'message').textContent()), /each of its 3 pieces has its own colour/);
+  await waitForText(page, 'shape-message', /3 separate pieces/);
+  assert.match(String(await byTestId(page, 'shape-message').textContent()), /each of its 3 pieces has its own colour/);
   assert.match(String(await page.locator('#shape-status').textContent()), /^Not a robot yet: 3 separate pieces$/);
   assert.equal(await byTestId(page, 'evolve').isDisabled(), true);
   assert.equal(await byTestId(page, 'finetune').isDisabled(), true);
   assert.equal(await byTestId(page, 'load-pretrained').isDisabled(), true);
   assert.match(String(await page.locator('#status').textContent()), /^4 voxels/, 'the last valid robot keeps walking');
   await page.locator('#undo').click();
-  await waitForText(page, 'message', /2 separate pieces/);
+  await waitForText(page, 'shape-message', /2 separate pieces/);
   await page.keyboard.press('Control+z');
-  await page.waitForFunction(() => document.querySelector('[data-testid="message"]')?.hasAttribute('hidden'));
+  await page.waitForFunction(() => document.querySelector('[data-testid="shape-message"]')?.hasAttribute('hidden'));
   assert.equal(await byTestId(page, 'evolve').isEnabled(), true);
   await page.keyboard.press('Control+Shift+z');
-  await waitForText(page, 'message', /2 separate pieces/);
+  await waitForText(page, 'shape-message', /2 separate pieces/);
   await page.locator('#redo').click();
-  await waitForText(page, 'message', /3 separate pieces/);
+  await waitForText(page, 'shape-message', /3 separate pieces/);
   await page.locator('#undo').click();
   await page.locator('#undo').click();
-  await page.waitForFunction(() => document.querySelector('[data-testid="message"]')?.hasAttribute('hidden'));
+  await page.waitForFunction(() => document.querySelector('[data-testid="shape-message"]')?.hasAttribute('hidden'));
   assert.equal(await page.locator('#rows').inputValue(), '100-111');
   await screenshot(page, 'draw.png');
   assert.deepEqual(problems, []);

@@ -1,0 +1,115 @@
+// @ts-check
+/**
+ * Browser test of messages about an input (node --test), as a person fixes what they typed:
+ * a refused row entry's message is replaced by the next one and goes once a well-formed
+ * value is typed; run settings that are not valid say so at once in the plan line, with
+ * Evolve off, one problem at a time, until they are fixed; a run file that cannot be read
+ * replaces the previous one's message and goes when a good file is imported. Messages sit
+ * in the page's flow, covering no control, at 1400 and at 420 px wide. Saves
+ * screenshots/input-message.png and screenshots/input-message-phone.png.
+ */
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import path from 'node:path';
+import { after, before, test } from 'node:test';
+import { ROOT, byTestId, openPage, screenshot, start, waitForText } from './harness.mjs';
+
+/** @type {Awaited<ReturnType<typeof start>>} */ let env;
+
+before(async () => { env = await start(); });
+after(async () => { await env?.close(); });
+
+/** The texts of the messages on screen, oldest first. @param {import('playwright-core').Page} page */
+async function shown(page) {
+  return byTestId(page, 'message').locator('.message:visible > span').allTextContents();
+}
+
+/** @param {import('playwright-core').Page} page @param {string} text */
+async function typeRows(page, text) {
+  await page.locator('#rows').fill(text);
+  await page.locator('#rows').press('Enter');
+}
+
+/** The page with the example robot walking. @param {number} [width] */
+async function fresh(width) {
+  const opened = await openPage(env.browser, env.url, width ? { width, height: 900 } : {});
+  await waitForText(opened.page, 'status', /^10 voxels/);
+  return opened;
+}
+
+/** No message left and nothing went wrong: the page closes. @param {Awaited<ReturnType<typeof openPage>>} opened */
+async function closeClean({ page, problems, context }) {
+  assert.equal(await byTestId(page, 'message').isHidden(), true, 'no message left');
+  assert.deepEqual(problems, []);
+  await context.close();
+}
+
+/** The visible controls the message box overlaps (none expected). @param {import('playwright-core').Page} page */
+async function covered(page) {
+  return page.evaluate(() => {
+    const box = /** @type {HTMLElement} */ (document.getElementById('message')).getBoundingClientRect();
+    const controls = [...document.querySelectorAll('button, input, select, canvas, summary, a')];
+    return controls.filter((c) => {
+      const r = c.getBoundingClientRect();
+      const visible = r.width > 0 && r.height > 0 && getComputedStyle(c).visibility !== 'hidden' && !c.closest('#message');
+      return visible && r.left < box.right && r.right > box.left && r.top < box.bottom && r.bottom > box.top;
+    }).map((c) => c.id || c.textContent?.trim().slice(0, 30) || c.tagName);
+  });
+}
+
+test('a refused row entry: the next one replaces its message, a well-formed one takes it away', async () => {
+  for (const [width, name] of /** @type {[number, string][]} */ ([[1400, 'input-message.png'], [420, 'input-message-phone.png']])) {
+    const opened = await fresh(width);
+    const { page } = opened;
+    await typeRows(page, '1x1');
+    await waitForText(page, 'message', /rows hold only 1/);
+    assert.deepEqual(await covered(page), [], `at ${width} px the message covers no control`);
+    await screenshot(page, name);
+    await typeRows(page, '2-2');
+    await page.waitForTimeout(300);
+    const texts = await shown(page);
+    assert.equal(texts.length, 1, `one message about the rows, the newest: ${JSON.stringify(texts)}`);
+    await typeRows(page, '111-101');
+    await waitForText(page, 'status', /^5 voxels/);
+    await closeClean(opened); // well-formed rows: the message went
+  }
+});
+
+test('run settings that are not valid say so at once in the plan line, with Evolve off until fixed', async () => {
+  const opened = await fresh();
+  const { page } = opened;
+  const evolve = page.locator('#run-evolve');
+  await waitForText(page, 'run-plan', /^A budget of/);
+  assert.equal(await evolve.isEnabled(), true);
+  await page.locator('#run-population').fill('0');
+  await waitForText(page, 'run-plan', /^Not valid yet: population must be a whole number of at least 1, not "0"/);
+  assert.equal(await evolve.isDisabled(), true, 'Evolve is off');
+  await page.locator('#run-seconds').fill('-3');
+  await waitForText(page, 'run-plan', /^Not valid yet: population/);
+  await page.locator('#run-population').fill('20');
+  await waitForText(page, 'run-plan', /^Not valid yet: episode seconds must be a positive number, not "-3"/);
+  assert.equal(await evolve.isDisabled(), true, 'still off');
+  await page.locator('#run-terrain').fill('moon');
+  await page.locator('#run-seconds').fill('10');
+  await waitForText(page, 'run-plan', /^Not valid yet: training terrain:/);
+  await page.locator('#run-terrain').fill('hilly-1-10');
+  await waitForText(page, 'run-plan', /^A budget of/);
+  assert.equal(await evolve.isEnabled(), true, 'fixed: Evolve is on');
+  await closeClean(opened); // no message piled up
+});
+
+test('an unreadable run file: the next one replaces its message, a good one takes it away', async () => {
+  const opened = await fresh();
+  const { page } = opened;
+  const file = page.locator('#run-import');
+  const bad = (/** @type {string} */ name) => ({ name, mimeType: 'application/json', buffer: Buffer.from('{"not": "a run"}') });
+  await file.setInputFiles(bad('one.json'));
+  await waitForText(page, 'message', /one\.json is not a run file/);
+  await file.setInputFiles(bad('two.json'));
+  await waitForText(page, 'message', /two\.json is not a run file/);
+  assert.equal((await shown(page)).length, 1, 'the second file\'s message replaced the first');
+  const good = path.join(ROOT, 'pretrained', 'biped-4x3-mlp.json');
+  await file.setInputFiles({ name: 'good.json', mimeType: 'application/json', buffer: fs.readFileSync(good) });
+  await page.waitForFunction(() => document.getElementById('message')?.hasAttribute('hidden'), undefined, { timeout: 20_000 });
+  await closeClean(opened);
+});
