@@ -26,7 +26,16 @@ test('a failed request and a crashed worker keep their messages until closed; a 
   const core = worker('core-worker.js');
   assert.ok(core, 'a core worker runs');
   // The core worker dies on the next question it is asked: a click on the editor asks it to check the drawing.
-  await core.evaluate(() => { self.onmessage = () => { throw new Error('the core worker fails on purpose'); }; });
+  // Under load the worker may still be loading its imports, and its module would then install
+  // its own handler after ours: wait until it has, then replace it.
+  await core.evaluate(() => new Promise((resolve) => {
+    const replace = () => {
+      if (!self.onmessage) { setTimeout(replace, 10); return; }
+      self.onmessage = () => { throw new Error('the core worker fails on purpose'); };
+      resolve(undefined);
+    };
+    replace();
+  }));
   await clickCells(page, [[6, 0]]);
   await waitForText(page, 'message', /the drawing could not be checked: the core worker stopped \(.*fails on purpose.*\); try again/);
   const failed = Date.now();
