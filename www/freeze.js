@@ -62,7 +62,7 @@ export class FreezeControl {
     const seconds = now.t - at.t;
     const after = speedBetween(at, now);
     this.report.textContent = `Before freezing: ${metres(before)} over the last ${window.toFixed(1)} s. `
-      + `Frozen for ${seconds.toFixed(1)} s: ${seconds > 0 ? metres(after) : '…'}.`;
+      + `Frozen for ${seconds.toFixed(1)} s: ${seconds > 0 ? metres(after) : '…'}. ${verdict(before, after, seconds)}`;
     this.show(before, after);
   }
 
@@ -79,6 +79,26 @@ export class FreezeControl {
     this.report.dataset.before = String(before);
     this.report.dataset.after = String(after);
   }
+}
+
+/** Seconds frozen before the speeds are compared in words (a step or two of a gait). */
+export const VERDICT_AFTER_S = 3;
+/** Below this speed before freezing (m/s) the robot was not walking, and freezing says little. */
+const WALKING = 0.2;
+
+/**
+ * What the two speeds say, in words: whether the robot needed its attention to change.
+ * @param {number} before @param {number} after speeds (m/s) @param {number} seconds frozen for
+ * @returns {string}
+ */
+export function verdict(before, after, seconds) {
+  if (!(seconds >= VERDICT_AFTER_S)) return 'Watch a few seconds more…';
+  if (!(before >= WALKING)) return 'It was hardly walking before, so this says little: freeze a robot while it walks.';
+  if (!(after > 0)) return 'Frozen, it stops (or drifts back): its changing attention is what made it walk.';
+  const kept = Math.round((100 * after) / before);
+  if (kept < 34) return `Frozen, it keeps only ${kept}% of its speed: its changing attention is what made it walk.`;
+  if (kept < 80) return `Frozen, it keeps ${kept}% of its speed: its changing attention helps, but it walks partly without it.`;
+  return `Frozen, it keeps ${kept}% of its speed: this robot walks about as well without changing its attention.`;
 }
 
 /** @param {number} v a speed (m/s) @returns {string} */

@@ -63,7 +63,8 @@ export class RunProgress {
     show(this.out.best, bestSoFar, `${fixed(bestSoFar)} m/s`);
     show(this.out.genBest, record.best ?? NaN, `${fixed(record.best)} m/s`);
     show(this.out.median, record.median ?? NaN, `${fixed(record.median)} m/s`);
-    show(this.out.rate, msg.evalsPerSecond, `${fixed(msg.evalsPerSecond, 1)} evaluations/s`);
+    show(this.out.rate, msg.evalsPerSecond, `${fixed(msg.evalsPerSecond, 1)} evaluations/s`
+      + timeLeft((msg.planned - msg.evaluations) / msg.evalsPerSecond));
     if (mode === 'evolve') {
       this.chart.add('best', STYLE.best, msg.evaluations, record.best);
       this.chart.add('median', STYLE.median, msg.evaluations, record.median);
@@ -86,6 +87,19 @@ export class RunProgress {
 /** @param {number | null} v @param {number} [digits] */
 function fixed(v, digits = 2) {
   return v === null || !Number.isFinite(v) ? '–' : v.toFixed(digits);
+}
+
+/**
+ * The time a run has left at its pace so far, in words ('' when done or unknown): seconds
+ * under a minute, else minutes (and seconds under ten minutes).
+ * @param {number} seconds @returns {string}
+ */
+export function timeLeft(seconds) {
+  if (!(seconds > 0) || !Number.isFinite(seconds)) return '';
+  const s = Math.ceil(seconds);
+  if (s < 60) return ` · about ${s} s to go`;
+  const m = Math.floor(s / 60);
+  return m < 10 ? ` · about ${m} min ${s % 60} s to go` : ` · about ${Math.round(s / 60)} min to go`;
 }
 
 /** Shows a figure, with its raw number in data-value for tests. @param {HTMLElement} el @param {number} value @param {string} text */

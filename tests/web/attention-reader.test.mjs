@@ -6,11 +6,12 @@
  * the pointer spelled out; at 1400 px it takes a row of its own under the robot and the
  * maps, with no blank area) and freezing it (paper Fig. 6, live: the pretrained attention
  * biped, frozen while it walks, loses more than two thirds of its speed; released, it is
- * no longer frozen). Saves screenshots/attention-reader-{1400,420}.png.
+ * no longer frozen; the verdict in words follows the two speeds). Saves screenshots/attention-reader-{1400,420}.png.
  */
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
 import { byTestId, figure, openPage, screenshot, start, waitForFigure, waitForText } from './harness.mjs';
+import { verdict } from '../../www/freeze.js';
 
 const ATTENTION = 'pretrained/biped-4x3-attention.json';
 const NAMES = ['area', 'vx', 'vy', 'touch'];
@@ -19,6 +20,16 @@ const NAMES = ['area', 'vx', 'vy', 'touch'];
 
 before(async () => { env = await start(); });
 after(async () => { await env?.close(); });
+
+test('the freeze report says in words what the two speeds mean, once it has seen enough', () => {
+  assert.equal(verdict(2, 0.1, 1), 'Watch a few seconds more…');
+  assert.match(verdict(0.05, 0.04, 6), /^It was hardly walking before/);
+  assert.match(verdict(2, -0.1, 6), /^Frozen, it stops \(or drifts back\)/);
+  assert.match(verdict(2, 0.2, 6), /^Frozen, it keeps only 10% of its speed: its changing attention is what made it walk\.$/);
+  assert.match(verdict(2, 1, 6), /^Frozen, it keeps 50% of its speed: its changing attention helps/);
+  assert.match(verdict(2, 1.9, 6), /^Frozen, it keeps 95% of its speed: this robot walks about as well/);
+  assert.match(verdict(NaN, NaN, 6), /^It was hardly walking/);
+});
 
 /** Opens the pretrained attention biped on its own body. @param {import('playwright-core').Page} page */
 async function openAttentionBiped(page) {
@@ -89,7 +100,7 @@ test('a click on a voxel\'s map shows its matrix enlarged, named and live; freez
   console.log(`# frozen at ${frozenAt.toFixed(1)} s: ${beforeSpeed.toFixed(2)} m/s before, ${afterSpeed.toFixed(2)} m/s over the 6 s after`);
   assert.ok(beforeSpeed > 1, `it walked before: ${beforeSpeed}`);
   assert.ok(Math.abs(afterSpeed) < beforeSpeed / 3, `more than two thirds slower frozen: ${beforeSpeed} -> ${afterSpeed}`);
-  assert.match(String(await report.textContent()), /^Before freezing: \d+\.\d\d m\/s over the last \d+\.\d s\. Frozen for \d+\.\d s: -?\d+\.\d\d m\/s\.$/);
+  assert.match(String(await report.textContent()), /^Before freezing: \d+\.\d\d m\/s over the last \d+\.\d s\. Frozen for \d+\.\d s: -?\d+\.\d\d m\/s\. Frozen, it (keeps only \d+% of its speed|stops \(or drifts back\)): its changing attention is what made it walk\.$/);
   const held = await readMatrix(page);
   await page.waitForTimeout(500);
   assert.deepEqual((await readMatrix(page)).values, held.values, 'frozen, the matrix holds still');

@@ -10,7 +10,8 @@
  *  - Evolve runs a tiny budget live on the chosen number of workers (figures change, the chart
  *    is against evaluations, the best walks), Export downloads its run file and Import lists
  *    it back as a module that opens with its own body;
- *  - Pause holds, Step runs exactly one generation, Stop ends and keeps the run file.
+ *  - Pause holds, Step runs exactly one generation, Stop ends and keeps the run file; the
+ *    pace says how long the run has left.
  * Saves screenshots/evolve.png.
  */
 import assert from 'node:assert/strict';
@@ -19,6 +20,7 @@ import { mkdtemp, readFile, rm } from 'node:fs/promises';
 import os from 'node:os';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
+import { timeLeft } from '../../www/run-progress.js';
 import { BIN, byTestId, figure, openPage, screenshot, start, waitForFigure, waitForText } from './harness.mjs';
 
 /** @type {Awaited<ReturnType<typeof start>>} */ let env;
@@ -164,6 +166,15 @@ test('Evolve runs live on the chosen workers, the best walks, Export and Import 
   assert.deepEqual(problems, []);
 });
 
+test('the time a run has left is said in seconds, then minutes', () => {
+  assert.equal(timeLeft(NaN), '');
+  assert.equal(timeLeft(0), '');
+  assert.equal(timeLeft(Infinity), '');
+  assert.equal(timeLeft(12.2), ' · about 13 s to go');
+  assert.equal(timeLeft(125), ' · about 2 min 5 s to go');
+  assert.equal(timeLeft(1500), ' · about 25 min to go');
+});
+
 test('Pause holds, Step runs one generation, Stop ends the run and keeps its run file', async () => {
   await fillRun({ population: '4', seconds: '1', budget: '30000', seed: '2', workers: '2' });
   await byTestId(page, 'evolve').click();
@@ -175,6 +186,8 @@ test('Pause holds, Step runs one generation, Stop ends the run and keeps its run
   await page.waitForFunction(() => document.body.dataset.run === 'paused', undefined, { timeout: 60_000 });
   const held = await figure(page, 'run-generation');
   assert.ok(Number.isInteger(held) && held >= 0, `a generation was told: ${held}`);
+  assert.match(String(await page.locator('#run-rate').textContent()),
+    /^\d+\.\d evaluations\/s · about (\d+ s|\d+ min \d+ s|\d+ min) to go$/, 'the pace, and the time left at it');
   await page.waitForTimeout(1000);
   assert.equal(await figure(page, 'run-generation'), held, 'no generation while paused');
   assert.equal(await byTestId(page, 'pause').textContent(), 'Resume');
