@@ -7,7 +7,8 @@
  * viewer walks that robot. Back and Next step through the chapters and the address follows;
  * leaving the tour keeps the playground. The time to open each chapter is printed (from a
  * click on Next to the robot walking; a figure, not a pass mark). The study panel shows its
- * figures and walks a run's best. Screenshots: screenshots/tour-N-{1400,420}.png, study-1400.png.
+ * figures and walks a run's best; on a phone a figure scrolls in its own
+ * box at a readable size. Screenshots: screenshots/tour-N-{1400,420}.png, study-{1400,420}.png.
  */
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
@@ -170,6 +171,27 @@ test('the study panel shows its figures, and one click walks a run\'s best robot
   await page.waitForFunction(() => document.getElementById('status')?.textContent === '18 voxels, attention');
   await byTestId(page, 'study').scrollIntoViewIfNeeded();
   await page.screenshot({ path: path.join(SCREENSHOTS, 'study-1400.png') });
+  assert.deepEqual(problems, []);
+  await page.context().close();
+});
+
+test('on a phone a study figure keeps a readable size and scrolls in its own box, not the page', async () => {
+  const { page, problems } = await openPage(env.browser, env.url, { width: 420, height: 860, touch: true });
+  await byTestId(page, 'study-figure').selectOption('finetune-biped-large');
+  await page.waitForFunction(() => {
+    const img = /** @type {HTMLImageElement} */ (document.getElementById('study-image'));
+    return img.complete && img.naturalWidth > 0;
+  });
+  await byTestId(page, 'study-image').scrollIntoViewIfNeeded();
+  const sizes = await page.evaluate(() => ({
+    image: document.getElementById('study-image')?.getBoundingClientRect().width ?? 0,
+    box: document.getElementById('study-full')?.clientWidth ?? 0,
+    page: document.documentElement.scrollWidth,
+  }));
+  assert.ok(sizes.image >= 600, `the figure is drawn at least 600 px wide: ${JSON.stringify(sizes)}`);
+  assert.ok(sizes.box <= 420 && sizes.page <= 420, `only its box scrolls, not the page: ${JSON.stringify(sizes)}`);
+  assert.equal(await page.locator('.figure-hint').isVisible(), true, 'the phone is told to swipe or tap');
+  await page.screenshot({ path: path.join(SCREENSHOTS, 'study-420.png') });
   assert.deepEqual(problems, []);
   await page.context().close();
 });
