@@ -49,10 +49,21 @@ export class Lane {
     remove.title = 'Take this robot out of the race';
     remove.setAttribute('aria-label', `Take ${racer.label} out of the race`);
     remove.addEventListener('click', () => hooks.remove(this));
-    head.append(this.name, this.speed, this.distance, remove);
+    this.place = doc.createElement('output');
+    this.place.className = 'race-place';
+    this.place.dataset.testid = 'race-place';
+    this.place.title = 'Its place in the race: by distance walked from the start line';
+    head.append(this.place, this.name, this.speed, this.distance, remove);
+    // The race's shared scale: the bar is this robot's distance, the leader's bar is full.
+    const track = doc.createElement('div');
+    track.className = 'race-track';
+    track.title = 'Distance walked, against the leader\'s (a full bar)';
+    this.mark = doc.createElement('div');
+    this.mark.className = 'race-mark';
+    track.append(this.mark);
     this.canvas = doc.createElement('canvas');
     this.canvas.setAttribute('aria-label', `${racer.label} walking`);
-    this.root.append(head, this.canvas);
+    this.root.append(head, track, this.canvas);
     parent.append(this.root);
     this.renderer = new Renderer(this.canvas);
     this.loaded = false;
@@ -63,6 +74,8 @@ export class Lane {
     this.dirty = true;
     /** The centre's x at the start line (m). */
     this.start = NaN;
+    /** Metres walked from the start line (NaN before the first frame). */
+    this.walked = NaN;
     this.worker = spawn('worker.js', (msg) => this.onMessage(msg), (text) => hooks.failed(this, text));
     this.show(NaN, NaN, NaN);
   }
@@ -124,7 +137,19 @@ export class Lane {
     this.speed.dataset.time = String(time);
     this.speed.textContent = Number.isFinite(velocity) && time > 0 ? `${velocity.toFixed(2)} m/s` : '– m/s';
     const walked = x - this.start;
+    this.walked = walked;
     this.distance.textContent = Number.isFinite(walked) ? `${walked.toFixed(1)} m in ${time.toFixed(1)} s` : '';
+  }
+
+  /**
+   * Its standing in the race ({@link standings}): a place (0: none yet) and its share of the
+   * leader's distance. @param {{place: number, share: number}} standing
+   */
+  stand({ place, share }) {
+    this.place.dataset.value = String(place);
+    this.place.textContent = place > 0 ? ordinal(place) : '';
+    this.mark.style.width = `${(100 * share).toFixed(1)}%`;
+    this.mark.dataset.value = String(share);
   }
 
   /** Draws the lane if a new frame came (a finished robot costs nothing). @param {number} now */
@@ -138,4 +163,24 @@ export class Lane {
     this.worker.terminate();
     this.root.remove();
   }
+}
+
+/**
+ * The places of robots that walked `walked` metres (NaN: not started), ties sharing a place,
+ * and each one's share of the leader's distance (0 when nobody went forwards yet). With a
+ * single robot there is no race: no places.
+ * @param {number[]} walked @returns {{place: number, share: number}[]}
+ */
+export function standings(walked) {
+  const started = walked.filter(Number.isFinite);
+  const lead = Math.max(0, ...started);
+  return walked.map((w) => ({
+    place: started.length > 1 && Number.isFinite(w) ? 1 + started.filter((o) => o > w).length : 0,
+    share: lead > 0 && Number.isFinite(w) ? Math.max(0, w) / lead : 0,
+  }));
+}
+
+/** 1st, 2nd, 3rd, 4th. @param {number} n */
+function ordinal(n) {
+  return `${n}${({ 1: 'st', 2: 'nd', 3: 'rd' })[n] ?? 'th'}`;
 }

@@ -10,7 +10,7 @@
  */
 import { describeRun, runGenome } from './core.js';
 import { messageOf } from './kit.js';
-import { Lane } from './race-lane.js';
+import { Lane, standings } from './race-lane.js';
 
 /** Most robots in one race. */
 export const MAX_RACERS = 4;
@@ -47,6 +47,8 @@ export class Race {
     this.update();
     requestAnimationFrame(function loop(/** @type {number} */ now) {
       for (const lane of this.lanes) lane.draw(now);
+      const places = standings(this.lanes.map((l) => l.walked));
+      this.lanes.forEach((lane, i) => lane.stand(places[i]));
       requestAnimationFrame(loop.bind(this));
     }.bind(this));
   }

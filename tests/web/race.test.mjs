@@ -5,13 +5,14 @@
  * each ends with exactly the speed `vsr evaluate` gives that module on that terrain (when
  * the native CLI is built), and their order is the study's (attention > MLP-Comm > MLP);
  * a fifth cannot be added, one can be taken out; after a small run, the best of a chosen generation and the best
- * so far join a race. Saves screenshots/race-{1400,420,420-panel}.png.
+ * so far join a race; each lane shows its place and its distance against the leader's. Saves screenshots/race-{1400,420,420-panel}.png.
  */
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { existsSync } from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
+import { standings } from '../../www/race-lane.js';
 import { BIN, ROOT, SCREENSHOTS, byTestId, openPage, robotPixels, screenshot, start, waitForFigure, waitForText } from './harness.mjs';
 
 const BRAINS = ['attention', 'mlp-comm', 'mlp'];
@@ -38,6 +39,12 @@ async function speeds(page) {
   }));
 }
 
+test('places and bars share one scale: ties share a place, a lone robot has none', () => {
+  assert.deepEqual(standings([4, 2, NaN, 4]), [{ place: 1, share: 1 }, { place: 3, share: 0.5 }, { place: 0, share: 0 }, { place: 1, share: 1 }]);
+  assert.deepEqual(standings([3]), [{ place: 0, share: 1 }]);
+  assert.deepEqual(standings([-1, -2]), [{ place: 1, share: 0 }, { place: 2, share: 0 }]);
+});
+
 test('three pretrained brains race on biped-4x3: vsr evaluate\'s speeds, in the study\'s order', async () => {
   const { page, problems } = await openPage(env.browser, env.url, { width: 1400, height: 900 });
   const terrain = await page.locator('#terrain').inputValue();
@@ -61,6 +68,13 @@ test('three pretrained brains race on biped-4x3: vsr evaluate\'s speeds, in the 
   }
   const [attention, comm, mlp] = raced.map((r) => r.speed);
   assert.ok(attention > comm && comm > mlp, `the study's order attention > MLP-Comm > MLP: ${figures}`);
+  const standing = await byTestId(page, 'race-robot').evaluateAll((robots) => robots.map((r) => ({
+    place: String(r.querySelector('[data-testid="race-place"]')?.textContent),
+    share: Number(/** @type {HTMLElement} */ (r.querySelector('.race-mark')).dataset.value),
+  })));
+  assert.deepEqual(standing.map((s) => s.place), ['1st', '2nd', '3rd'], `places by distance: ${JSON.stringify(standing)}`);
+  assert.ok(standing[0].share === 1 && standing[1].share < 1 && standing[2].share < standing[1].share,
+    `the leader's bar is full, the others shorter in order: ${JSON.stringify(standing)}`);
   const drawn = await Promise.all((await page.locator('.race-robot canvas').all()).map((c) => c.evaluate(robotPixels)));
   assert.ok(drawn.length === 3 && drawn.every((n) => n > 100), `each lane draws its robot in its colours: ${drawn} pixels`);
   await screenshot(page, 'race-1400.png');
