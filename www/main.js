@@ -19,6 +19,7 @@ import { Race } from './race.js';
 import { Robot } from './robot.js';
 import { pageState } from './robot-state.js';
 import { RunFollower } from './run-follow.js';
+import { RunEstimate } from './run-estimate.js';
 import { RunPanel } from './run-panel.js';
 import { SpeedNote } from './speed-note.js';
 import { StudyPanel } from './tour/study.js';
@@ -85,6 +86,8 @@ const runs = new RunPanel(document, defaults, {
   message: showMessage,
   note: (text) => messages.show(text, 'note'),
 });
+new RunEstimate(/** @type {HTMLElement} */ (document.getElementById('run-estimate')), runs.form,
+  () => viewer.readout.latest?.simPerCompute ?? NaN);
 robot = new Robot(document, { defaults, drawing, editor, viewer, messages, speedNote, runs, keep: () => keeper.schedule() });
 follower = new RunFollower(robot, modules, () => runs.mode === 'finetune');
 

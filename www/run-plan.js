@@ -8,7 +8,7 @@ import { runPlan } from './core.js';
 
 /**
  * @param {number} population @param {number} budget
- * @returns {Promise<{text: string, generations: number} | null>} null when the numbers are not valid
+ * @returns {Promise<{text: string, generations: number, planned: number} | null>} null when the numbers are not valid
  */
 export async function planWords(population, budget) {
   let plan;
@@ -16,6 +16,7 @@ export async function planWords(population, budget) {
   const extra = plan.planned > budget ? `; the last generation is finished, so the run takes ${plan.planned}` : '';
   return {
     generations: plan.generations,
+    planned: plan.planned,
     text: `A budget of ${budget} evaluations: generation 0 measures ${population} random brains, then each of `
       + `${plan.generations} generations measures ${plan.perGeneration} (${population} new children, and the ${population} `
       + `parents again on fresh terrains, so that luck on one terrain does not last)${extra}.`,

@@ -90,16 +90,24 @@ function fixed(v, digits = 2) {
 }
 
 /**
- * The time a run has left at its pace so far, in words ('' when done or unknown): seconds
- * under a minute, else minutes (and seconds under ten minutes).
+ * A duration in words: seconds under a minute, then minutes and seconds under ten minutes,
+ * then minutes, then hours and minutes. @param {number} seconds (> 0) @returns {string}
+ */
+export function durationWords(seconds) {
+  const s = Math.ceil(seconds);
+  if (s < 60) return `${s} s`;
+  const m = Math.floor(s / 60);
+  if (m < 10) return `${m} min ${s % 60} s`;
+  if (m < 120) return `${Math.round(s / 60)} min`;
+  return `${Math.floor(m / 60)} h ${m % 60} min`;
+}
+
+/**
+ * The time a run has left at its pace so far, in words ('' when done or unknown).
  * @param {number} seconds @returns {string}
  */
 export function timeLeft(seconds) {
-  if (!(seconds > 0) || !Number.isFinite(seconds)) return '';
-  const s = Math.ceil(seconds);
-  if (s < 60) return ` · about ${s} s to go`;
-  const m = Math.floor(s / 60);
-  return m < 10 ? ` · about ${m} min ${s % 60} s to go` : ` · about ${Math.round(s / 60)} min to go`;
+  return seconds > 0 && Number.isFinite(seconds) ? ` · about ${durationWords(seconds)} to go` : '';
 }
 
 /** Shows a figure, with its raw number in data-value for tests. @param {HTMLElement} el @param {number} value @param {string} text */

@@ -35,6 +35,8 @@ export class RunSettings {
     this.plan = /** @type {HTMLElement} */ (el('run-plan'));
     /** Plans asked: only the latest one's words are shown. */
     this.plans = 0;
+    /** Evaluations the settings in the form plan (NaN while they are not valid). */
+    this.planned = NaN;
     this.inputs.seed.value = '1';
     this.inputs.terrain.value = defaults.trainingTerrain;
     this.inputs.workers.value = String(Math.max(1, Math.min(MAX_EVALUATORS, navigator.hardwareConcurrency || 1)));
@@ -53,6 +55,7 @@ export class RunSettings {
     this.problem().then(async (problem) => {
       const words = problem ? null : await planWords(Number(this.inputs.population.value), Number(this.inputs.budget.value));
       if (ticket !== this.plans) return;
+      this.planned = words?.planned ?? NaN;
       this.plan.textContent = problem ? `Not valid yet: ${problem}. Evolve is off until it is fixed.` : words?.text ?? '';
       this.plan.dataset.invalid = String(problem !== '');
       if (!problem) this.message('');

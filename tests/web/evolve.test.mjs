@@ -7,6 +7,8 @@
  *  - an evaluation worker that crashes mid-run is replaced, its job re-run, and the run's
  *    result is unchanged;
  *  - bad settings are said at once in the plan line, with Evolve off, and start nothing;
+ *  - before a run the page says how long it would take (the estimate and the time it took
+ *    are printed, figures, not pass marks);
  *  - Evolve runs a tiny budget live on the chosen number of workers (figures change, the chart
  *    is against evaluations, the best walks), Export downloads its run file and Import lists
  *    it back as a module that opens with its own body;
@@ -128,11 +130,18 @@ test('bad settings are said at once in the plan line, with Evolve off, and start
 
 test('Evolve runs live on the chosen workers, the best walks, Export and Import round-trip', async () => {
   await fillRun({ population: '6', seconds: '2', budget: '60', seed: '5', terrain: 'hilly-1-10', workers: '1' });
+  // Before the run: how long it would take at the pace the robot walking now is simulated.
+  await waitForText(page, 'run-estimate', /^On this computer that is about \d+ s on 1 worker \(at \d+x real time, the pace it simulates the robot walking now\)\.$/);
+  const estimated = await figure(page, 'run-estimate');
+  const pace = Number(String(await page.locator('#run-estimate').textContent()).match(/at (\d+)x/)?.[1]);
+  assert.ok(Math.abs(estimated - (66 * 2) / pace) < 0.01 * estimated + 2 / pace, `66 evaluations of 2 s at ${pace}x: ${estimated} s`);
+  const started = Date.now();
   await byTestId(page, 'evolve').click();
   await waitForText(page, 'run-status', /on 1 worker$/);
   await waitForFigure(page, 'run-generation', 'v >= 1');
   const midway = await figure(page, 'run-evaluations');
   await page.waitForFunction(() => document.body.dataset.run === 'finished', undefined, { timeout: 120_000 });
+  console.log(`# the page estimated ${estimated.toFixed(1)} s for 66 evaluations of 2 s on 1 worker; it took ${((Date.now() - started) / 1000).toFixed(1)} s`);
   assert.ok(midway >= 18 && midway <= 66, `evaluations went from ${midway}`);
   assert.equal(await figure(page, 'run-evaluations'), 66, 'population 6 + 5 generations of 12 for a budget of 60');
   assert.match(String(await byTestId(page, 'evaluations').textContent()), /^66 \/ 66$/);
@@ -186,6 +195,7 @@ test('Pause holds, Step runs one generation, Stop ends the run and keeps its run
   await page.waitForFunction(() => document.body.dataset.run === 'paused', undefined, { timeout: 60_000 });
   const held = await figure(page, 'run-generation');
   assert.ok(Number.isInteger(held) && held >= 0, `a generation was told: ${held}`);
+  await byTestId(page, 'run-estimate').waitFor({ state: 'hidden', timeout: 5_000 }); // no estimate while it runs
   assert.match(String(await page.locator('#run-rate').textContent()),
     /^\d+\.\d evaluations\/s · about (\d+ s|\d+ min \d+ s|\d+ min) to go$/, 'the pace, and the time left at it');
   await page.waitForTimeout(1000);
