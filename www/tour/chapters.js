@@ -42,7 +42,7 @@ export const CHAPTERS = [
       'No brain drives it yet. Every voxel squeezes and swells on a clock, each column a little later than the one on its left, so a wave runs along the body: this is the phase gait.',
     ],
     task: 'Under the robot, in “Phase gait”, change φ, the delay from one column to the next, from 1.5 to 0, then to −1.5.',
-    notice: 'At φ 1.5 (and f 1 Hz) it walks about 2 m/s. At 0 every column beats together and it only shuffles, well under 1 m/s. At −1.5 the wave runs the other way, yet this biped still goes forwards, only slower (about 1.3 m/s): which way a body goes is not simply the way its wave runs. Only the timing changed. The speed under the robot says how fast.',
+    notice: 'At φ 1.5 (and f 1 Hz) it walks about 2 m/s. At 0 every column beats together and it only shuffles, well under 1 m/s. At −1.5 the wave runs the other way, yet this biped still goes forwards, only slower (about 1.3 m/s): which way a body goes is not simply the way its wave runs (its squeezes change only three times a second, so −1.5 is not the exact mirror of 1.5, and a wall just behind the start stops a robot walking backwards). Only the timing changed. The speed under the robot says how fast.',
     setup: { rows: BIPED, brain: null, terrain: 'flat', gait: { frequency: 1, phase: 1.5 } },
     target: '#scene, details.gait',
   },
