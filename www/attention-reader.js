@@ -88,6 +88,7 @@ export class AttentionReader {
     this.section.hidden = false;
     this.section.dataset.voxel = String(voxel);
     this.highlight(voxel);
+    this.section.scrollIntoView({ block: 'nearest', behavior: 'instant' }); // it opens under the maps, maybe below the screen
   }
 
   close() {

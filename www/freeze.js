@@ -3,11 +3,15 @@
  * Freeze the attention (the paper's Fig. 6, live): a button that freezes every voxel's
  * attention matrix where it is now (the core's freeze, the one the ablation uses; the worker
  * does it) and releases it, and a line with the robot's speed over the seconds before
- * freezing and since. Both speeds are the same measure: the centre's forward distance over
- * the time it took (as fitness, over a window). Only an attention brain can be frozen.
+ * freezing and over the latest seconds frozen, and what the two mean in words. Both speeds
+ * are the same measure: the centre's forward distance over the time it took (as fitness,
+ * over a window). Only an attention brain can be frozen.
  */
 /** Seconds of walking before the freeze that its "before" speed is measured over. */
 export const BEFORE_WINDOW_S = 5;
+
+/** Seconds of frozen walking its "frozen" speed is measured over (the latest ones). */
+export const AFTER_WINDOW_S = 2;
 
 /** @typedef {{t: number, x: number}} Sample  simulated time (s) and the centre's x (m) */
 
@@ -60,9 +64,12 @@ export class FreezeControl {
     if (!this.mark) return;
     const { at, before, window } = this.mark;
     const seconds = now.t - at.t;
-    const after = speedBetween(at, now);
+    // The pace frozen: over the last seconds, once the robot has coasted out of its last steps.
+    const from = this.recent.find((s) => s.t >= Math.max(at.t, now.t - AFTER_WINDOW_S)) ?? at;
+    const after = speedBetween(from, now);
     this.report.textContent = `Before freezing: ${metres(before)} over the last ${window.toFixed(1)} s. `
-      + `Frozen for ${seconds.toFixed(1)} s: ${seconds > 0 ? metres(after) : '…'}. ${verdict(before, after, seconds)}`;
+      + `Frozen for ${seconds.toFixed(1)} s: ${seconds > 0 ? `${metres(after)} over the last ${(now.t - from.t).toFixed(1)} s` : '…'}. `
+      + verdict(before, after, seconds);
     this.show(before, after);
   }
 

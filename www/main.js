@@ -86,8 +86,7 @@ const runs = new RunPanel(document, defaults, {
   message: showMessage,
   note: (text) => messages.show(text, 'note'),
 });
-new RunEstimate(/** @type {HTMLElement} */ (document.getElementById('run-estimate')), runs.form,
-  () => viewer.readout.latest?.simPerCompute ?? NaN);
+new RunEstimate(/** @type {HTMLElement} */ (document.getElementById('run-estimate')), runs.form, () => runs.pace, () => drawing.rows());
 robot = new Robot(document, { defaults, drawing, editor, viewer, messages, speedNote, runs, keep: () => keeper.schedule() });
 follower = new RunFollower(robot, modules, () => runs.mode === 'finetune');
 

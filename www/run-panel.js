@@ -12,6 +12,7 @@ import { download, runFileName } from './export.js';
 import { planWords } from './run-plan.js';
 import { FromCoordinator, ToCoordinator } from './protocol.js';
 import { RunProgress } from './run-progress.js';
+import { voxelCount } from './run-estimate.js';
 import { RunSettings } from './run-settings.js';
 
 /**
@@ -73,6 +74,10 @@ export class RunPanel {
     /** What runs now: 'evolve', 'finetune' or 'scratch' (the comparison), and its series key. */
     this.mode = 'evolve';
     this.bestSoFar = -Infinity;
+    /** Workers of the running run. */
+    this.workers = 1;
+    /** The pace of the latest run here: simulated voxel-seconds per second per worker (NaN: no run yet; run-estimate.js). */
+    this.pace = NaN;
     /** Whether the coordinator reported the run started (errors before that: 'not started'). */
     this.started = false;
     /** Start a from-scratch run when this fine-tuning run finishes. */
@@ -153,6 +158,7 @@ export class RunPanel {
       (text) => this.end(`the evolution stopped: ${text}`, 'failed'));
     coordinator.postMessage({ type: ToCoordinator.START, settings, workers: read.workers, source });
     this.coordinator = coordinator;
+    this.workers = read.workers;
     this.paused = false;
     this.started = false;
     this.progress.reset();
@@ -207,6 +213,8 @@ export class RunPanel {
     const { record } = msg;
     if (record.best !== null && record.best > this.bestSoFar) this.bestSoFar = record.best;
     this.progress.generation(msg, this.generations, this.bestSoFar, /** @type {any} */ (this.mode));
+    const pace = (msg.evalsPerSecond * settings.seconds * voxelCount(settings.shape)) / this.workers;
+    if (pace > 0 && Number.isFinite(pace)) this.pace = pace;
     this.hooks.generation?.(msg.top, record.generation, settings, this.kind(settings), this.mode);
     if (msg.best && this.follow.checked && this.mode !== 'scratch') {
       this.hooks.best(msg.best.genome, msg.best.fitness, settings, this.kind(settings));

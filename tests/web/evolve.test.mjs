@@ -7,8 +7,8 @@
  *  - an evaluation worker that crashes mid-run is replaced, its job re-run, and the run's
  *    result is unchanged;
  *  - bad settings are said at once in the plan line, with Evolve off, and start nothing;
- *  - before a run the page says how long it would take (the estimate and the time it took
- *    are printed, figures, not pass marks);
+ *  - after a run the page says how long the settings would take at its pace (none before the
+ *    first; the estimate and the time the run took are printed, figures, not pass marks);
  *  - Evolve runs a tiny budget live on the chosen number of workers (figures change, the chart
  *    is against evaluations, the best walks), Export downloads its run file and Import lists
  *    it back as a module that opens with its own body;
@@ -130,18 +130,19 @@ test('bad settings are said at once in the plan line, with Evolve off, and start
 
 test('Evolve runs live on the chosen workers, the best walks, Export and Import round-trip', async () => {
   await fillRun({ population: '6', seconds: '2', budget: '60', seed: '5', terrain: 'hilly-1-10', workers: '1' });
-  // Before the run: how long it would take at the pace the robot walking now is simulated.
-  await waitForText(page, 'run-estimate', /^On this computer that is about \d+ s on 1 worker \(at \d+x real time, the pace it simulates the robot walking now\)\.$/);
-  const estimated = await figure(page, 'run-estimate');
-  const pace = Number(String(await page.locator('#run-estimate').textContent()).match(/at (\d+)x/)?.[1]);
-  assert.ok(Math.abs(estimated - (66 * 2) / pace) < 0.01 * estimated + 2 / pace, `66 evaluations of 2 s at ${pace}x: ${estimated} s`);
+  // The page's first run: no pace measured yet, so no estimate of how long it takes.
+  await page.waitForTimeout(1_200);
+  assert.equal(await byTestId(page, 'run-estimate').isHidden(), true, 'no estimate before any run');
   const started = Date.now();
   await byTestId(page, 'evolve').click();
   await waitForText(page, 'run-status', /on 1 worker$/);
   await waitForFigure(page, 'run-generation', 'v >= 1');
   const midway = await figure(page, 'run-evaluations');
   await page.waitForFunction(() => document.body.dataset.run === 'finished', undefined, { timeout: 120_000 });
-  console.log(`# the page estimated ${estimated.toFixed(1)} s for 66 evaluations of 2 s on 1 worker; it took ${((Date.now() - started) / 1000).toFixed(1)} s`);
+  const took = (Date.now() - started) / 1000;
+  // After it, the same settings are estimated at its pace.
+  await waitForText(page, 'run-estimate', /^At the pace of the last run here, that is about \d+ s on 1 worker\.$/);
+  console.log(`# a run of 66 evaluations of 2 s on 1 worker took ${took.toFixed(1)} s from the click; the same settings are then estimated at ${(await figure(page, 'run-estimate')).toFixed(1)} s`);
   assert.ok(midway >= 18 && midway <= 66, `evaluations went from ${midway}`);
   assert.equal(await figure(page, 'run-evaluations'), 66, 'population 6 + 5 generations of 12 for a budget of 60');
   assert.match(String(await byTestId(page, 'evaluations').textContent()), /^66 \/ 66$/);

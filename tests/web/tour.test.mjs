@@ -7,7 +7,8 @@
  * viewer walks that robot. Back and Next step through the chapters and the address follows;
  * leaving the tour keeps the playground. The time to open each chapter is printed (from a
  * click on Next to the robot walking; a figure, not a pass mark). The study panel shows its
- * figures and walks a run's best; on a phone a figure scrolls in its own
+ * figures and walks a run's best. On a phone a touch on the page folds the tour's text away
+ * (a new chapter shows it again), and a study figure scrolls in its own
  * box at a readable size. Screenshots: screenshots/tour-N-{1400,420}.png, study-{1400,420}.png.
  */
 import assert from 'node:assert/strict';
@@ -171,6 +172,27 @@ test('the study panel shows its figures, and one click walks a run\'s best robot
   await page.waitForFunction(() => document.getElementById('status')?.textContent === '18 voxels, attention');
   await byTestId(page, 'study').scrollIntoViewIfNeeded();
   await page.screenshot({ path: path.join(SCREENSHOTS, 'study-1400.png') });
+  assert.deepEqual(problems, []);
+  await page.context().close();
+});
+
+test('on a phone a touch on the page folds the tour\'s text away, and the next chapter shows it again', async () => {
+  const { page, problems } = await openPage(env.browser, `${env.url}?chapter=1`, { width: 420, height: 860, touch: true });
+  const box = page.locator('#tour-box');
+  await page.locator('#tour-box[data-state="ready"]').waitFor();
+  assert.equal(await page.locator('#tour-body').isVisible(), true, 'the chapter\'s text shows');
+  const header = await page.locator('header h1').boundingBox();
+  assert.ok(header);
+  await page.touchscreen.tap(header.x + 20, header.y + 10);
+  await page.locator('#tour-box.folded').waitFor();
+  assert.equal(await page.locator('#tour-body').isVisible(), false, 'folded: the text is away');
+  assert.equal(await page.locator('#tour-fold').textContent(), 'Show text');
+  const sheet = await box.boundingBox();
+  assert.ok(sheet && sheet.height < 200, `the folded sheet is small: ${sheet?.height} px`);
+  await byTestId(page, 'tour-next').click();
+  await page.locator('#tour-box[data-chapter="2"]').waitFor();
+  assert.equal(await page.locator('#tour-body').isVisible(), true, 'a new chapter shows its text');
+  assert.equal(await page.locator('#tour-fold').textContent(), 'Hide text');
   assert.deepEqual(problems, []);
   await page.context().close();
 });

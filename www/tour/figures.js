@@ -52,7 +52,7 @@ export const FIGURES = [
     file: 'fig6-rq1-biped-4x3-30000.svg',
     title: 'Freeze the attention and the biped stops',
     paper: 'The paper\'s Fig. 6: with every voxel\'s attention frozen as it was at one moment, the robots barely move.',
-    read: 'Each run\'s best robot, its attention frozen at the second on the horizontal axis, then walked 30 s: its speed. Mind the scale: a few centimetres per second at most, where the same robots walk about 4 m/s unfrozen.',
+    read: 'Each run\'s best robot, its attention frozen at the second on the horizontal axis, then walked 30 s: its speed. Mind the scale: a few centimetres per second at most, where the same robots walk about 4 m/s unfrozen (the line: the middle of the runs, over a whole 30-s walk).',
     runs: [{ kind: 'scratch', shape: 'biped-4x3', evals: 30000, controllers: ['attention'] }],
   },
   {

@@ -14,6 +14,8 @@ import { stage } from './stage.js';
 
 /** How long after a chapter opens its controls are brought into view again, once the page has settled (ms). */
 const SETTLE_MS = 1000;
+/** Where the box is a sheet at the bottom of the screen (tour.css says the same width). */
+const SHEET_MEDIA = '(max-width: 860px)';
 
 /** The address's query parameter that names a chapter. */
 export const CHAPTER_PARAM = 'chapter';
@@ -55,7 +57,7 @@ export class Tour {
     box.innerHTML = `
       <div class="tour-head">
         <label class="tour-count">Learn · chapter <select id="tour-pick" aria-label="Go to chapter"></select> of ${CHAPTERS.length}</label>
-        <button type="button" id="tour-fold" class="tour-fold" aria-expanded="true" title="Fold the text away (Back and Next stay)">–</button>
+        <button type="button" id="tour-fold" class="tour-fold" aria-expanded="true" title="Fold the text away (Back and Next stay)">Hide text</button>
         <button type="button" id="tour-close" class="close" aria-label="Leave the tour" title="Leave the tour (the playground stays as it is)">&times;</button>
       </div>
       <h2 id="tour-chapter" data-testid="tour-chapter"></h2>
@@ -73,7 +75,12 @@ export class Tour {
     box.querySelector('#tour-back')?.addEventListener('click', () => this.open(this.index - 1));
     box.querySelector('#tour-next')?.addEventListener('click', () => this.open(this.index + 1));
     box.querySelector('#tour-close')?.addEventListener('click', () => this.close());
-    box.querySelector('#tour-fold')?.addEventListener('click', () => this.fold());
+    box.querySelector('#tour-fold')?.addEventListener('click', () => this.fold(!box.classList.contains('folded')));
+    // On a phone the sheet covers the lower half: a touch on the page (to do the task, or to
+    // scroll to its result) folds the text away, Back and Next stay; a new chapter unfolds it.
+    doc.addEventListener('pointerdown', (event) => {
+      if (!box.hidden && matchMedia(SHEET_MEDIA).matches && !box.contains(/** @type {Node} */ (event.target))) this.fold(true);
+    }, true);
     return box;
   }
 
@@ -121,6 +128,7 @@ export class Tour {
     /** @type {HTMLElement} */ (this.box.querySelector('#tour-chapter')).textContent = chapter.title;
     /** @type {HTMLSelectElement} */ (this.box.querySelector('#tour-pick')).value = String(i);
     const body = /** @type {HTMLElement} */ (this.box.querySelector('#tour-body'));
+    this.fold(false);
     body.scrollTop = 0;
     body.replaceChildren(...chapter.text.map((t) => paragraph(doc, t)),
       paragraph(doc, chapter.task, 'Do', 'tour-task'), paragraph(doc, chapter.notice, 'Notice', 'tour-notice'));
@@ -196,10 +204,12 @@ export class Tour {
     if (rect.top < 0 || rect.top > bottom - 40) first.scrollIntoView({ block: tall ? 'start' : 'center', behavior: 'instant' });
   }
 
-  /** Folds the chapter's text away, or back. */
-  fold() {
-    const folded = this.box.classList.toggle('folded');
-    this.box.querySelector('#tour-fold')?.setAttribute('aria-expanded', String(!folded));
+  /** Folds the chapter's text away, or back. @param {boolean} folded */
+  fold(folded) {
+    this.box.classList.toggle('folded', folded);
+    const button = /** @type {HTMLElement} */ (this.box.querySelector('#tour-fold'));
+    button.setAttribute('aria-expanded', String(!folded));
+    button.textContent = folded ? 'Show text' : 'Hide text';
   }
 
   /** Leaves the tour: the playground stays as the chapter set it. */
