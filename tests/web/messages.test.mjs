@@ -27,11 +27,16 @@ test('a failed request and a crashed worker keep their messages until closed; a 
   assert.ok(core, 'a core worker runs');
   // The core worker dies on the next question it is asked: a click on the editor asks it to check the drawing.
   // Under load the worker may still be loading its imports, and its module would then install
-  // its own handler after ours: wait until it has, then replace it.
+  // its own handler after ours: wait until it has, then wrap it. Only the check of a drawing
+  // fails: other questions the page may still be asking (it is starting up) are answered.
   await core.evaluate(() => new Promise((resolve) => {
     const replace = () => {
-      if (!self.onmessage) { setTimeout(replace, 10); return; }
-      self.onmessage = () => { throw new Error('the core worker fails on purpose'); };
+      const answer = self.onmessage;
+      if (!answer) { setTimeout(replace, 10); return; }
+      self.onmessage = (/** @type {MessageEvent} */ event) => {
+        if (event.data?.name === 'checkShape') throw new Error('the core worker fails on purpose');
+        return answer.call(self, event);
+      };
       resolve(undefined);
     };
     replace();
