@@ -20,5 +20,6 @@ answerRequests(loadWasm(init, wasm.start), {
   checkGenome: wasm.checkGenome,
   freshSeed: wasm.freshSeed,
   checkTerrain: wasm.checkTerrain,
+  checkGait: wasm.checkGait,
   checkTrainingTerrain: wasm.checkTrainingTerrain,
 });

@@ -86,5 +86,8 @@ export function freshSeed() { return ask('freshSeed'); }
 /** '' or why `name` is not a terrain. @param {string} name @returns {Promise<string>} */
 export function checkTerrain(name) { return ask('checkTerrain', name); }
 
+/** '' or why `text` is not a phase gait "F,PHI". @param {string} text @returns {Promise<string>} */
+export function checkGait(text) { return ask('checkGait', text); }
+
 /** '' or why `name` is not a training terrain (family or name). @param {string} name @returns {Promise<string>} */
 export function checkTrainingTerrain(name) { return ask('checkTrainingTerrain', name); }

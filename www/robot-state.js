@@ -1,9 +1,10 @@
 // @ts-check
 /**
  * The robot's state as the page keeps it across reloads and shares it as a link (share.js
- * writes and reads it as text): the drawing, the chosen family, the viewer's terrain, the run
- * settings and the brain that fits the drawing (with the episode length it was trained on, its
- * training figure and whether it is a one-shot transplant: the speed note's words);
+ * writes and reads it as text): the drawing, the chosen family, the viewer's terrain and phase
+ * gait, the run settings and the brain that fits the drawing (with the episode length it was
+ * trained on, its training figure and whether it is a one-shot transplant: the speed note's
+ * words);
  * and showing such a state on the robot.
  */
 import { describeRun } from './core.js';
@@ -14,11 +15,22 @@ export function pageState(robot) {
   const { drawing, viewer, runs } = robot.parts;
   const brain = robot.brain;
   return {
-    rows: drawing.rows(), controller: robot.controllerSelect.value, terrain: viewer.terrain.value, run: runs.values(),
+    rows: drawing.rows(), controller: robot.controllerSelect.value, terrain: viewer.terrain.value,
+    gait: gaitOf(viewer), run: runs.values(),
     brain: brain && brain.rows === drawing.rows()
       ? { controller: brain.controller, genome: brain.genome, label: brain.label, module: brain.module, seconds: brain.seconds ?? null,
         trained: brain.trained ?? null, oneShot: brain.oneShot ?? false } : null,
   };
+}
+
+/**
+ * The viewer's phase gait as "F,PHI", or null while its inputs do not hold two numbers (a
+ * half-typed gait is not kept: the rest of the state must stay readable).
+ * @param {import('./viewer.js').Viewer} viewer
+ */
+function gaitOf(viewer) {
+  const { frequency, phase } = viewer.gait;
+  return Number.isFinite(frequency.valueAsNumber) && Number.isFinite(phase.valueAsNumber) ? `${frequency.value},${phase.value}` : null;
 }
 
 /**
@@ -34,6 +46,7 @@ export async function applyState(robot, state) {
   drawing.undoStack = [];
   if (defaults.controllers.includes(state.controller)) robot.controllerSelect.value = state.controller;
   if (state.terrain) viewer.terrain.value = state.terrain;
+  if (state.gait) [viewer.gait.frequency.value, viewer.gait.phase.value] = state.gait.split(',').map((v) => v.trim());
   runs.setValues(state.run);
   robot.brain = null;
   if (state.brain) {

@@ -1,15 +1,15 @@
 // @ts-check
 /**
  * The page's state as text: for a link (`#shape=...&controller=...&genome=...`) and for the
- * browser's storage. The state is the drawing, the chosen controller, the viewer's terrain,
- * the run settings, and the genome that drives the robot (base64 of its float32 values,
+ * browser's storage. The state is the drawing, the chosen controller, the viewer's terrain and
+ * phase gait, the run settings, and the genome that drives the robot (base64 of its float32 values,
  * little-endian, so every bit survives) with where it came from, the episode length it was
  * trained on, its training figure and whether it is a one-shot transplant (so that the speed
  * note says after a reload what it said before). Reading checks everything
  * with the core and returns a message instead of a state when anything is wrong, but for the
  * brain: a damaged brain is dropped and the rest kept.
  */
-import { checkGenome, checkShape, checkTerrain, checkTrainingTerrain } from './core.js';
+import { checkGait, checkGenome, checkShape, checkTerrain, checkTrainingTerrain } from './core.js';
 import { messageOf } from './kit.js';
 import { plain } from './message.js';
 
@@ -18,6 +18,7 @@ import { plain } from './message.js';
  * @property {string} rows         the drawing, rows top first
  * @property {string} controller   the family chosen for Evolve
  * @property {string} terrain      the viewer's terrain
+ * @property {string | null} gait   the viewer's phase gait, "F,PHI" (null: the page's default)
  * @property {Record<string, string>} run  run settings: population, seconds, budget, seed, terrain
  * @property {KeptBrain | null} brain what drives the robot
  */
@@ -42,6 +43,7 @@ export function encodeState(state) {
   p.set('shape', state.rows);
   p.set('controller', state.controller);
   p.set('view', state.terrain);
+  if (state.gait) p.set('gait', state.gait);
   for (const k of RUN_KEYS) if (state.run[k] !== undefined) p.set(k === 'terrain' ? 'train' : k, state.run[k]);
   if (state.brain) {
     p.set('brain', state.brain.controller);
@@ -61,7 +63,7 @@ export function encodeState(state) {
 
 /**
  * Reads a state and checks all of it: the robot (valid, and within the grid), the controller,
- * the terrains, every run setting, the genome (the core's checks) and its episode length. A
+ * the terrains, the phase gait, every run setting, the genome (the core's checks) and its episode length. A
  * draft (the kept state of a drawing not finished yet) may be an invalid robot; it then has no
  * brain.
  * @param {string} text URL-hash parameters (with or without '#')
@@ -87,6 +89,9 @@ export async function decodeState(text, controllers, grid, draft = false) {
     const view = p.get('view') ?? '';
     const viewProblem = view ? await checkTerrain(view) : '';
     if (viewProblem) return { error: viewProblem };
+    const gait = p.get('gait'); // links made before it was shared have none
+    const gaitProblem = gait === null ? '' : await checkGait(gait);
+    if (gaitProblem) return { error: gaitProblem };
     /** @type {Record<string, string>} */
     const run = {};
     for (const k of RUN_KEYS) {
@@ -97,7 +102,7 @@ export async function decodeState(text, controllers, grid, draft = false) {
       run[k] = v;
     }
     const read = check.ok && p.get('genome') !== null ? await readBrain(p, rows, controllers) : { brain: null };
-    const state = { rows, controller, terrain: view, run, brain: 'brain' in read ? read.brain : null };
+    const state = { rows, controller, terrain: view, gait, run, brain: 'brain' in read ? read.brain : null };
     return 'error' in read ? { state, damaged: read.error } : { state };
   } catch (error) {
     return { error: messageOf(error) };

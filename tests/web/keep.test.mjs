@@ -58,6 +58,24 @@ test('a shared link opens the same robot, settings and genome in a fresh browser
   await fresh.context.close();
 });
 
+test('a robot on the phase gait is shared with its gait: f and φ come back from the link', async () => {
+  const { page, problems, context } = await openPage(env.browser, env.url);
+  await waitForText(page, 'status', /phase gait$/);
+  await page.locator('details.gait').evaluate((d) => { /** @type {HTMLDetailsElement} */ (d).open = true; });
+  await page.locator('#phase').fill('-0.7');
+  await page.locator('#phase').dispatchEvent('change');
+  await page.locator('#frequency').fill('1.5');
+  await page.locator('#frequency').dispatchEvent('change');
+  const link = await sharedLink(page);
+  assert.match(link, /gait=1\.5%2C-0\.7/);
+  const fresh = await openPage(env.browser, link);
+  await waitForText(fresh.page, 'status', /phase gait$/);
+  assert.deepEqual([await fresh.page.locator('#frequency').inputValue(), await fresh.page.locator('#phase').inputValue()], ['1.5', '-0.7']);
+  assert.deepEqual([...problems, ...fresh.problems], []);
+  await fresh.context.close();
+  await context.close();
+});
+
 test('a damaged link shows a readable message and changes nothing kept', async () => {
   const { page, problems, context } = await openPage(env.browser, env.url);
   await byTestId(page, 'preset').selectOption({ label: 'comb-7x2' });
@@ -70,6 +88,7 @@ test('a damaged link shows a readable message and changes nothing kept', async (
     ['#shape=11&population=-5', /population "-5" is not a whole number/],
     ['#shape=11&view=lava-9', /invalid terrain/],
     ['#shape=11&train=moon', /neither a terrain family/],
+    ['#shape=11&gait=1,fast', /gait '1,fast' is not F,PHI/],
   ])) {
     await page.goto(`${env.url}${hash}`);
     await waitForText(page, 'message', pattern);

@@ -29,8 +29,8 @@ pub use evolution::{evaluate_job, Evolution};
 pub use live::attention_terms;
 pub use module::{describe_run, run_genome};
 pub use page::{
-    check_genome, check_shape, check_terrain, check_training_terrain, defaults, fresh_seed, remap,
-    transplant,
+    check_gait, check_genome, check_shape, check_terrain, check_training_terrain, defaults,
+    fresh_seed, remap, transplant,
 };
 pub use plan::run_plan;
 

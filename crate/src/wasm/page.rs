@@ -9,7 +9,7 @@ use wasm_bindgen::prelude::{wasm_bindgen, JsError, JsValue};
 use crate::controllers::{remap_genome, ControllerKind};
 use crate::experiment::playground::{self, PAGE_CONTROLLERS};
 use crate::experiment::seeds::{evaluation_seed, Purpose};
-use crate::experiment::{self, RunFile, TrainingTerrain};
+use crate::experiment::{self, PhaseGait, RunFile, TrainingTerrain};
 use crate::simulation::{Shape, Terrain};
 
 /// The page's defaults, from the core (`experiment::playground`): `{grid: {width, height},
@@ -137,6 +137,13 @@ pub fn fresh_seed() -> Result<f64, JsError> {
 #[wasm_bindgen(js_name = checkTerrain)]
 pub fn check_terrain(name: &str) -> String {
     Terrain::parse(name).map_or_else(|e| e.to_string(), |_| String::new())
+}
+
+/// `''` when `text` is a phase gait `F,PHI` (frequency in Hz, phase per column in rad, as
+/// `vsr --gait` reads it), else why not, in words.
+#[wasm_bindgen(js_name = checkGait)]
+pub fn check_gait(text: &str) -> String {
+    PhaseGait::parse(text).map_or_else(|e| e.to_string(), |_| String::new())
 }
 
 /// `''` when `name` is a training terrain (a family such as `hilly-1-10`, or a terrain
