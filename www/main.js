@@ -55,6 +55,7 @@ const editor = new Editor(el('editor'), drawing, {
 const viewer = new Viewer(document, {
   message: showMessage,
   clicked: (pick) => editWalking(robot, pick),
+  missed: () => messages.show('Click a voxel to remove it, or a spot right next to one (its own width away at most) to add one there.', 'note'),
 });
 const keeper = new Keeper(defaults, el('share-link'), {
   state: () => pageState(robot),

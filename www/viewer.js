@@ -21,6 +21,7 @@ const MAX_RESTARTS = 3;
  * @typedef {object} ViewerHooks
  * @property {(text: string) => void} message  shows an error
  * @property {(pick: {voxel: number, dx: number, dy: number}) => void} clicked  a click on or next to a voxel
+ * @property {() => void} missed  a click on the scene neither on nor next to a voxel
  */
 
 export class Viewer {
@@ -65,7 +66,7 @@ export class Viewer {
     }
     this.canvas.addEventListener('click', (e) => {
       const pick = this.renderer.pick(e.clientX, e.clientY);
-      if (pick) this.hooks.clicked(pick);
+      if (pick) this.hooks.clicked(pick); else this.hooks.missed();
     });
     this.attention.canvas.addEventListener('click', (e) => {
       const voxel = this.attention.pick(e.clientX, e.clientY);

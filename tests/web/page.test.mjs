@@ -162,7 +162,7 @@ test('clicking a voxel of the walking robot removes it where it stands, in its p
   assert.deepEqual(problems, []);
 });
 
-test('clicking next to the robot adds a voxel; an edit that would split it is refused', async () => {
+test('clicking next to the robot adds a voxel, a click too far says where to click; an edit that would split it is refused', async () => {
   await page.locator('#rows').fill('111');
   await page.locator('#rows').press('Enter');
   await waitForText(page, 'status', /^3 voxels/);
@@ -173,6 +173,10 @@ test('clicking next to the robot adds a voxel; an edit that would split it is re
   await byTestId(page, 'viewer').click({ position: { x: box.right + 0.45 * cell, y: (box.top + box.bottom) / 2 } });
   await waitForText(page, 'status', /^4 voxels/);
   assert.equal(await page.locator('#rows').inputValue(), '1111', 'a voxel added on the right');
+  const far = await settledRobotBox();
+  await byTestId(page, 'viewer').click({ position: { x: far.right + 2.5 * cell, y: (far.top + far.bottom) / 2 } });
+  await waitForText(page, 'message', /^Click a voxel to remove it, or a spot right next to one/);
+  assert.equal(await page.locator('#rows').inputValue(), '1111', 'a click too far away changes nothing, and says why');
   await page.locator('#undo').click();
   await waitForText(page, 'status', /^3 voxels/);
   await settledRobotBox();
