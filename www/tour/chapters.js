@@ -87,6 +87,7 @@ export const CHAPTERS = [
       'Nobody wrote these brains: evolution found them. It starts with a population of random brains (here 20) and walks each one for an episode (10 s) on hilly ground. Its fitness is its speed: the distance walked divided by the time.',
       'The fastest become parents; their children are copies with small random changes, or mixes of two parents. Each round is a generation; each walk measured is an evaluation.',
       'The study gave every run 30,000 evaluations with 100 brains and 30-s episodes; this quick run has 2,000.',
+      'Its seed (under “Run”) fixes every random draw: the same seed gives the same run, on any computer, so a class can all watch the same evolution; another seed, another one.',
     ],
     task: 'Press Evolve.',
     notice: 'The chart climbs as generations pass, and the robot switches to the best brain so far every few seconds. Each evaluation is on freshly drawn hills, so a lucky walk can score high once: the line wobbles.',
