@@ -7,6 +7,7 @@
 #   make bench-wasm  speed of the wasm build in Node (figures for the README)
 #   make web-package the npm-ready web package (wasm core + <vsr-robot>) in target/web-package
 #   make bench-native-v3  opt-in: native speed built for x86-64-v3 (AVX2) CPUs only
+#   make test-browsers    opt-in: the page in Firefox and WebKitGTK gives vsr's results (tests/browsers/)
 
 SHELL := /bin/bash
 export PATH := $(HOME)/.cargo/bin:$(PATH)
@@ -17,7 +18,7 @@ WASM_PACK_BUILD := wasm-pack build --release --target web --out-dir www/pkg --ou
 .NOTPARALLEL:
 
 .PHONY: run test setup setup-test wasm serve lint test-native test-wasm test-web test-cluster \
-	test-parallel test-slurm test-python bench-wasm bench-native-v3 bench-python web-package
+	test-parallel test-slurm test-python test-browsers bench-wasm bench-native-v3 bench-python web-package
 
 run: setup wasm serve
 
@@ -80,6 +81,15 @@ test-wasm:
 ## The page in headless Chromium (needs `make wasm`).
 test-web:
 	node --test tests/web/
+
+## Opt-in, not part of `make test`: the page in Debian firefox-esr (puppeteer-core) and
+## WebKitGTK (WebKitWebDriver, MiniBrowser under xvfb-run) walks, evolves as `vsr evolve` and
+## measures as `vsr evaluate` (docs/playground.md); prints its figures and times.
+test-browsers:
+	bash scripts/setup.sh --browsers
+	$(WASM_PACK_BUILD)
+	$(if $(VSR_BIN),,cargo build --release --bin vsr)
+	xvfb-run -a node --test --test-concurrency=1 tests/browsers/
 
 ## The wasm core and <vsr-robot> as an npm package, and its size (docs/embed.md).
 web-package: setup wasm

@@ -8,6 +8,8 @@
 #                             Debian parallel, slurm-wlm and munge for the campaign recipes' tests,
 #                             and a Python virtual environment (target/py-venv) with maturin,
 #                             numpy, pytest and cma from PyPI for the Python package's tests
+#   scripts/setup.sh --browsers the same as without a flag, plus Debian firefox-esr, webkit2gtk-driver
+#                             (WebKitWebDriver and MiniBrowser), xvfb and xauth for `make test-browsers`
 set -euo pipefail
 
 cd "$(dirname "$0")/.."
@@ -15,10 +17,12 @@ export PATH="$HOME/.cargo/bin:$PATH"
 
 WASM_PACK_VERSION=0.15.1
 with_test=0
+with_browsers=0
 for arg in "$@"; do
   case "$arg" in
     --test) with_test=1 ;;
-    *) echo "setup.sh: unknown argument '$arg' (expected --test)" >&2; exit 2 ;;
+    --browsers) with_browsers=1 ;;
+    *) echo "setup.sh: unknown argument '$arg' (expected --test or --browsers)" >&2; exit 2 ;;
   esac
 done
 
@@ -104,6 +108,20 @@ chromium() {
   fi
 }
 
+# The page in Firefox and WebKitGTK (tests/browsers/): their Debian builds, and an X server
+# for MiniBrowser's window.
+browsers() {
+  local missing=()
+  [ -x /usr/bin/firefox-esr ] || missing+=(firefox-esr)
+  [ -x /usr/bin/WebKitWebDriver ] || missing+=(webkit2gtk-driver)
+  command -v xvfb-run >/dev/null || missing+=(xvfb)
+  command -v xauth >/dev/null || missing+=(xauth)
+  if [ ${#missing[@]} -gt 0 ]; then
+    say "installing Debian ${missing[*]}"
+    apt_install "${missing[@]}"
+  fi
+}
+
 # The campaign recipes' tests (tests/cluster/): GNU parallel, and a single-node Slurm.
 cluster_tools() {
   local missing=()
@@ -141,4 +159,5 @@ wasm_pack
 wasm_bindgen_cli
 npm_packages
 if [ "$with_test" -eq 1 ]; then chromium; cluster_tools; python_tools; fi
+if [ "$with_browsers" -eq 1 ]; then browsers; fi
 say "ok"

@@ -23,6 +23,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 import { timeLeft } from '../../www/run-progress.js';
+import { TINY, evolveInPage, evolveNative, statistics } from './evolution.mjs';
 import { BIN, byTestId, figure, openPage, screenshot, start, waitForFigure, waitForText } from './harness.mjs';
 
 /** @type {Awaited<ReturnType<typeof start>>} */ let env;
@@ -41,35 +42,11 @@ after(async () => {
   await rm(tmp, { recursive: true, force: true });
 });
 
-const TINY = { shape: '1111-1111-1001', controller: 'attention', seed: 3, seconds: 2, terrain: 'flat', population: 6, budget: 18 };
-
 /**
- * Runs a whole evolution in a coordinator worker, as the page does.
- * @param {number} workers @param {boolean} crash make worker 1 crash during generation 1
- * @returns {Promise<{run: any, recovered: string[]}>}
+ * Runs the tiny evolution in the page's workers. @param {number} workers
+ * @param {boolean} crash make worker 1 crash during generation 1
  */
-function evolveInWorkers(workers, crash = false) {
-  return page.evaluate(async ([settings, workers, crash]) => {
-    const { FromCoordinator, ToCoordinator } = await import('./protocol.js');
-    const coordinator = new Worker('./coordinator.js', { type: 'module' });
-    /** @type {string[]} */
-    const recovered = [];
-    const text = await new Promise((resolve, reject) => {
-      coordinator.onmessage = ({ data }) => {
-        if (data.type === FromCoordinator.STARTED && crash) coordinator.postMessage({ type: ToCoordinator.CRASH_WORKER, index: 1 });
-        if (data.type === FromCoordinator.RECOVERED) recovered.push(data.message);
-        if (data.type === FromCoordinator.DONE) resolve(data.runFile);
-        if (data.type === FromCoordinator.ERROR) reject(new Error(data.message));
-      };
-      coordinator.postMessage({ type: ToCoordinator.START, settings, workers, source: null });
-    });
-    coordinator.terminate();
-    return { run: JSON.parse(text), recovered };
-  }, /** @type {const} */ ([TINY, workers, crash]));
-}
-
-/** @param {any} run the statistics of every generation, wall time aside */
-const statistics = (run) => run.generations.map((/** @type {any} */ g) => ({ ...g, wall_seconds: 0 }));
+const evolveInWorkers = (workers, crash = false) => page.evaluate(evolveInPage, /** @type {[typeof TINY, number, boolean]} */ ([TINY, workers, crash]));
 
 test('a tiny evolution is the same with 1 and 2 workers and as vsr evolve, bit for bit', async () => {
   const one = (await evolveInWorkers(1)).run;
@@ -79,10 +56,7 @@ test('a tiny evolution is the same with 1 and 2 workers and as vsr evolve, bit f
   assert.deepEqual([one.timing.threads, two.timing.threads], [1, 2]);
   assert.deepEqual(statistics(two), statistics(one));
   assert.deepEqual(two.best.genome, one.best.genome);
-  const out = path.join(tmp, 'native.json');
-  execFileSync(BIN, ['evolve', '--shape', 'biped-4x3', '--controller', 'attention', '--evals', '18',
-    '--seed', '3', '--seconds', '2', '--terrain', 'flat', '--population', '6', '--threads', '1', '--out', out]);
-  const native = JSON.parse(await readFile(out, 'utf8'));
+  const native = await evolveNative(path.join(tmp, 'native.json'));
   assert.deepEqual(statistics(native), statistics(one), 'every generation as vsr evolve runs it');
   assert.deepEqual(native.best.genome, one.best.genome, 'the best genome as vsr evolve finds it');
   assert.equal(native.best.fitness, one.best.fitness);
