@@ -44,7 +44,7 @@ export async function checkBrowser(launch) {
     const messages = await tab.run(() => [...document.querySelectorAll('.message[data-kind="error"]')].map((m) => m.textContent), undefined);
     assert.deepEqual(messages, [], 'the page said no error');
     assert.deepEqual(tab.problems ?? [], [], 'no console or page error');
-    console.log(`# ${tab.name}: all checks took ${((Date.now() - started) / 1000).toFixed(1)} s`);
+    console.log(`${tab.name}: all checks took ${((Date.now() - started) / 1000).toFixed(1)} s`);
   } finally {
     await tab.close();
     served.server.close();
@@ -56,7 +56,7 @@ export async function checkBrowser(launch) {
 function timer(name) {
   let last = Date.now();
   return (/** @type {string} */ line) => {
-    console.log(`# ${name}: ${line} (${((Date.now() - last) / 1000).toFixed(1)} s)`);
+    console.log(`${name}: ${line} (${((Date.now() - last) / 1000).toFixed(1)} s)`);
     last = Date.now();
   };
 }
@@ -94,7 +94,7 @@ async function evolution(tab, tmp) {
  */
 async function episodeSpeed(tab) {
   await tab.fill('#terrain', TERRAIN);
-  await waitFor(tab, (file) => document.querySelector(`[data-testid="pretrained"] option[value="${file}"]`), ATTENTION, 'the pretrained modules listed');
+  await waitFor(tab, (file) => document.querySelector(`[data-testid="pretrained"] option[value="${file}"]`) !== null, ATTENTION, 'the pretrained modules listed');
   await tab.select('[data-testid="pretrained"]', ATTENTION);
   await tab.click('#module-open');
   await waitFor(tab, () => document.getElementById('status')?.textContent === '10 voxels, attention', undefined, 'the module on its own body');
@@ -106,6 +106,6 @@ async function episodeSpeed(tab) {
   assert.match(String(said), new RegExp(`over its ${seconds}-s episode on ${TERRAIN}`));
   const cli = JSON.parse(execFileSync(BIN, ['evaluate', '--genome', path.join(ROOT, ATTENTION), '--terrain', TERRAIN,
     '--seconds', String(seconds)], { encoding: 'utf8' })).velocity;
-  assert.ok(Math.abs(viewed - cli) <= 1e-9, `viewer ${viewed} m/s, vsr evaluate ${cli} m/s`);
+  assert.equal(viewed, cli, `viewer ${viewed} m/s, vsr evaluate ${cli} m/s`);
   return { seconds, viewed, cli };
 }

@@ -16,7 +16,7 @@ export async function launchFirefox() {
   page.on('console', (msg) => { if (msg.type() === 'error') problems.push(`console: ${msg.text()}`); });
   page.on('pageerror', (error) => problems.push(`page error: ${error.message}`));
   return {
-    name: `Firefox ${await browser.version()}`,
+    name: `Firefox ${(await browser.version()).replace(/^firefox\//, '')}`,
     problems,
     goto: async (url) => { await page.goto(url, { waitUntil: 'load' }); },
     run: (fn, arg) => page.evaluate(fn, arg),

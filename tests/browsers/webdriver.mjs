@@ -4,10 +4,10 @@
  * as a {@link import('./tab.mjs').Tab}. Spec: https://www.w3.org/TR/webdriver2/
  */
 
-/** The key "Enter" in WebDriver's Send Keys. */
-const ENTER = '\uE007';
+/** Keys in WebDriver's Send Keys: Enter, and Control (held until the command's end). */
+const [ENTER, CONTROL] = ['\uE007', '\uE009'];
 /** The key under which WebDriver answers an element reference. */
-const ELEMENT = 'element-6066-11e4-a52b-4f735466cecc';
+const ELEMENT = 'element-6066-11e4-a52e-4f735466cecf';
 
 /**
  * Opens a session on the driver at `base` with `capabilities`.
@@ -33,8 +33,10 @@ export async function openSession(base, capabilities) {
     },
     click: async (selector) => { await at('POST', `${await element(selector)}/click`, [{}]); },
     fill: async (selector, text) => {
+      // As a person does: select all (Control+A; Element Clear would commit an empty value),
+      // then type and press Enter (a second command: the held Control ends with the first).
       const input = await element(selector);
-      await at('POST', `${input}/clear`, [{}]);
+      await at('POST', `${input}/value`, [{ text: `${CONTROL}a` }]);
       await at('POST', `${input}/value`, [{ text: text + ENTER }]);
     },
     select: async (selector, value) => {
