@@ -121,6 +121,46 @@ fn plan_run_merge_report_and_resume() {
     let _ = fs::remove_dir_all(dir);
 }
 
+/// A group's `earlier` budget: the report reads the same runs at the shorter budget (their
+/// start), pairs them by seed and says whether the order changes.
+#[test]
+fn the_report_reads_runs_at_an_earlier_budget() {
+    let (dir, file) = smoke("earlier");
+    let base = fs::read_to_string(&file).unwrap();
+    let longer = "\n[[evolve]]\nname = \"longer\"\nshapes = [\"worm-3x1\"]\n\
+                  controllers = [\"attention\", \"mlp\"]\nevals = [16]\nearlier = [8]\n";
+    fs::write(&file, base + longer).unwrap();
+    let run = vsr(&["campaign", "run", &file, "--jobs", "2"]);
+    assert!(run.status.success(), "{}", text(&run));
+    let out = dir.join("smoke-out");
+    let runs = |evals: u64| -> Vec<serde_json::Value> {
+        (1..=3)
+            .map(|seed| {
+                let path = out.join(format!("runs/worm-3x1-attention-{evals}-s{seed}.json"));
+                serde_json::from_slice(&fs::read(path).unwrap()).unwrap()
+            })
+            .collect()
+    };
+    for (short, long) in runs(8).iter().zip(runs(16)) {
+        let best = |r: &serde_json::Value, g: usize| r["generations"][g]["best"].clone();
+        assert_eq!(
+            best(short, 1),
+            best(&long, 1),
+            "the shorter run is the start"
+        );
+    }
+    let report = vsr(&["report", &file]);
+    assert!(report.status.success(), "{}", text(&report));
+    let md = fs::read_to_string(out.join("report/report.md")).unwrap();
+    assert!(md.contains("### The same runs at 8 evaluations"), "{md}");
+    assert!(md.contains("| attention | unseen mean | 3 |"), "{md}");
+    assert!(
+        md.contains("| attention | mlp | unseen mean | 3+3 |"),
+        "{md}"
+    );
+    let _ = fs::remove_dir_all(dir);
+}
+
 #[test]
 fn a_killed_job_leaves_no_file() {
     let (dir, _) = smoke("kill");

@@ -19,6 +19,7 @@
 //! controllers = ["attention", "mlp", "mlp-comm"]
 //! evals = [30000]
 //! ablate = true                  # ablate each best with attention (attention, slow-attention)
+//! earlier = [20000]              # report the same runs read at a shorter budget (its files)
 //!
 //! [[finetune]]                   # SPEC 10: source runs, fine-tuned, against from scratch
 //! name = "rq2"
@@ -117,6 +118,11 @@ pub struct EvolveGroup {
     /// Ablate every best individual that has attention.
     #[serde(default)]
     pub ablate: bool,
+    /// Shorter budgets to read the same runs at (reported beside the group, not run): a run
+    /// from scratch with the same shape, controller and seed and a shorter budget is the
+    /// longer run's start, so its files say where the longer run stood then.
+    #[serde(default)]
+    pub earlier: Vec<u64>,
 }
 
 /// Fine-tuning: for every pair and seed, a source run on the pair's first shape, its best
@@ -202,6 +208,13 @@ impl Campaign {
                     g.name
                 ));
             }
+            let shortest = g.evals.iter().min().copied().unwrap_or(0);
+            if let Some(e) = g.earlier.iter().find(|&&e| e == 0 || e >= shortest) {
+                return bad(format!(
+                    "group '{}': earlier budget {e} must be above 0 and below its budgets",
+                    g.name
+                ));
+            }
         }
         for g in &self.finetune {
             for pair in &g.pairs {
@@ -258,5 +271,10 @@ mod tests {
             .unwrap_err()
             .to_string()
             .contains("attention"));
+        let later = "output = \"o\"\nseeds = [1]\n[[evolve]]\nname = \"a\"\nshapes = [\"comb-7x2\"]\ncontrollers = [\"mlp\"]\nevals = [10]\nearlier = [10]\n";
+        assert!(Campaign::parse(later)
+            .unwrap_err()
+            .to_string()
+            .contains("earlier budget 10"));
     }
 }

@@ -129,6 +129,25 @@ pub fn runs(c: &Campaign) -> Vec<RunSpec> {
     all
 }
 
+/// The runs of every evolve group read at its `earlier` budgets: not run by the campaign,
+/// read when their files exist (a shorter run from scratch is the longer run's start).
+pub fn earlier_runs(c: &Campaign) -> Vec<RunSpec> {
+    let mut all = Vec::new();
+    for g in &c.evolve {
+        let seeds = g.seeds.as_ref().unwrap_or(&c.seeds);
+        for shape in &g.shapes {
+            for &controller in &g.controllers {
+                for &evals in &g.earlier {
+                    for &seed in seeds {
+                        all.push(RunSpec::scratch(shape, controller, evals, seed));
+                    }
+                }
+            }
+        }
+    }
+    all
+}
+
 /// A fine-tuning group's runs: sources, from-scratch comparisons, fine-tunings.
 pub fn finetune_runs(c: &Campaign, g: &super::file::FinetuneGroup) -> Vec<RunSpec> {
     let seeds = g.seeds.as_ref().unwrap_or(&c.seeds);

@@ -3,7 +3,7 @@
 //! them and says what is missing.
 
 use super::file::Campaign;
-use super::plan::{runs, RunSpec};
+use super::plan::{earlier_runs, runs, RunSpec};
 use crate::experiment::{AblationPoint, RunFile, Validation, ValidationSet};
 use crate::study::fidelity::Fidelity;
 use std::collections::BTreeMap;
@@ -67,6 +67,9 @@ pub struct Results {
     pub campaign: Campaign,
     /// Data of every planned run, in plan order (possibly empty).
     pub data: Vec<(RunSpec, RunData)>,
+    /// Data of the runs read at the evolve groups' `earlier` budgets (not planned: never
+    /// listed as missing).
+    pub earlier: Vec<(RunSpec, RunData)>,
     /// Planned output files not found.
     pub missing: Vec<PathBuf>,
     /// The fidelity measurements found, with their reference files, in campaign order.
@@ -74,10 +77,12 @@ pub struct Results {
 }
 
 impl Results {
-    /// The data of `spec`, to fill in (`None` when the run is not planned).
+    /// The data of `spec`, to fill in (`None` when the run is neither planned nor read at
+    /// an earlier budget).
     pub fn of_mut(&mut self, spec: &RunSpec) -> Option<&mut RunData> {
         self.data
             .iter_mut()
+            .chain(self.earlier.iter_mut())
             .find(|(s, _)| s == spec)
             .map(|(_, d)| d)
     }
@@ -88,17 +93,27 @@ impl Results {
             .into_iter()
             .map(|r| (r, RunData::default()))
             .collect();
+        let earlier = earlier_runs(&campaign)
+            .into_iter()
+            .map(|r| (r, RunData::default()))
+            .collect();
         Results {
             campaign,
             data,
+            earlier,
             missing: Vec::new(),
             fidelity: Vec::new(),
         }
     }
 
-    /// The data of `spec` (empty when the run is not planned).
+    /// The data of `spec` (empty when the run is neither planned nor read at an earlier
+    /// budget).
     pub fn of(&self, spec: &RunSpec) -> RunData {
-        let found = self.data.iter().find(|(s, _)| s == spec);
+        let found = self
+            .data
+            .iter()
+            .chain(&self.earlier)
+            .find(|(s, _)| s == spec);
         found.map(|(_, d)| d.clone()).unwrap_or_default()
     }
 

@@ -24,6 +24,7 @@ use figures::{band, best_series, box_of, rate_series, Figure, Plot};
 use std::fmt::Write;
 
 mod ablation;
+mod earlier;
 mod families;
 mod fidelity;
 pub mod figures;
@@ -121,6 +122,7 @@ fn evolve_section(
     summary_table(&samples, sets, md);
     comparisons(tests, md);
     plateau::plateau_table(&samples, md);
+    earlier::earlier_part(results, g, (shape, evals), md);
     let bands = samples
         .iter()
         .filter_map(|s| band(&s.label, &best_series(&s.runs, 0.0)));

@@ -85,7 +85,8 @@ pub fn create_folders(out: &Path, jobs: &[Job]) -> Result<()> {
         .map_err(|e| Error::Io(format!("cannot create {}/logs: {e}", out.display())))
 }
 
-/// Reads every planned output that exists; the others are listed as missing.
+/// Reads every planned output that exists, the others listed as missing, and the files of
+/// the runs read at earlier budgets that exist.
 pub fn load_results(campaign: Campaign, out: &Path) -> Result<Results> {
     let jobs = plan(&campaign, out);
     let mut results = Results::new(campaign);
@@ -94,7 +95,8 @@ pub fn load_results(campaign: Campaign, out: &Path) -> Result<Results> {
         .filter(|j| !j.out.exists())
         .map(|j| j.out.clone())
         .collect();
-    let specs: Vec<_> = results.data.iter().map(|(s, _)| s.clone()).collect();
+    let planned = results.data.iter().chain(&results.earlier);
+    let specs: Vec<_> = planned.map(|(s, _)| s.clone()).collect();
     for spec in specs {
         let run = read_json(&spec.run_path(out), RunFile::from_json)?;
         let mut validation = std::collections::BTreeMap::new();
