@@ -53,7 +53,7 @@ export class ModuleList {
         const mean = Number(m.validation?.unseen?.mean);
         const speed = Number.isFinite(mean) ? `, ${unseenWords(mean)}` : '';
         const from = m.finetuned_from ? ` fine-tuned from ${m.finetuned_from}` : '';
-        const label = `${m.controller} on ${m.shape}${from} (${m.evaluations} evaluations${speed})`;
+        const label = `${m.controller} on ${m.shape}${from} (evolved for ${m.evaluations.toLocaleString('en')} evaluations${speed})`;
         this.select.append(new Option(label, PRETRAINED_DIR + m.file));
       }
       this.describe();
@@ -164,7 +164,7 @@ export class ModuleList {
  * @param {number} mean m/s, the mean over the ten terrains
  */
 export function unseenWords(mean) {
-  return `mean ${mean.toFixed(2)} m/s on ten unseen terrains`;
+  return `on average ${mean.toFixed(2)} m/s on ten terrains it never trained on`;
 }
 
 /** @param {string} url @returns {Promise<Response>} the response, or throws on an HTTP error */
