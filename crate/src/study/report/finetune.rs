@@ -1,51 +1,113 @@
 //! The RQ2 section of the report: fine-tuning against from scratch on a target shape (the
 //! summary and tests, the convergence table at matched evaluation counts, Fig. 7).
 
-use super::families::Comparison;
+use super::families::{Comparison, ALPHA};
 use super::figures::{band, best_series};
 use super::samples::{finetune_samples, Sample};
 use super::tables::{comparisons, summary_table};
 use super::{push_lines, Report};
 use crate::study::campaign::file::FinetuneGroup;
 use crate::study::campaign::{Results, RunData, RunSpec};
-use crate::study::statistics::{mann_whitney, Summary};
+use crate::study::statistics::{holm, mann_whitney, Summary, UTest};
 use std::fmt::Write;
 
-/// The paper's RQ2 claim is about speed ("fine-tuning reaches from-scratch quality in far
-/// fewer evaluations"): the best after the same number of evaluations on the target shape (a
-/// quarter, half and all of the fine-tuning budget), tested; and when the fine-tuned runs'
-/// median best first reaches the from-scratch runs' final median.
-fn convergence_part(tuned: &Sample, scratch: &Sample, md: &mut String) {
-    // The evaluation counts of the fine-tuned runs' generations (the first run's grid).
-    let Some(grid) = tuned.runs.iter().find_map(|d| d.run.as_ref()) else {
-        return;
+/// The shares of the fine-tuning budget at which the runs are compared (a quarter, half, all).
+const SHARES: [u64; 3] = [4, 2, 1];
+
+/// The evaluation counts of the fine-tuned runs' generations (the first run's grid).
+fn grid_of(tuned: &Sample) -> Option<Vec<u64>> {
+    let run = tuned.runs.iter().find_map(|d| d.run.as_ref())?;
+    Some(run.generations.iter().map(|g| g.evaluations).collect())
+}
+
+fn at(runs: &[RunData], e: u64) -> Vec<f64> {
+    runs.iter().filter_map(|d| d.best_at(e)).collect()
+}
+
+/// A test at a matched count: the share of the budget, the count, both samples, the U test.
+type Matched = (u64, u64, Vec<f64>, Vec<f64>, UTest);
+
+/// The tests at matched counts, one per share.
+fn matched(tuned: &Sample, scratch: &Sample) -> Vec<Matched> {
+    let Some(grid) = grid_of(tuned) else {
+        return Vec::new();
     };
-    let grid: Vec<u64> = grid.generations.iter().map(|g| g.evaluations).collect();
-    let Some(&budget) = grid.last() else {
-        return;
-    };
-    let at = |runs: &[RunData], e: u64| -> Vec<f64> {
-        runs.iter().filter_map(|d| d.best_at(e)).collect()
-    };
-    let _ = writeln!(
-        md,
-        "Convergence: best fitness after the same number of evaluations on the target shape \
-         (the fine-tuning budget's quarter, half and whole):\n\n\
-         | evaluations | median fine-tuned | median from scratch | U | p | A12 | method |\n\
-         |---|---|---|---|---|---|---|"
-    );
-    for share in [4, 2, 1] {
+    let budget = *grid.last().expect("a run has generations");
+    let mut rows = Vec::new();
+    for share in SHARES {
         let Some(&e) = grid.iter().rev().find(|&&e| e <= budget / share) else {
             continue;
         };
         let (x, y) = (at(&tuned.runs, e), at(&scratch.runs, e));
-        if x.is_empty() || y.is_empty() {
-            continue;
+        if !x.is_empty() && !y.is_empty() {
+            let t = mann_whitney(&x, &y);
+            rows.push((share, e, x, y, t));
         }
-        let t = mann_whitney(&x, &y);
+    }
+    rows
+}
+
+/// Holm's correction of the matched-count tests (docs/ANALYSIS-PLAN.md, family 5): at each
+/// share of the budget, over the group's transfers. Keyed by (transfer, share): (adjusted p,
+/// the family's size).
+pub(super) fn convergence_holm(
+    results: &Results,
+    g: &FinetuneGroup,
+) -> std::collections::HashMap<(String, u64), (f64, usize)> {
+    let mut by_share: std::collections::BTreeMap<u64, Vec<(String, f64)>> = Default::default();
+    for pair in &g.pairs {
+        let (samples, _) = compared(results, g, pair);
+        if let [tuned, scratch] = &samples[..] {
+            for (share, _, _, _, t) in matched(tuned, scratch) {
+                by_share
+                    .entry(share)
+                    .or_default()
+                    .push((pair.join(" -> "), t.p));
+            }
+        }
+    }
+    let mut out = std::collections::HashMap::new();
+    for (share, tests) in by_share {
+        let p: Vec<f64> = tests.iter().map(|(_, p)| *p).collect();
+        for ((pair, _), adjusted) in tests.into_iter().zip(holm(&p)) {
+            out.insert((pair, share), (adjusted, p.len()));
+        }
+    }
+    out
+}
+
+/// The paper's RQ2 claim is about speed ("fine-tuning reaches from-scratch quality in far
+/// fewer evaluations"): the best after the same number of evaluations on the target shape (a
+/// quarter, half and all of the fine-tuning budget), tested, Holm-adjusted over the transfers;
+/// and when the fine-tuned runs' median best first reaches the from-scratch runs' final median.
+fn convergence_part(
+    tuned: &Sample,
+    scratch: &Sample,
+    holm: impl Fn(u64) -> Option<(f64, usize)>,
+    md: &mut String,
+) {
+    let Some(grid) = grid_of(tuned) else {
+        return;
+    };
+    let budget = *grid.last().expect("a run has generations");
+    let _ = writeln!(
+        md,
+        "Convergence: best fitness after the same number of evaluations on the target shape \
+         (the fine-tuning budget's quarter, half and whole); p (Holm) over the group's \
+         transfers at the same share of the budget, of k tests:\n\n\
+         | evaluations | median fine-tuned | median from scratch | U | p | p (Holm) | A12 | method | outcome |\n\
+         |---|---|---|---|---|---|---|---|---|"
+    );
+    for (share, e, x, y, t) in matched(tuned, scratch) {
+        let (adjusted, k) = holm(share).unwrap_or((t.p, 1));
+        let outcome = match (adjusted < ALPHA, t.a12 > 0.5) {
+            (true, true) => "fine-tuned ahead",
+            (true, false) => "from scratch ahead",
+            (false, _) => "no difference detected",
+        };
         let _ = writeln!(
             md,
-            "| {e} | {:.3} (n={}) | {:.3} (n={}) | {} | {:.4} | {:.2} | {:?} |",
+            "| {e} | {:.3} (n={}) | {:.3} (n={}) | {} | {:.4} | {adjusted:.4} (k={k}) | {:.2} | {:?} | {outcome} |",
             Summary::of(&x).median,
             x.len(),
             Summary::of(&y).median,
@@ -98,20 +160,18 @@ fn prefix_stand_in(
     (to, scratch_evals): (&str, u64),
     seeds: &[u64],
     scratch: &Sample,
-    r: &mut Report,
-) -> Sample {
+) -> (Sample, Option<String>) {
     // Only a shorter run that covers the fine-tuning budget can stand in.
     if !(g.evals <= g.source_evals && g.source_evals < scratch_evals) {
-        return scratch.clone();
+        return (scratch.clone(), None);
     }
     let spec = RunSpec::scratch(to, g.controller, g.source_evals, 0);
     let runs = results.seeds_of(&spec, seeds);
     let finished = scratch.runs.len();
     if finished >= runs.len() {
-        return scratch.clone();
+        return (scratch.clone(), None);
     }
-    let _ = writeln!(
-        r.markdown,
+    let note = format!(
         "Only {finished} of the {} from-scratch runs of {scratch_evals} evaluations exist: the \
          convergence table and the figure use the {} {to} runs of {} evaluations with the same \
          seeds instead, which are their first generations bit for bit.\n",
@@ -119,10 +179,27 @@ fn prefix_stand_in(
         runs.len(),
         g.source_evals
     );
-    Sample {
+    let sample = Sample {
         label: format!("from scratch (first {} of {scratch_evals})", g.source_evals),
         runs,
+    };
+    (sample, Some(note))
+}
+
+/// The samples of a transfer as the convergence table and Fig. 7 compare them (the
+/// from-scratch runs possibly stood in for by their prefixes), with the note saying so.
+fn compared(
+    results: &Results,
+    g: &FinetuneGroup,
+    pair: &[String; 2],
+) -> (Vec<Sample>, Option<String>) {
+    let seeds = g.seeds.as_ref().unwrap_or(&results.campaign.seeds);
+    let mut samples = finetune_samples(results, g, pair);
+    let mut note = None;
+    if let (Some(evals), [_, scratch]) = (g.scratch_evals, &mut samples[..]) {
+        (*scratch, note) = prefix_stand_in(results, g, (&pair[1], evals), seeds, scratch);
     }
+    (samples, note)
 }
 
 pub(super) fn finetune_section(
@@ -130,24 +207,27 @@ pub(super) fn finetune_section(
     g: &FinetuneGroup,
     pair: &[String; 2],
     tests: &[&Comparison],
+    holm: &std::collections::HashMap<(String, u64), (f64, usize)>,
     r: &mut Report,
 ) {
-    let seeds = g.seeds.as_ref().unwrap_or(&results.campaign.seeds);
     let [from, to] = pair;
-    let mut samples = finetune_samples(results, g, pair);
+    let planned = finetune_samples(results, g, pair);
     let _ = writeln!(
         r.markdown,
         "## {} · {from} -> {to} · {}\n",
         g.name, g.controller
     );
     let sets = &results.campaign.validate;
-    summary_table(&samples, sets, &mut r.markdown);
+    summary_table(&planned, sets, &mut r.markdown);
     comparisons(tests, &mut r.markdown);
-    if let (Some(evals), [_, scratch]) = (g.scratch_evals, &mut samples[..]) {
-        *scratch = prefix_stand_in(results, g, (to, evals), seeds, scratch, r);
+    let (samples, note) = compared(results, g, pair);
+    if let Some(note) = note {
+        let _ = writeln!(r.markdown, "{note}\n");
     }
     if let [tuned, scratch] = &samples[..] {
-        convergence_part(tuned, scratch, &mut r.markdown);
+        let key = pair.join(" -> ");
+        let adjusted = |share| holm.get(&(key.clone(), share)).copied();
+        convergence_part(tuned, scratch, adjusted, &mut r.markdown);
     }
     // The paper's view: evaluations on the target shape (fine-tuning from its first
     // evaluation); and the whole cost, fine-tuning drawn after its source's evaluations.

@@ -69,12 +69,13 @@ pub fn report(results: &Results) -> Report {
         }
     }
     for g in &results.campaign.finetune {
+        let holm = finetune::convergence_holm(results, g);
         for pair in &g.pairs {
             let mine: Vec<&Comparison> = tests
                 .iter()
                 .filter(|c| (&c.group, &c.shape) == (&g.name, &samples::transfer(pair)))
                 .collect();
-            finetune_section(results, g, pair, &mine, &mut r);
+            finetune_section(results, g, pair, &mine, &holm, &mut r);
         }
     }
     fidelity::fidelity_section(results, &mut r);
