@@ -110,16 +110,7 @@ pub fn runs(c: &Campaign) -> Vec<RunSpec> {
         }
     };
     for g in &c.evolve {
-        let seeds = g.seeds.as_ref().unwrap_or(&c.seeds);
-        for shape in &g.shapes {
-            for &controller in &g.controllers {
-                for &evals in &g.evals {
-                    for &seed in seeds {
-                        push(RunSpec::scratch(shape, controller, evals, seed));
-                    }
-                }
-            }
-        }
+        grid(c, g, &g.evals).into_iter().for_each(&mut push);
     }
     for g in &c.finetune {
         for r in finetune_runs(c, g) {
@@ -132,20 +123,26 @@ pub fn runs(c: &Campaign) -> Vec<RunSpec> {
 /// The runs of every evolve group read at its `earlier` budgets: not run by the campaign,
 /// read when their files exist (a shorter run from scratch is the longer run's start).
 pub fn earlier_runs(c: &Campaign) -> Vec<RunSpec> {
-    let mut all = Vec::new();
-    for g in &c.evolve {
-        let seeds = g.seeds.as_ref().unwrap_or(&c.seeds);
-        for shape in &g.shapes {
-            for &controller in &g.controllers {
-                for &evals in &g.earlier {
-                    for &seed in seeds {
-                        all.push(RunSpec::scratch(shape, controller, evals, seed));
-                    }
+    c.evolve
+        .iter()
+        .flat_map(|g| grid(c, g, &g.earlier))
+        .collect()
+}
+
+/// An evolve group's grid at `budgets`: shapes x controllers x budgets x seeds.
+fn grid(c: &Campaign, g: &super::file::EvolveGroup, budgets: &[u64]) -> Vec<RunSpec> {
+    let seeds = g.seeds.as_ref().unwrap_or(&c.seeds);
+    let mut out = Vec::new();
+    for shape in &g.shapes {
+        for &controller in &g.controllers {
+            for &evals in budgets {
+                for &seed in seeds {
+                    out.push(RunSpec::scratch(shape, controller, evals, seed));
                 }
             }
         }
     }
-    all
+    out
 }
 
 /// A fine-tuning group's runs: sources, from-scratch comparisons, fine-tunings.
