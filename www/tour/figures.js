@@ -1,18 +1,22 @@
 // @ts-check
 /**
- * The study's figures the page shows (written by `vsr report` into study/report/, served at
- * /study/ by scripts/serve.mjs; linked, never copied), each with the runs it is drawn from
- * (rows of study/campaign.csv, whose run files are study/runs/<run>.json) and the paper's
- * figure it reproduces. The tour (chapters.js) and the study panel (study.js) read them here.
+ * The study's figures the page shows (written by `vsr report` into study/report/ or a
+ * campaign's own report folder, served at /study/ by scripts/serve.mjs; linked, never copied),
+ * each with the runs it is drawn from (rows of the tables in TABLES, whose run files are
+ * study/runs/<run>.json) and the paper's figure it reproduces. The tour (chapters.js) and the study panel (study.js) read them here.
  */
 
 /** Where the study's files are served. */
 export const STUDY_DIR = 'study/';
 
+/** The study's tables of runs (`vsr campaign merge`), in STUDY_DIR: the paper study's, then the budget campaign's. */
+export const TABLES = ['campaign.csv', 'comb-budget.csv'];
+
 /**
  * @typedef {object} StudyFigure
  * @property {string} id
- * @property {string} file       in study/report/
+ * @property {string} file       in the report folder
+ * @property {string} [report]   the report folder in study/ (default: report/, the paper study's)
  * @property {string} title      what it shows, in a newcomer's words
  * @property {string} paper      the paper's figure it reproduces, and what the paper found
  * @property {string} read       how to read it
@@ -63,6 +67,17 @@ export const FIGURES = [
     paper: 'The paper\'s Fig. 6, for the comb.',
     read: 'Each run\'s best robot, its attention frozen at the second on the horizontal axis, then walked 30 s: its speed (mind the scale: centimetres per second).',
     runs: [{ kind: 'scratch', shape: 'comb-7x2', evals: 30000, controllers: ['attention'] }],
+  },
+  {
+    id: 'budget-comb',
+    report: 'report-comb-budget/',
+    file: 'fig3-comb-budget-comb-7x2-60000.svg',
+    title: 'Attention and mlp-comm on the comb, evolved for twice as long',
+    paper: 'The paper stopped at 30,000 evaluations, saying every curve had levelled off by then. Ours were still rising, so five runs of each '
+      + 'went on to 60,000: both brains got faster in every run, and still no difference is detected between them (Holm p 0.55 on ten unseen terrains).',
+    read: 'Speed of the best robot of each generation (the median run; shaded, the middle half) against evaluations, five runs of each brain; '
+      + 'the first 30,000 evaluations of each run are exactly the run the other comb figures show.',
+    runs: [{ kind: 'scratch', shape: 'comb-7x2', evals: 60000, controllers: ['attention', 'mlp-comm'] }],
   },
   transfer('biped', ['biped-4x3', 'small'], ['biped-6x4', 'large'], 'The paper\'s Fig. 7: a transplanted attention, '
     + 'fine-tuned, gets fast much sooner than a brain evolved from scratch. Our study agrees on all four transfers (after '

@@ -2,16 +2,13 @@
 /**
  * The study in the page: our reproduction's figures (figures.js; the files `vsr report`
  * writes, served from study/report/), one at a time with what it shows and what the paper
- * found, and under it the runs it is drawn from (study/campaign.csv): one click walks the
+ * found, and under it the runs it is drawn from (the tables of figures.js): one click walks the
  * chosen run's best robot in the viewer, on its own body (its run file, study/runs/<run>.json,
  * becomes a module of the list, so it can also race or be transplanted).
  */
 import { messageOf } from '../kit.js';
 import { unseenWords } from '../modules.js';
-import { FIGURES, STUDY_DIR } from './figures.js';
-
-/** The study's table of runs, one row per run. */
-const CAMPAIGN = `${STUDY_DIR}campaign.csv`;
+import { FIGURES, STUDY_DIR, TABLES } from './figures.js';
 
 /**
  * @typedef {object} StudyRun  a row of the campaign table
@@ -80,9 +77,10 @@ export class StudyPanel {
     for (const f of FIGURES) this.pick.append(new Option(f.title, f.id));
     this.pick.addEventListener('change', () => this.showFigure());
     this.watch.addEventListener('click', () => this.watchRun());
-    this.loaded = fetch(CAMPAIGN)
-      .then((r) => (r.ok ? r.text() : Promise.reject(new Error(`HTTP ${r.status}`))))
-      .then((text) => { this.runs = parseCampaign(text); })
+    this.loaded = Promise.all(TABLES.map((name) => fetch(`${STUDY_DIR}${name}`)
+      .then((r) => (r.ok ? r.text() : Promise.reject(new Error(`${name}: HTTP ${r.status}`))))
+      .then(parseCampaign)))
+      .then((tables) => { this.runs = tables.flat(); })
       .catch((error) => page.message(`the study's runs could not be listed: ${messageOf(error)}`))
       .then(() => this.showFigure());
   }
@@ -97,7 +95,7 @@ export class StudyPanel {
   /** Shows the chosen figure and lists its runs, the fastest of its first brain chosen. */
   async showFigure() {
     const fig = FIGURES.find((f) => f.id === this.pick.value) ?? FIGURES[0];
-    const src = `${STUDY_DIR}report/${fig.file}`;
+    const src = `${STUDY_DIR}${fig.report ?? 'report/'}${fig.file}`;
     this.image.src = src;
     this.image.alt = fig.title;
     this.link.href = src;
