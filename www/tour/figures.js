@@ -74,7 +74,7 @@ export const FIGURES = [
     file: 'fig3-comb-budget-comb-7x2-60000.svg',
     title: 'Attention and mlp-comm on the comb, evolved for twice as long',
     paper: 'The paper stopped at 30,000 evaluations, saying every curve had levelled off by then. Ours were still rising, so five runs of each '
-      + 'went on to 60,000: both brains got faster in every run, and still no difference is detected between them (Holm p 0.55 on ten unseen terrains).',
+      + 'went on to 60,000: both brains got faster in every run, and still no difference is detected between their speeds on ten unseen terrains (p 0.55; p: see the glossary).',
     read: 'Speed of the best robot of each generation (the median run; shaded, the middle half) against evaluations, five runs of each brain; '
       + 'the first 30,000 evaluations of each run are exactly the run the other comb figures show.',
     runs: [{ kind: 'scratch', shape: 'comb-7x2', evals: 60000, controllers: ['attention', 'mlp-comm'] }],
