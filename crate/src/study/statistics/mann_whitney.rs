@@ -78,7 +78,7 @@ pub fn mann_whitney(x: &[f64], y: &[f64]) -> UTest {
 
 /// The rank sum of `x` in the pooled sample (mean ranks for ties) and the size of every
 /// group of tied values.
-fn rank_sum(x: &[f64], y: &[f64]) -> (f64, Vec<usize>) {
+pub(super) fn rank_sum(x: &[f64], y: &[f64]) -> (f64, Vec<usize>) {
     let mut pooled: Vec<(f64, bool)> = x.iter().map(|&v| (v, true)).collect();
     pooled.extend(y.iter().map(|&v| (v, false)));
     pooled.sort_by(|a, b| a.0.total_cmp(&b.0));
@@ -101,7 +101,7 @@ fn rank_sum(x: &[f64], y: &[f64]) -> (f64, Vec<usize>) {
 }
 
 /// P(U >= u) under the null hypothesis for samples of `n1` and `n2` distinct values.
-fn exact_upper_tail(n1: usize, n2: usize, u: usize) -> f64 {
+pub(super) fn exact_upper_tail(n1: usize, n2: usize, u: usize) -> f64 {
     let all = exact_null_counts(n1, n2);
     let total: f64 = all.iter().sum();
     all[u.min(n1 * n2)..].iter().sum::<f64>() / total
@@ -128,16 +128,22 @@ pub(crate) fn exact_null_counts(n1: usize, n2: usize) -> Vec<f64> {
     counts.swap_remove(n1).swap_remove(n2)
 }
 
-/// Two-sided p of the normal approximation for U = `u` (the larger of U1, U2).
-fn normal_p(n1: usize, n2: usize, u: f64, ties: &[usize]) -> f64 {
+/// The tie-corrected standard deviation of U under the null hypothesis, given the size of
+/// every group of tied values; None when it is 0 (every value equal).
+pub(super) fn tie_corrected_sigma(n1: usize, n2: usize, ties: &[usize]) -> Option<f64> {
     let (a, b) = (n1 as f64, n2 as f64);
     let n = a + b;
     let tie_term: f64 = ties.iter().map(|&t| (t * t * t - t) as f64).sum();
     let variance = a * b / 12.0 * ((n + 1.0) - tie_term / (n * (n - 1.0)));
-    if variance <= 0.0 {
+    (variance > 0.0).then(|| variance.sqrt())
+}
+
+/// Two-sided p of the normal approximation for U = `u` (the larger of U1, U2).
+fn normal_p(n1: usize, n2: usize, u: f64, ties: &[usize]) -> f64 {
+    let Some(sigma) = tie_corrected_sigma(n1, n2, ties) else {
         return 1.0; // every value equal: no evidence of a difference
-    }
-    let z = (u - a * b / 2.0 - 0.5) / variance.sqrt();
+    };
+    let z = (u - (n1 * n2) as f64 / 2.0 - 0.5) / sigma;
     erfc(z / std::f64::consts::SQRT_2).min(1.0)
 }
 
