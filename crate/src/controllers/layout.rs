@@ -54,6 +54,61 @@ impl GenomeLayout {
         self.prefix + r * (self.per_voxel * n + self.row_tail) + i * self.per_voxel + k
     }
 
+    /// Genes shared by every voxel: the prefix, each row's tail, the tail.
+    pub(crate) fn shared_len(&self) -> usize {
+        self.prefix + self.rows * self.row_tail + self.tail
+    }
+
+    /// Genes of one voxel, over all rows.
+    pub(crate) fn voxel_len(&self) -> usize {
+        self.rows * self.per_voxel
+    }
+
+    /// A controller genome for `voxels.len()` voxels from the shared genes (prefix, then each
+    /// row's tail in row order, then the tail: [`GenomeLayout::shared_len`]) and each voxel's
+    /// own genes (row by row: [`GenomeLayout::voxel_len`]), in voxel index order.
+    pub(crate) fn assemble(&self, shared: &[f32], voxels: &[&[f32]]) -> Vec<f32> {
+        let n = voxels.len();
+        let mut out = vec![0.0f32; self.len(n)];
+        out[..self.prefix].copy_from_slice(&shared[..self.prefix]);
+        let row_tails = &shared[self.prefix..self.prefix + self.rows * self.row_tail];
+        let tail = &shared[self.prefix + self.rows * self.row_tail..];
+        for r in 0..self.rows {
+            for k in 0..self.row_tail {
+                out[self.row_tail_gene(n, r, k)] = row_tails[r * self.row_tail + k];
+            }
+            for (i, genes) in voxels.iter().enumerate() {
+                for k in 0..self.per_voxel {
+                    out[self.voxel_gene(n, r, i, k)] = genes[r * self.per_voxel + k];
+                }
+            }
+        }
+        let start = out.len() - self.tail;
+        out[start..].copy_from_slice(tail);
+        out
+    }
+
+    /// The inverse of [`GenomeLayout::assemble`] for a genome of `n` voxels: its shared genes
+    /// and each voxel's own genes.
+    pub(crate) fn split(&self, n: usize, genome: &[f32]) -> (Vec<f32>, Vec<Vec<f32>>) {
+        let mut shared = genome[..self.prefix].to_vec();
+        for r in 0..self.rows {
+            for k in 0..self.row_tail {
+                shared.push(genome[self.row_tail_gene(n, r, k)]);
+            }
+        }
+        shared.extend_from_slice(&genome[genome.len() - self.tail..]);
+        let voxels = (0..n)
+            .map(|i| {
+                (0..self.rows)
+                    .flat_map(|r| (0..self.per_voxel).map(move |k| (r, k)))
+                    .map(|(r, k)| genome[self.voxel_gene(n, r, i, k)])
+                    .collect()
+            })
+            .collect();
+        (shared, voxels)
+    }
+
     /// Where shared gene `k` of row `r` sits (its `row_tail`), for `n` voxels.
     fn row_tail_gene(&self, n: usize, r: usize, k: usize) -> usize {
         self.prefix + r * (self.per_voxel * n + self.row_tail) + self.per_voxel * n + k
@@ -186,6 +241,21 @@ mod tests {
         let genome: Vec<f32> = (0..kind.param_count(3)).map(|g| g as f32).collect();
         let out = remap_genome(kind, &genome, &from, &to, (1, 0), 0).unwrap();
         assert_eq!(out, [4.0, 5.0, 6.0, 7.0, 8.0, 9.0, 10.0, 11.0, 12.0]);
+    }
+
+    #[test]
+    fn split_and_assemble_are_inverse_for_every_family() {
+        for kind in ControllerKind::ALL {
+            let layout = GenomeLayout::of(kind);
+            for n in [1, 4, 10] {
+                let genome: Vec<f32> = (0..kind.param_count(n)).map(|g| g as f32).collect();
+                let (shared, voxels) = layout.split(n, &genome);
+                assert_eq!(shared.len(), layout.shared_len(), "{kind}");
+                assert!(voxels.iter().all(|v| v.len() == layout.voxel_len()));
+                let refs: Vec<&[f32]> = voxels.iter().map(Vec::as_slice).collect();
+                assert_eq!(layout.assemble(&shared, &refs), genome, "{kind} {n}");
+            }
+        }
     }
 
     #[test]

@@ -25,6 +25,7 @@ pub use attention::{attention_terms, Attention, ATTENTION_PARAMS};
 pub(crate) use frozen::FrozenAttention;
 pub use kind::{build, ControllerKind};
 pub use layout::remap_genome;
+pub(crate) use layout::GenomeLayout;
 pub use mlp::Mlp;
 pub use mlp_comm::MlpComm;
 pub use params::Params;

@@ -4,6 +4,7 @@
 
 pub(crate) mod ablation;
 pub(crate) mod checkpoint;
+pub mod codesign;
 pub mod config;
 pub(crate) mod ensemble;
 pub(crate) mod episode;
@@ -21,8 +22,9 @@ pub mod seeds;
 pub(crate) mod trajectory;
 pub mod validation;
 
-pub use ablation::{ablate, AblationPoint, ABLATION_TERRAIN};
+pub use ablation::{ablate, unfrozen_velocity, AblationPoint, ABLATION_TERRAIN};
 pub use checkpoint::Checkpoint;
+pub use codesign::{best_in_file, BrainMode, Codesign, CodesignConfig, CodesignRun};
 pub use config::{EvolutionConfig, SourceRun, TrainingTerrain};
 pub use ensemble::{check_start_offset, gait_ensemble, Ensemble, ENSEMBLE_SHIFT};
 pub use episode::{steps_for, topology, Episode, GaitEpisode, Outcome, Policy};

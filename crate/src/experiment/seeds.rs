@@ -16,6 +16,8 @@ pub enum Purpose {
     /// Genes of voxels added to a body that already has a controller (generation = the
     /// edit's number, index 0).
     Remap,
+    /// How one body-search child is made from its parent (iteration, index in the batch).
+    Variation,
 }
 
 impl Purpose {
@@ -27,6 +29,7 @@ impl Purpose {
             Purpose::Genetics => 3,
             Purpose::Validation => 4,
             Purpose::Remap => 5,
+            Purpose::Variation => 6,
         }
     }
 }

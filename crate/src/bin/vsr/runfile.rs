@@ -13,7 +13,23 @@ pub use crate::atomic::check_writable;
 pub fn load(path: &Path) -> Result<RunFile> {
     let text = fs::read_to_string(path)
         .map_err(|e| Error::Io(format!("cannot read run file {}: {e}", path.display())))?;
-    RunFile::from_json(&text).map_err(|e| Error::Input(format!("{}: {e}", path.display())))
+    RunFile::from_json(&text).map_err(|e| in_file(path, e))
+}
+
+/// The body with its brain in a run file or a co-design run file (its best, or archive entry
+/// `entry` of a co-design file), naming the file in every error.
+pub fn load_best(path: &Path, entry: Option<usize>) -> Result<vsr::experiment::Best> {
+    let text = fs::read_to_string(path)
+        .map_err(|e| Error::Io(format!("cannot read run file {}: {e}", path.display())))?;
+    vsr::experiment::best_in_file(&text, entry).map_err(|e| in_file(path, e))
+}
+
+/// `e` with the file named first (and said once: "invalid input" is not repeated).
+fn in_file(path: &Path, e: Error) -> Error {
+    match e {
+        Error::Input(m) => Error::Input(format!("{}: {m}", path.display())),
+        other => Error::Input(format!("{}: {other}", path.display())),
+    }
 }
 
 /// Writes `run` to `path` atomically.

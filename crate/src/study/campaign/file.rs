@@ -20,6 +20,10 @@
 //! evals = [30000]
 //! ablate = true                  # ablate each best with attention (attention, slow-attention)
 //! earlier = [20000]              # report the same runs read at a shorter budget (its files)
+//! # a planned non-inferiority test, reported beside the group (adds no job): treatment not
+//! # worse than control by margin m/s on each set (the first primary); known_seeds: runs of
+//! # the same grid that existed before the plan, shown beside it, never pooled
+//! noninferiority = { margin = 0.5, treatment = "attention", control = "mlp", known_seeds = [9] }
 //!
 //! [[finetune]]                   # SPEC 10: source runs, fine-tuned, against from scratch
 //! name = "rq2"
@@ -123,6 +127,36 @@ pub struct EvolveGroup {
     /// longer run's start, so its files say where the longer run stood then.
     #[serde(default)]
     pub earlier: Vec<u64>,
+    /// A planned non-inferiority test between two of the group's controllers (reported, not
+    /// run: it adds no job).
+    #[serde(default)]
+    pub noninferiority: Option<NonInferiority>,
+}
+
+/// A non-inferiority test (docs/ANALYSIS-PLAN.md, family 8): on every shape and budget of
+/// the group, is `treatment` not worse than `control` by `margin` m/s or more? One family of
+/// tests (Holm over the shapes) per validation set in `sets`, the first the primary.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct NonInferiority {
+    /// The largest loss (m/s) that still counts as "not worse".
+    pub margin: f64,
+    /// The controller the claim is about.
+    pub treatment: ControllerKind,
+    /// The controller it is compared with.
+    pub control: ControllerKind,
+    /// The measures: each set's validation mean, the first primary (default: unseen, then
+    /// paper).
+    #[serde(default = "unseen_then_paper")]
+    pub sets: Vec<ValidationSet>,
+    /// Seeds known before the test was planned (runs of the same grid that exist): shown
+    /// beside the test, never pooled with the group's seeds.
+    #[serde(default)]
+    pub known_seeds: Vec<u64>,
+}
+
+fn unseen_then_paper() -> Vec<ValidationSet> {
+    vec![ValidationSet::Unseen, ValidationSet::Paper]
 }
 
 /// Fine-tuning: for every pair and seed, a source run on the pair's first shape, its best
@@ -215,6 +249,9 @@ impl Campaign {
                     g.name
                 ));
             }
+            if let Some(n) = &g.noninferiority {
+                self.check_noninferiority(g, n)?;
+            }
         }
         for g in &self.finetune {
             for pair in &g.pairs {
@@ -239,6 +276,42 @@ impl Campaign {
                     g.reference
                 ));
             }
+        }
+        Ok(())
+    }
+
+    fn check_noninferiority(&self, g: &EvolveGroup, n: &NonInferiority) -> Result<()> {
+        let bad = |m: String| {
+            Err(Error::Input(format!(
+                "group '{}' noninferiority: {m}",
+                g.name
+            )))
+        };
+        if !(n.margin.is_finite() && n.margin >= 0.0) {
+            return bad(format!(
+                "the margin {} must be a number >= 0 (m/s)",
+                n.margin
+            ));
+        }
+        for c in [n.treatment, n.control] {
+            if !g.controllers.contains(&c) {
+                return bad(format!("{c} is not one of the group's controllers"));
+            }
+        }
+        if n.treatment == n.control {
+            return bad("the treatment and the control must differ".into());
+        }
+        if n.sets.is_empty() {
+            return bad("give at least one validation set".into());
+        }
+        if let Some(set) = n.sets.iter().find(|s| !self.validate.contains(s)) {
+            return bad(format!("the campaign does not validate on the {set} set"));
+        }
+        let seeds = g.seeds.as_ref().unwrap_or(&self.seeds);
+        if let Some(s) = n.known_seeds.iter().find(|s| seeds.contains(s)) {
+            return bad(format!(
+                "known seed {s} is one of the group's seeds: known seeds are never pooled"
+            ));
         }
         Ok(())
     }
@@ -276,5 +349,33 @@ mod tests {
             .unwrap_err()
             .to_string()
             .contains("earlier budget 10"));
+    }
+
+    #[test]
+    fn noninferiority_is_checked() {
+        let group = "output = \"o\"\nseeds = [3, 4]\n[[evolve]]\nname = \"ni\"\nshapes = [\"comb-7x2\"]\ncontrollers = [\"attention\", \"mlp-comm\"]\nevals = [10]\n";
+        let with = |key: &str| Campaign::parse(&format!("{group}noninferiority = {{ {key} }}\n"));
+        let ok = with("margin = 0.5, treatment = \"attention\", control = \"mlp-comm\"").unwrap();
+        let n = ok.evolve[0].noninferiority.clone().unwrap();
+        assert_eq!((n.margin, n.treatment), (0.5, ControllerKind::Attention));
+        assert_eq!(n.sets, [ValidationSet::Unseen, ValidationSet::Paper]);
+        assert!(n.known_seeds.is_empty());
+        let error = |key: &str| with(key).unwrap_err().to_string();
+        assert!(
+            error("margin = 0.5, treatment = \"mlp\", control = \"mlp-comm\"")
+                .contains("mlp is not one of")
+        );
+        assert!(
+            error("margin = -1.0, treatment = \"attention\", control = \"mlp-comm\"")
+                .contains("margin")
+        );
+        assert!(error(
+            "margin = 0.5, treatment = \"attention\", control = \"mlp-comm\", known_seeds = [1, 4]"
+        )
+        .contains("known seed 4"));
+        assert!(error(
+            "margin = 0.5, treatment = \"attention\", control = \"mlp-comm\", alpha = 1"
+        )
+        .contains("alpha"));
     }
 }

@@ -13,5 +13,5 @@ pub mod results;
 
 pub use file::Campaign;
 pub use job::{select, Job, RunTask, Task};
-pub use plan::{earlier_runs, fidelity_path, plan, runs, RunSpec};
+pub use plan::{earlier_runs, fidelity_path, known_runs, plan, runs, RunSpec};
 pub use results::{Results, RunData};

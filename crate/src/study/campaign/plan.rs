@@ -129,6 +129,28 @@ pub fn earlier_runs(c: &Campaign) -> Vec<RunSpec> {
         .collect()
 }
 
+/// The runs of the non-inferiority tests' known seeds (`noninferiority.known_seeds`): the
+/// treatment's and the control's on every shape and budget of the group; not run by the
+/// campaign, read when their files exist (shown beside the test, never pooled).
+pub fn known_runs(c: &Campaign) -> Vec<RunSpec> {
+    let mut out = Vec::new();
+    for g in &c.evolve {
+        let Some(n) = &g.noninferiority else {
+            continue;
+        };
+        for shape in &g.shapes {
+            for controller in [n.treatment, n.control] {
+                for &evals in &g.evals {
+                    for &seed in &n.known_seeds {
+                        out.push(RunSpec::scratch(shape, controller, evals, seed));
+                    }
+                }
+            }
+        }
+    }
+    out
+}
+
 /// An evolve group's grid at `budgets`: shapes x controllers x budgets x seeds.
 fn grid(c: &Campaign, g: &super::file::EvolveGroup, budgets: &[u64]) -> Vec<RunSpec> {
     let seeds = g.seeds.as_ref().unwrap_or(&c.seeds);

@@ -3,7 +3,7 @@
 //! them and says what is missing.
 
 use super::file::Campaign;
-use super::plan::{earlier_runs, runs, RunSpec};
+use super::plan::{earlier_runs, known_runs, runs, RunSpec};
 use crate::experiment::{AblationPoint, RunFile, Validation, ValidationSet};
 use crate::study::fidelity::Fidelity;
 use std::collections::BTreeMap;
@@ -70,6 +70,9 @@ pub struct Results {
     /// Data of the runs read at the evolve groups' `earlier` budgets (not planned: never
     /// listed as missing).
     pub earlier: Vec<(RunSpec, RunData)>,
+    /// Data of the runs of the non-inferiority tests' known seeds (not planned: never listed
+    /// as missing, never pooled with the planned runs).
+    pub known: Vec<(RunSpec, RunData)>,
     /// Planned output files not found.
     pub missing: Vec<PathBuf>,
     /// The fidelity measurements found, with their reference files, in campaign order.
@@ -78,11 +81,12 @@ pub struct Results {
 
 impl Results {
     /// The data of `spec`, to fill in (`None` when the run is neither planned nor read at
-    /// an earlier budget).
+    /// an earlier budget or a known seed).
     pub fn of_mut(&mut self, spec: &RunSpec) -> Option<&mut RunData> {
         self.data
             .iter_mut()
             .chain(self.earlier.iter_mut())
+            .chain(self.known.iter_mut())
             .find(|(s, _)| s == spec)
             .map(|(_, d)| d)
     }
@@ -97,22 +101,28 @@ impl Results {
             .into_iter()
             .map(|r| (r, RunData::default()))
             .collect();
+        let known = known_runs(&campaign)
+            .into_iter()
+            .map(|r| (r, RunData::default()))
+            .collect();
         Results {
             campaign,
             data,
             earlier,
+            known,
             missing: Vec::new(),
             fidelity: Vec::new(),
         }
     }
 
     /// The data of `spec` (empty when the run is neither planned nor read at an earlier
-    /// budget).
+    /// budget or a known seed).
     pub fn of(&self, spec: &RunSpec) -> RunData {
         let found = self
             .data
             .iter()
             .chain(&self.earlier)
+            .chain(&self.known)
             .find(|(s, _)| s == spec);
         found.map(|(_, d)| d.clone()).unwrap_or_default()
     }

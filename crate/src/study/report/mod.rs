@@ -8,7 +8,8 @@
 //! ties) and Vargha-Delaney A12 (`statistics`): the controllers of each shape and budget
 //! pairwise (RQ1), and fine-tuning against from scratch on each target shape (RQ2), both at
 //! the end and after the fine-tuning budget (the paper's claim is that fine-tuning converges
-//! faster).
+//! faster). An evolve group's `noninferiority` key adds its one-sided test of the treatment
+//! not being worse than the control by a margin, with its verdicts (`noninferiority`).
 //!
 //! Figures (file names): `fig3-GROUP-SHAPE-EVALS.svg` best fitness against evaluations;
 //! `fig4-GROUP-SHAPE-EVALS-SET.svg` validation boxes; `fig6-GROUP-SHAPE-EVALS.svg`
@@ -29,6 +30,8 @@ mod families;
 mod fidelity;
 pub mod figures;
 mod finetune;
+mod noninferiority;
+mod noninferiority_section;
 mod plateau;
 mod samples;
 mod sets;
@@ -56,6 +59,7 @@ pub fn report(results: &Results) -> Report {
     missing_section(results, &mut r.markdown);
     let tests = planned(results);
     families_table(&tests, &mut r.markdown);
+    noninferiority_section::noninferiority_sections(results, &mut r.markdown);
     sets::sets_section(results, &mut r.markdown);
     for g in &results.campaign.evolve {
         for shape in &g.shapes {

@@ -86,7 +86,7 @@ pub fn create_folders(out: &Path, jobs: &[Job]) -> Result<()> {
 }
 
 /// Reads every planned output that exists, the others listed as missing, and the files of
-/// the runs read at earlier budgets that exist.
+/// the runs read at earlier budgets or known seeds that exist.
 pub fn load_results(campaign: Campaign, out: &Path) -> Result<Results> {
     let jobs = plan(&campaign, out);
     let mut results = Results::new(campaign);
@@ -95,7 +95,8 @@ pub fn load_results(campaign: Campaign, out: &Path) -> Result<Results> {
         .filter(|j| !j.out.exists())
         .map(|j| j.out.clone())
         .collect();
-    let planned = results.data.iter().chain(&results.earlier);
+    let read = results.data.iter().chain(&results.earlier);
+    let planned = read.chain(&results.known);
     let specs: Vec<_> = planned.map(|(s, _)| s.clone()).collect();
     for spec in specs {
         let run = read_json(&spec.run_path(out), RunFile::from_json)?;

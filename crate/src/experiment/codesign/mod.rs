@@ -1,0 +1,47 @@
+//! Body search (co-design): bodies searched around a brain, the paper's thesis ("a brain that
+//! needs no messages can be reassembled into other bodies") made a tool. A body-and-brain
+//! genome ([`Design`]: a body in a grid, genes per grid cell), two body edits ([`BodyGrid`]),
+//! three ways to get the brain ([`BrainMode`]: a pretrained attention module frozen or
+//! fine-tuned, or any controller from scratch), a MAP-Elites archive over size and feet
+//! ([`Archive`]), the ask/tell search ([`Codesign`]) and its run file ([`CodesignRun`]).
+//! `genetics/` is not involved: its GA evolves one genome length for one body.
+
+mod archive;
+mod body;
+mod config;
+mod design;
+mod file;
+mod search;
+
+pub use archive::{cell_of, Archive, Cell, Elite};
+pub use body::BodyGrid;
+pub use config::{BrainMode, CodesignConfig, DEFAULT_GRID, DEFAULT_START, DEFAULT_VOXELS};
+pub use design::Design;
+pub use file::{CodesignRecord, CodesignRun, Entry, CODESIGN_FORMAT};
+pub use search::Codesign;
+
+use crate::error::Result;
+use crate::experiment::run::{Best, RunFile};
+
+/// The body with its brain that a run file names: a run file's `best`, or a co-design run
+/// file's best (or archive entry `entry`, in cell order). `entry` on a plain run file is
+/// refused: it has one body.
+pub fn best_in_file(text: &str, entry: Option<usize>) -> Result<Best> {
+    let format = serde_json::from_str::<serde_json::Value>(text)
+        .ok()
+        .and_then(|v| v.get("format").and_then(|f| f.as_str()).map(String::from));
+    if format.as_deref() == Some(CODESIGN_FORMAT) {
+        let run = CodesignRun::from_json(text)?;
+        return match entry {
+            Some(i) => run.entry_best(i),
+            None => Ok(run.best),
+        };
+    }
+    let run = RunFile::from_json(text)?;
+    match entry {
+        None | Some(0) => Ok(run.best),
+        Some(i) => Err(crate::error::Error::Input(format!(
+            "entry {i}: this run file has one body (entry 0); entries belong to co-design run files"
+        ))),
+    }
+}
