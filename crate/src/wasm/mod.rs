@@ -1,6 +1,7 @@
 //! The WebAssembly boundary: the only module that uses `wasm_bindgen`.
 //!
 //! Thin handles over core types, one file per wrapped type, mirroring the core's tree:
+//! [`Codesign`] wraps `experiment::codesign::Codesign` for the page's body search (`codesign.rs`);
 //! [`Episode`] wraps `experiment::Episode` (built from a phase gait in `episode.rs`, from
 //! a run file in `controlled.rs`, measured as the fitness measures in `measure.rs`); [`Evolution`] wraps `experiment::Evolution` for the page's
 //! GA coordinator and [`evaluate_job`] is one evaluation of its workers (`evolution.rs`);
@@ -12,6 +13,7 @@
 #![deny(clippy::unwrap_used)]
 
 mod bench;
+mod codesign;
 mod controlled;
 mod episode;
 mod evaluate;
@@ -23,6 +25,7 @@ mod page;
 mod plan;
 
 pub use bench::bench_episode;
+pub use codesign::Codesign;
 pub use episode::Episode;
 pub use evaluate::evaluate;
 pub use evolution::{evaluate_job, Evolution};

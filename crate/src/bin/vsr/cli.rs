@@ -30,6 +30,9 @@ enum Command {
     Validate(crate::validate::Args),
     /// Fine-tune a run's best individual on another shape, its attention block frozen.
     Finetune(crate::finetune::Args),
+    /// Search bodies around a brain (a pretrained attention module frozen or fine-tuned, or
+    /// a brain from scratch): a gallery of bodies, the best of each size and number of feet.
+    Codesign(crate::codesign::Args),
     /// Frozen-attention ablation: velocity with the attention frozen at each second.
     Ablate(crate::ablate::Args),
     /// Run the reference simulator's gait ensembles here and compare (--reference FILE).
@@ -60,6 +63,7 @@ pub fn run() -> i32 {
         Command::Evaluate(args) => crate::evaluate::run(args),
         Command::Validate(args) => crate::validate::run(args),
         Command::Finetune(args) => crate::finetune::run(args),
+        Command::Codesign(args) => crate::codesign::run(args),
         Command::Ablate(args) => crate::ablate::run(args),
         Command::Fidelity(args) => crate::fidelity::run(args),
         Command::Campaign(command) => crate::campaign::run(command),

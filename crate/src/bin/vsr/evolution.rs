@@ -1,12 +1,12 @@
 //! How `vsr evolve` and `vsr finetune` run: an evolution evaluated in parallel with rayon,
 //! written to a run file at the end. While it runs it keeps a checkpoint next to the run file
 //! (`checkpoint`), so a run that is stopped continues where it was when the same command is
-//! given again.
+//! given again. Its progress (`progress.rs`) is a bar on a terminal and one line per
+//! generation elsewhere.
 
 use std::path::Path;
 use std::time::Instant;
 
-use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use vsr::experiment::{
     Evolution, EvolutionConfig, GenerationRecord, Job, RunFile, Timing, TrainingTerrain,
@@ -16,6 +16,7 @@ use vsr::{Error, Result};
 
 use crate::args::RunOptions;
 use crate::checkpoint::Checkpointer;
+use crate::progress::Progress;
 
 /// Applies the shared options to `config`, runs it and writes the run file.
 pub fn execute(mut config: EvolutionConfig, options: &RunOptions) -> Result<()> {
@@ -40,25 +41,25 @@ pub fn execute(mut config: EvolutionConfig, options: &RunOptions) -> Result<()> 
     let start = Instant::now();
     let earlier = evolution.history().last().map_or(0.0, |g| g.wall_seconds);
     let clock = || earlier + start.elapsed().as_secs_f64();
-    let bar = progress_bar(evolution.planned_evaluations());
-    bar.set_position(evolution.evaluations());
+    let progress = Progress::new(evolution.planned_evaluations());
+    progress.resume_at(evolution.evaluations());
     let evaluate = |jobs: &[Job]| -> Result<Vec<f64>> {
         let fitness = |job: &Job| {
             let f = job.fitness();
-            bar.inc(1);
+            progress.inc(1);
             f
         };
         pool.install(|| jobs.par_iter().map(fitness).collect())
     };
     let after_generation = |e: &Evolution| {
         if let Some(record) = e.history().last() {
-            bar.set_message(summary(record));
+            progress.generation_line(&summary(record));
         }
         checkpointer.after_generation(e);
         Ok(())
     };
     evolution.run(evaluate, after_generation, clock)?;
-    bar.finish_and_clear();
+    progress.finish();
     let run = evolution.run_file(Some(Timing {
         threads,
         wall_seconds: clock(),
@@ -98,18 +99,9 @@ pub fn thread_pool(threads: Option<usize>) -> Result<rayon::ThreadPool> {
         .map_err(|e| Error::Input(format!("cannot start {threads:?} threads: {e}")))
 }
 
-fn progress_bar(total: u64) -> ProgressBar {
-    let bar = ProgressBar::new(total);
-    let template = "{elapsed_precise} [{bar:30}] {pos}/{len} evals, eta {eta}  {msg}";
-    if let Ok(style) = ProgressStyle::with_template(template) {
-        bar.set_style(style.progress_chars("=> "));
-    }
-    bar
-}
-
 fn summary(r: &GenerationRecord) -> String {
     format!(
-        "gen {}: best {:.2} median {:.2} m/s",
+        "gen {}: best {:.3} median {:.3} m/s",
         r.generation, r.best, r.median
     )
 }

@@ -5,6 +5,7 @@
 //! `bench` with `bench/evolution.rs`, `params`, `evolve`, `evaluate`, `validate`, `finetune`,
 //! `ablate`, `fidelity`); the campaign subcommands and `vsr report` in `campaign/`; what several share in
 //! one place each: `args.rs` (argument types), `evolution.rs` (running an evolution),
+//! `progress.rs` (a bar on a terminal, one line per generation elsewhere),
 //! `checkpoint.rs`, `trajectory.rs`, `runfile.rs` and `atomic.rs` (files). Subcommands never
 //! import each other.
 
@@ -23,6 +24,8 @@ mod checkpoint;
 #[cfg(not(target_arch = "wasm32"))]
 mod cli;
 #[cfg(not(target_arch = "wasm32"))]
+mod codesign;
+#[cfg(not(target_arch = "wasm32"))]
 mod evaluate;
 #[cfg(not(target_arch = "wasm32"))]
 mod evolution;
@@ -34,6 +37,8 @@ mod fidelity;
 mod finetune;
 #[cfg(not(target_arch = "wasm32"))]
 mod params;
+#[cfg(not(target_arch = "wasm32"))]
+mod progress;
 #[cfg(not(target_arch = "wasm32"))]
 mod runfile;
 #[cfg(not(target_arch = "wasm32"))]
