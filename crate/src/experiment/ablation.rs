@@ -10,7 +10,7 @@
 //! ablated the same way: its A' is frozen and its alpha, eta genes are dropped.
 
 use super::episode::{steps_for, Episode, Policy};
-use super::evaluate::controller_for;
+use super::evaluate::{controller_for, evaluate};
 use super::run::Best;
 use super::validation::noise_seed_for;
 use crate::controllers::{
@@ -60,6 +60,24 @@ pub fn ablate(
         });
     }
     Ok(points)
+}
+
+/// The unfrozen reference of an ablation of `best` on `terrain`: its velocity over `seconds`
+/// with its own controller (attention recomputed at every control call), with the sensor
+/// noise of the ablation's episodes; on `hilly-1-10-K` it is the validation episode's.
+pub fn unfrozen_velocity(best: &Best, terrain: &str, seconds: f64) -> Result<f64> {
+    attention_genome(best)?;
+    let noise = Some(noise_seed_for(terrain));
+    let terrain = Terrain::parse(terrain)?;
+    let outcome = evaluate(
+        &best.shape,
+        terrain,
+        best.controller,
+        &best.genome,
+        noise,
+        seconds,
+    )?;
+    Ok(outcome.velocity)
 }
 
 /// The plain-attention genome inside `best`; an error for controllers without attention.

@@ -1,10 +1,11 @@
 //! `vsr ablate --genome RUN.json`: the frozen-attention ablation, one velocity per freeze
-//! time (see `vsr::experiment::ablation`).
+//! time (see `vsr::experiment::ablation`). The text output says what "frozen at s" means and
+//! puts the unfrozen velocity (the same robot, its attention live) above the frozen ones.
 
 use std::path::PathBuf;
 
 use vsr::experiment::config::{check_seconds, MAX_SECONDS};
-use vsr::experiment::{ablate, ABLATION_TERRAIN};
+use vsr::experiment::{ablate, unfrozen_velocity, AblationPoint, ABLATION_TERRAIN};
 use vsr::{Error, Result};
 
 /// Arguments of `vsr ablate`.
@@ -53,9 +54,22 @@ pub fn run(args: Args) -> Result<()> {
         println!("{body}");
         return Ok(());
     }
-    println!("frozen at (s)  velocity (m/s) on {}", args.terrain);
-    for p in &points {
-        println!("{:>12}  {:>14.3}", p.freeze_second, p.velocity);
-    }
+    let unfrozen = unfrozen_velocity(&best, &args.terrain, args.seconds)?;
+    print_table(&args, unfrozen, &points);
     Ok(())
+}
+
+/// The text output: what the rows mean, the unfrozen velocity, one row per freeze second.
+fn print_table(args: &Args, unfrozen: f64, points: &[AblationPoint]) {
+    let (terrain, seconds) = (&args.terrain, args.seconds);
+    println!(
+        "Frozen at s: every voxel's attention matrix as it was s seconds into a walk on \
+         {terrain},\nthen held fixed (no longer computed from the sensors) for a fresh \
+         {seconds}-s walk on {terrain}.\nUnfrozen: the same walk with the attention live."
+    );
+    println!("{:>13}  {:>14.3}", "unfrozen", unfrozen);
+    println!("frozen at (s)  velocity (m/s)");
+    for p in points {
+        println!("{:>13}  {:>14.3}", p.freeze_second, p.velocity);
+    }
 }
