@@ -3,9 +3,10 @@
 Each generation, CMA-ES's candidates walk 30 s on one fresh hilly terrain (hilly-1-10-G for
 generation G, sensor noise seeded by G), all of them at once on every core; the velocity is
 the fitness (cma minimises, so it is told -velocity). At the end, the mean of the search
-distribution (CMA-ES's estimate of the optimum) walks the paper's ten validation terrains
-(hilly-1-10-0..9, as `vsr validate --set paper`), and is written as a run file that `vsr
-evaluate --genome` and the page replay.
+distribution (CMA-ES's estimate of the optimum) is validated by `vsr.validate` on the paper's
+ten terrains (hilly-1-10-0..9 with the command line's noise seeds: exactly what `vsr validate
+--set paper` prints for the run file), and is written as a run file that `vsr evaluate
+--genome` and the page replay.
 
     python python/examples/cma_evolve.py                      # 73 genes, 3000 evaluations
     python python/examples/cma_evolve.py --evaluations 30000 --out best.json
@@ -54,19 +55,16 @@ def main():
     wall = time.perf_counter() - start
 
     mean = es.result.xfavorite
-    validation = np.array([
-        vsr.evaluate(mean[None, :], args.shape, args.controller, f"hilly-1-10-{t}",
-                     seconds=args.seconds)[0]
-        for t in range(10)
-    ])
+    result = vsr.validate(mean, args.shape, args.controller, set="paper", seconds=args.seconds)
+    validation = result["velocities"]
     print(f"{args.shape} {args.controller} ({genes} genes), CMA-ES popsize {es.popsize}: "
           f"{evaluations} evaluations in {generation} generations, {wall:.1f} s "
           f"({evaluations / wall:.0f} evaluations/s)")
-    print(f"validation on hilly-1-10-0..9: mean {validation.mean():.3f} m/s, "
-          f"median {np.median(validation):.3f}, min {validation.min():.3f}, "
+    print(f"validation on hilly-1-10-0..9: mean {result['mean']:.3f} m/s, "
+          f"median {result['median']:.3f}, min {validation.min():.3f}, "
           f"max {validation.max():.3f}")
     if args.out:
-        run = vsr.new_run(mean, args.shape, args.controller, fitness=validation.mean(),
+        run = vsr.new_run(mean, args.shape, args.controller, fitness=result["mean"],
                           seed=args.seed, evaluations=evaluations)
         vsr.save_run(args.out, run)
         print(f"wrote {args.out}")

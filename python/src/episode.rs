@@ -3,15 +3,18 @@
 //! takes the first step and observes; each `step(action)` holds the action (one actuation
 //! per voxel, in [-1, 1]) for the next 20 steps, as the engine holds a controller's output,
 //! and observes again. Observations are the sensor readings a controller is fed, shape
-//! (voxels, 4): area, vx, vy, touch. The reward is the centre's x advance during the step,
-//! so the rewards add up to the distance of `vsr evaluate`; the episode is truncated after
-//! `seconds` (1801 steps, 90 actions for 30 s), never terminated.
+//! (voxels, 4): area, vx, vy, touch, each within `observation_bounds`. The reward is the
+//! centre's x advance during the step, so the rewards add up to the distance of `vsr
+//! evaluate`; the episode is truncated after `seconds` (1801 steps, 90 actions for 30 s),
+//! never terminated. An action is a 1-D array of one finite number per voxel; values outside
+//! [-1, 1] act as -1 or 1 (the engine clamps, as it does a controller's output).
 
-use numpy::{PyArray1, PyArrayMethods};
+use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use vsr::experiment::{steps_for, Policy};
 use vsr::simulation::constants::ACTUATION_HOLD_STEPS;
+use vsr::simulation::sensors::READING_BOUNDS;
 use vsr::simulation::{Shape, Terrain};
 
 use crate::args::{seconds as check_seconds, terrain as parse_terrain};
@@ -49,8 +52,14 @@ impl Episode {
     /// Starts afresh (`seed`, when given, replaces the noise seed) and takes the first step;
     /// returns (observation, info).
     #[pyo3(signature = (seed=None))]
-    fn reset<'py>(&mut self, py: Python<'py>, seed: Option<u64>) -> PyResult<Bound<'py, PyAny>> {
-        self.noise_seed = seed.unwrap_or(self.noise_seed);
+    fn reset<'py>(
+        &mut self,
+        py: Python<'py>,
+        seed: Option<Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        if let Some(seed) = seed {
+            self.noise_seed = noise_seed(&seed)?;
+        }
         let terrain = self.terrain.clone();
         let noise = Some(self.noise_seed);
         let mut engine = Engine::with_policy(&self.shape, terrain, Policy::External, noise);
@@ -63,7 +72,12 @@ impl Episode {
 
     /// Holds `action` for the next 20 steps; returns (observation, reward, terminated,
     /// truncated, info).
-    fn step<'py>(&mut self, py: Python<'py>, action: Vec<f64>) -> PyResult<Bound<'py, PyAny>> {
+    fn step<'py>(
+        &mut self,
+        py: Python<'py>,
+        action: Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let action = actuations(&action, self.shape.voxel_count())?;
         let total = self.steps;
         let engine = self.running()?;
         let left = total - engine.world().steps();
@@ -85,6 +99,24 @@ impl Episode {
     #[getter]
     fn voxel_count(&self) -> usize {
         self.shape.voxel_count()
+    }
+
+    /// Each voxel's cell in the shape's grid, shape (voxels, 2): column x from the left,
+    /// row y from the bottom, in voxel index order (the observation's rows).
+    #[getter]
+    fn grid<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let cells: Vec<i64> = (self.shape.voxels().iter())
+            .flat_map(|&(x, y)| [x as i64, y as i64])
+            .collect();
+        let array = PyArray1::from_vec(py, cells).reshape([self.shape.voxel_count(), 2])?;
+        Ok(array.into_any())
+    }
+
+    /// (low, high): every reading of an observation lies in this range (the readings are
+    /// normalized to [0, 1], and the sensor noise, sd 0.01, never exceeds 0.121).
+    #[classattr]
+    fn observation_bounds() -> (f32, f32) {
+        (READING_BOUNDS[0], READING_BOUNDS[1])
     }
 
     /// The velocity so far (m/s), as `vsr evaluate` computes it at the end.
@@ -142,5 +174,44 @@ impl Episode {
         info.set_item("x", engine.centre_x())?;
         info.set_item("velocity", engine.outcome().velocity)?;
         Ok(info)
+    }
+}
+
+/// A noise seed given to `reset`: an integer in [0, 2^64 - 1].
+fn noise_seed(seed: &Bound<'_, PyAny>) -> PyResult<u64> {
+    seed.extract::<u64>().map_err(|_| {
+        input(format!(
+            "seed must be an integer in [0, 2^64 - 1] (the sensor noise seed), got {}",
+            describe(seed)
+        ))
+    })
+}
+
+/// An action as one actuation per voxel: anything numpy reads as a 1-D array of `voxels`
+/// numbers (the engine then checks the count and that each is finite).
+fn actuations(action: &Bound<'_, PyAny>, voxels: usize) -> PyResult<Vec<f64>> {
+    let expected =
+        format!("the action must be a 1-D array of {voxels} actuations in [-1, 1], one per voxel");
+    let numpy = action.py().import("numpy")?;
+    let array = numpy
+        .call_method1("asarray", (action, "float64"))
+        .map_err(|_| input(format!("{expected}, got {}", describe(action))))?;
+    let dims: usize = array.getattr("ndim")?.extract()?;
+    if dims != 1 {
+        let shape = array.getattr("shape")?.str()?;
+        return Err(input(format!("{expected}, got an array of shape {shape}")));
+    }
+    let array: PyReadonlyArray1<'_, f64> = array.extract()?;
+    Ok(array.as_array().to_vec())
+}
+
+/// A short description of a Python value for a message: its repr, cut at 40 characters.
+fn describe(value: &Bound<'_, PyAny>) -> String {
+    let text = value
+        .repr()
+        .map_or_else(|_| "?".to_string(), |r| r.to_string());
+    match text.char_indices().nth(40) {
+        Some((cut, _)) => format!("{}...", &text[..cut]),
+        None => text,
     }
 }

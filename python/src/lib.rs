@@ -9,8 +9,10 @@ mod controller;
 mod episode;
 mod errors;
 mod evaluate;
+mod measures;
 mod runfile;
 mod simulate;
+mod terrain;
 
 use pyo3::prelude::*;
 
@@ -19,6 +21,9 @@ fn _vsr(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(evaluate::param_count, m)?)?;
     m.add_function(wrap_pyfunction!(evaluate::evaluate, m)?)?;
     m.add_function(wrap_pyfunction!(simulate::simulate, m)?)?;
+    m.add_function(wrap_pyfunction!(measures::validate, m)?)?;
+    m.add_function(wrap_pyfunction!(measures::ablate, m)?)?;
+    m.add_function(wrap_pyfunction!(terrain::terrain_for, m)?)?;
     m.add_function(wrap_pyfunction!(runfile::check_run, m)?)?;
     m.add_function(wrap_pyfunction!(runfile::new_run, m)?)?;
     m.add_class::<episode::Episode>()?;

@@ -60,6 +60,13 @@ def test_the_episode_refuses_what_it_cannot_do():
         episode.step(np.zeros(9))
     with pytest.raises(ValueError, match="actuation 2 is NaN"):
         episode.step([0, 0, np.nan, 0, 0, 0, 0, 0, 0, 0])
+    with pytest.raises(ValueError, match=r"must be a 1-D array of 10 actuations in \[-1, 1\], "
+                                         r"one per voxel, got an array of shape \(10, 1\)"):
+        episode.step(np.zeros((10, 1)))
+    with pytest.raises(ValueError, match=r"got an array of shape \(\)"):
+        episode.step(np.float32(0.5))
+    with pytest.raises(ValueError, match=r"seed must be an integer in \[0, 2\^64 - 1\].*got -1"):
+        episode.reset(seed=-1)
     truncated = False
     while not truncated:
         *_, truncated, _ = episode.step(np.ones(10))

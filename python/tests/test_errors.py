@@ -47,7 +47,7 @@ def test_a_wrong_genome_length_names_the_row_and_both_lengths():
     with pytest.raises(ValueError, match="the genome has 72 genes"):
         vsr.simulate(np.zeros(72), "biped-4x3", "attention", "flat")
     with pytest.raises(ValueError, match="must be a 2-D array, one genome per row"):
-        vsr.evaluate(np.zeros(73), "biped-4x3", "attention", "flat")
+        vsr.evaluate(np.zeros((2, 1, 73)), "biped-4x3", "attention", "flat")
 
 
 def test_nan_genes_are_refused_by_row_and_gene(vsr_bin, tmp_path):

@@ -1,13 +1,15 @@
-"""The pycma example runs end to end (a tiny budget) and writes a run file vsr replays."""
+"""The pycma example runs end to end (a tiny budget) and writes a run file vsr replays; its
+validation is `vsr validate`'s on that file."""
 
+import json
 import subprocess
 import sys
 
 import vsr
-from conftest import ROOT
+from conftest import ROOT, cli
 
 
-def test_the_cma_example_evolves_validates_and_writes_a_run(tmp_path):
+def test_the_cma_example_evolves_validates_and_writes_a_run(tmp_path, vsr_bin):
     out = tmp_path / "cma.json"
     done = subprocess.run(
         [sys.executable, str(ROOT / "python" / "examples" / "cma_evolve.py"),
@@ -18,3 +20,8 @@ def test_the_cma_example_evolves_validates_and_writes_a_run(tmp_path):
     assert "validation on hilly-1-10-0..9: mean" in done.stdout
     run = vsr.load_run(out)
     assert run["best"]["genome"].shape == (73,) and run["config"]["ga"]["budget_evals"] == 100
+    code, text, err = cli(vsr_bin, "validate", "--genome", str(out), "--seconds", "1", "--json")
+    assert code == 0, err
+    mean = json.loads(text)["mean"]
+    assert run["best"]["fitness"] == mean
+    assert f"validation on hilly-1-10-0..9: mean {mean:.3f} m/s" in done.stdout

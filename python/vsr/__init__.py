@@ -4,10 +4,14 @@ simulator does (Pigozzi, Tang, Medvet, Ha, GECCO 2022), bit for bit as the `vsr`
 
 - ``param_count(shape, controller)``: a controller's genome length.
 - ``evaluate(genomes, shape, controller, terrain, ...)``: velocities of many genomes (one per
-  row), on every core with the GIL released, each what ``vsr evaluate`` prints.
+  row; a 1-D genome is one row), on every core with the GIL released, each what ``vsr
+  evaluate`` prints.
 - ``simulate(genome, ...)``: one episode, with its trajectory on request.
+- ``validate(genome, ...)``, ``ablate(genome, ...)``: ``vsr validate`` and ``vsr ablate``,
+  bit for bit (validation uses each terrain's own noise seed, returned in ``noise_seeds``).
 - ``Episode``: an episode stepped from Python (``reset`` / ``step``, gymnasium-style) for a
-  controller of your own; ``Controller``: the engine's controllers, asked from Python.
+  controller of your own; ``Controller``: the engine's controllers, asked from Python;
+  ``vsr.gym.WalkEnv``: a ``gymnasium.Env`` (the ``gym`` extra).
 - ``load_run``, ``save_run``, ``new_run``: run files, the format of ``vsr`` and the page.
 
 Bad input raises ``ValueError`` with the command line's message; an episode whose simulation
@@ -24,12 +28,14 @@ __all__ = [
     "Controller",
     "Episode",
     "UnstableError",
+    "ablate",
     "evaluate",
     "load_run",
     "new_run",
     "param_count",
     "save_run",
     "simulate",
+    "validate",
 ]
 
 __version__ = "0.1.0"
@@ -39,7 +45,8 @@ def _genes(array, ndim, what):
     """`array` as C-contiguous float32 of `ndim` dimensions: no copy when it already is."""
     array = np.asarray(array)
     if array.ndim != ndim:
-        shape = "a 2-D array, one genome per row" if ndim == 2 else "a 1-D array"
+        shape = ("a 2-D array, one genome per row (or a 1-D array, one genome)" if ndim == 2
+                 else "a 1-D array")
         raise ValueError(f"invalid input: {what} must be {shape}, got shape {array.shape}")
     return np.ascontiguousarray(array, dtype=np.float32)
 
@@ -48,11 +55,37 @@ def evaluate(genomes, shape, controller, terrain, seconds=30.0, threads=None, no
     """Velocity (m/s, float64) of each row of `genomes` driving `controller` on `shape` over
     `terrain` for `seconds`, with sensor noise seeded by `noise_seed`: row i gives exactly
     what ``vsr evaluate`` prints for that genome (``--noise-seed`` defaults to 0 there too).
-    Runs on `threads` threads (all cores when None) with the GIL released. Genes are float32
-    (a float64 array is rounded to float32 once, as a run file stores them). An episode
-    whose simulation became non-finite gives NaN."""
+    A 1-D `genomes` is one genome: an array of one velocity. Runs on `threads` threads (all
+    cores when None) with the GIL released. Genes are float32 (a float64 array is rounded to
+    float32 once, as a run file stores them). An episode whose simulation became non-finite
+    gives NaN."""
+    genomes = np.asarray(genomes)
+    if genomes.ndim == 1:
+        genomes = genomes[None, :]
     genomes = _genes(genomes, 2, "genomes")
     return _vsr.evaluate(genomes, shape, controller, terrain, seconds, threads, noise_seed)
+
+
+def validate(genome, shape, controller, set="paper", seconds=30.0):
+    """``vsr validate`` of `genome`, bit for bit: its velocity on the set's ten terrains,
+    ``paper`` (hilly-1-10-0..9) or ``unseen`` (hilly-1-10-10000..10009), each with the
+    sensor-noise seed the command line gives that terrain (not 0). A dict: ``set``,
+    ``terrains`` (names), ``noise_seeds`` (``evaluate(..., terrain, noise_seed=s)`` repeats
+    one episode), ``velocities`` (float64 array), ``median``, ``mean``. Raises UnstableError
+    if an episode explodes."""
+    genome = _genes(genome, 1, "the genome")
+    return _vsr.validate(genome, shape, controller, set, seconds)
+
+
+def ablate(genome, shape, controller, terrain="hilly-1-10-0", last_second=30, seconds=30.0):
+    """``vsr ablate`` of an attention or slow-attention `genome`, bit for bit: ``unfrozen``,
+    its velocity (m/s) over `seconds` on `terrain` with its attention live; ``velocities``
+    (float64 array), one per second s in ``freeze_seconds`` (0..last_second), the velocity of
+    a fresh walk with every voxel's attention matrix held at what it was s seconds into the
+    unfrozen walk. The sensor noise of every walk is seeded as ``validate`` seeds
+    hilly-1-10-K for `terrain` hilly-1-10-K, as it seeds hilly-1-10-0 for any other."""
+    genome = _genes(genome, 1, "the genome")
+    return _vsr.ablate(genome, shape, controller, terrain, last_second, seconds)
 
 
 def simulate(genome, shape, controller, terrain, seconds=30.0, noise_seed=0, trajectory=False):

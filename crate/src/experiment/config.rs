@@ -65,7 +65,7 @@ impl TrainingTerrain {
 
     /// The terrain of an evaluation whose derived terrain seed is `seed`; for the paper's
     /// family this is exactly [`terrain_name_for`].
-    pub(crate) fn name_for(&self, seed: u64) -> String {
+    pub fn name_for(&self, seed: u64) -> String {
         match self {
             TrainingTerrain::Family(f) if f == PAPER_TERRAIN => terrain_name_for(seed),
             TrainingTerrain::Family(f) => format!("{f}-{}", seed % TERRAIN_SEEDS),

@@ -49,6 +49,18 @@ impl ValidationSet {
         validation_terrain(self.terrain_seed(0))
     }
 
+    /// The set's episodes in order: each terrain's name and its sensor-noise seed. An
+    /// episode of that genome on that terrain with that noise seed (`vsr evaluate
+    /// --noise-seed`, `vsr.evaluate(noise_seed=...)`) is the validation's, bit for bit.
+    pub fn episodes(self) -> Vec<(String, u64)> {
+        (0..VALIDATION_TERRAINS)
+            .map(|i| {
+                let k = self.terrain_seed(i);
+                (validation_terrain(k), validation_noise_seed(k))
+            })
+            .collect()
+    }
+
     /// The terrain seed of the set's terrain `i` (0..10).
     pub(crate) fn terrain_seed(self, i: u32) -> u32 {
         match self {
@@ -137,11 +149,9 @@ pub fn validate(best: &Best, seconds: f64) -> Result<Validation> {
 pub fn validate_on(best: &Best, set: ValidationSet, seconds: f64) -> Result<Validation> {
     best.validate("the genome")?;
     let mut terrains = Vec::new();
-    for i in 0..VALIDATION_TERRAINS {
-        let k = set.terrain_seed(i);
-        let name = validation_terrain(k);
+    for (name, noise) in set.episodes() {
         let terrain = Terrain::parse(&name)?;
-        let noise = Some(validation_noise_seed(k));
+        let noise = Some(noise);
         let outcome = evaluate(
             &best.shape,
             terrain,

@@ -18,6 +18,10 @@ use crate::random::NormalStream;
 pub(crate) const READINGS: usize = 4;
 /// Standard deviation of the sensor noise.
 pub(crate) const NOISE_SD: f64 = 0.01;
+/// Every reading lies in this range: the normalized value is in [0, 1], and the noise's
+/// polar-method draw is at most sqrt(-2 ln s) <= 12.01 sd, s >= 2^-104 being the smallest
+/// nonzero sum of two squared 53-bit uniforms (`random::NormalStream`), so at most 0.121.
+pub const READING_BOUNDS: [f32; 2] = [-0.125, 1.125];
 /// Samples in the velocity average (0.5 s).
 const VELOCITY_WINDOW: usize = (0.5 / DT + 0.5) as usize;
 /// Samples in the touch average (0.25 s).
