@@ -4,7 +4,8 @@
  * and the brain that drives it) is shown by the viewer, edited by the editor and its controls
  * (draw-controls.js), evolved or fine-tuned by the run panel (whose bests it follows,
  * run-follow.js), given modules by the module list, raced side by side, kept across reloads
- * and shared as a link (keeper.js), and set up by the guided tour and the study panel.
+ * and shared as a link (keeper.js), and set up by the guided tour and the study panel; bodies
+ * are searched around a brain by the body-search panel (codesign/).
  */
 import { ready } from './core.js';
 import { wireDrawControls } from './draw-controls.js';
@@ -14,6 +15,7 @@ import { Keeper } from './keeper.js';
 import { messageOf } from './kit.js';
 import { Measurer } from './measure.js';
 import { MessageBox } from './message.js';
+import { CodesignPanel } from './codesign/panel.js';
 import { ModuleList } from './modules.js';
 import { Race } from './race.js';
 import { Robot } from './robot.js';
@@ -90,6 +92,20 @@ const runs = new RunPanel(document, defaults, {
 new RunEstimate(/** @type {HTMLElement} */ (document.getElementById('run-estimate')), runs.form, () => runs.pace, () => drawing.rows());
 robot = new Robot(document, { defaults, drawing, editor, viewer, messages, speedNote, runs, keep: () => keeper.schedule() });
 follower = new RunFollower(robot, modules, () => runs.mode === 'finetune');
+const bodySearch = new CodesignPanel(document, {
+  body: () => ({ rows: drawing.rows(), ok: robot.check.ok, message: robot.check.message }),
+  module: () => modules.selected(),
+  controller: () => controllerSelect.value,
+  run: () => ({ seed: runs.inputs.seed.value, terrain: runs.inputs.terrain.value, workers: runs.inputs.workers.value }),
+  open: (brain) => robot.openBrain(() => brain),
+  race: (racers) => {
+    race.clear();
+    for (const racer of racers) race.add(racer);
+    race.section.scrollIntoView({ block: 'start', behavior: 'instant' });
+  },
+  share: () => keeper.share(),
+  message: showMessage,
+});
 
 function wire() {
   wireDrawControls(document, defaults, drawing, editor, {
@@ -159,6 +175,9 @@ const playground = {
   wanted: () => viewer.wanted,
   walking: () => viewer.current,
   race,
+  /** @param {{brain: string, from: string}} settings the body search's brain and start body */
+  setCodesign: (settings) => bodySearch.setUp(settings),
+race,
   message: showMessage,
 };
 const tour = new Tour(document, playground, new StudyPanel(document, playground));

@@ -267,11 +267,21 @@ export class Robot {
    * @param {import('./modules.js').Module} module @returns {Promise<void>} once done (a problem is shown)
    */
   openModule(module) {
+    return this.openBrain(() => ownBody(module, { left: 0, bottom: 0 }), 'this module\'s body'); // drawn at the bottom-left
+  }
+
+  /**
+   * Replaces the drawing by a brain's own body (`brain.rows`), the brain driving it: a module
+   * opened, a body found by the body search.
+   * @param {() => Promise<Brain> | Brain} make the brain, made in its turn @param {string} [what] the body, in words
+   * @returns {Promise<void>} once done (a problem is shown)
+   */
+  openBrain(make, what = 'this body') {
     const { drawing, editor } = this.parts;
     return this.serial(async () => {
-      const next = await ownBody(module, { left: 0, bottom: 0 }); // drawn at the bottom-left
+      const next = await make();
       const problem = drawing.setRows(next.rows);
-      if (problem) { this.error(`this module's body does not fit the grid: ${problem}`); return; }
+      if (problem) { this.error(`${what} does not fit the grid: ${problem}`); return; }
       this.brain = next;
       editor.draw();
       await this.follow(this.change(false));

@@ -9,6 +9,7 @@
  *   own body (`own`) or transplanted onto `rows` (`drawn`);
  * - terrain: the viewer's terrain; gait: the phase gait if not the page's default; run: the run settings (and `compare`: run from scratch after
  *   fine-tuning); controller: the family Evolve uses; race: the modules racing side by side;
+ * - codesign: the body search's brain (frozen, finetune, scratch) and start body (box, drawing, module);
  * - target: the control the visitor is asked to use (scrolled to and outlined);
  * - figure: a study figure shown beside the chapter (figures.js).
  *
@@ -28,7 +29,8 @@ const VIEW = 'hilly-1-10-0';
  * @property {string} task        the one thing to do
  * @property {string} notice      what to notice
  * @property {{rows: string | null, brain: {module: string, on: 'own' | 'drawn'} | null, terrain: string,
- *   gait?: {frequency: number, phase: number}, run?: Record<string, string>, compare?: boolean, controller?: string, race?: string[]}} setup
+ *   gait?: {frequency: number, phase: number}, run?: Record<string, string>, compare?: boolean, controller?: string, race?: string[],
+ *   codesign?: {brain: string, from: string}}} setup
  * @property {string} target      CSS selector of the control the task is about
  * @property {string} [figure]    a study figure's id (figures.js)
  */
@@ -132,6 +134,18 @@ export const CHAPTERS = [
     setup: { rows: BIPED_LARGE, brain: { module: ATTENTION, on: 'drawn' }, terrain: VIEW, run: QUICK, compare: true },
     target: '#scene, #run-finetune',
     figure: 'finetune-biped-large',
+  },
+  {
+    title: 'Which body for this brain?',
+    text: [
+      'So far you chose a body and evolved a brain for it. Now turn it around: keep the brain and let evolution search the body.',
+      'The brain is the small biped\'s attention module, frozen: its attention stays exactly as it was evolved. The search starts from a plain 3 x 3 box, adds and removes voxels, and keeps the fastest body of each size and each number of feet.',
+      'The attention is the same for any body, so one brain can be tried on many bodies without starting again: this is what the paper means by a brain that can be taken apart and put together in other forms.',
+    ],
+    task: 'Under “Search bodies for this brain”, press “Search bodies”. When the gallery fills, click a green body to watch it walk.',
+    notice: 'The gallery fills round by round: small bodies first, then larger ones and more feet. Green bodies are the fastest; an outline marks bodies new in the last round. The fastest body is often not the biped the brain was evolved on. Each body\'s speed is measured again every round on new hills, so a lucky walk does not stay on top.',
+    setup: { rows: null, brain: { module: ATTENTION, on: 'own' }, terrain: VIEW, run: QUICK, codesign: { brain: 'frozen', from: 'box' } },
+    target: '#codesign-panel',
   },
   {
     title: 'Your turn',

@@ -3,7 +3,7 @@
  * Sets the playground up as a chapter says (chapters.js), with the page's own functions
  * (main.js hands them over as a {@link Playground}; nothing here simulates, transplants or
  * draws): stops a run under way, sets the terrain, the phase gait, the run settings, the body
- * and its brain, and the race; then waits until the viewer walks exactly that robot.
+ * and its brain, the race and the body search's brain; then waits until the viewer walks exactly that robot.
  */
 import { messageOf } from '../kit.js';
 
@@ -27,6 +27,7 @@ const WALK_TIMEOUT_MS = 10_000;
  * @property {() => {shape: string, terrain: string, brain: {controller: string, genome: Float32Array} | null} | null} walking
  *   the episode the viewer walks now
  * @property {import('../race.js').Race} race
+ * @property {(settings: {brain: string, from: string}) => void} setCodesign  the body search's brain and start body
  * @property {(text: string) => void} message
  */
 
@@ -45,6 +46,7 @@ export async function stage(page, chapter) {
   if (brain && setup.brain?.on === 'own') await page.openModule(brain);
   if (brain && setup.brain?.on === 'drawn') await page.loadModule(brain);
   if (setup.race) await race(page, setup.race);
+  if (setup.codesign) page.setCodesign(setup.codesign);
   await walking(page);
 }
 

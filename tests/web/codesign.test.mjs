@@ -1,0 +1,179 @@
+// @ts-check
+/**
+ * Browser test of the body search in the page (node --test):
+ *  - a tiny body search in the page's workers (the body-search coordinator and its evaluation
+ *    workers) gives the same archive and best, bit for bit, with 1 and 2 workers and as
+ *    `vsr codesign` with those settings (needs target/release/vsr; VSR_BIN);
+ *  - the panel runs a small search live: the progress counts evaluations of the planned ones,
+ *    the gallery fills, a click on a body loads it with its brain into the editor and it
+ *    walks; its exported file's best is `vsr codesign`'s with the same settings; the first and
+ *    the last best race side by side;
+ *  - a wrong module (MLP-Comm, frozen) and a drawing that is no body are refused in words that
+ *    stay on the page.
+ * With VSR_BENCH=1 it also times the panel's quick setting on 2 workers (a figure, printed, not
+ * a pass mark). Saves screenshots/codesign.png, codesign-panel.png and codesign-refused.png.
+ */
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { mkdtemp, readFile, rm } from 'node:fs/promises';
+import os from 'node:os';
+import path from 'node:path';
+import { after, before, test } from 'node:test';
+import { BIN, ROOT, SCREENSHOTS, byTestId, figure, openPage, screenshot, start, waitForText } from './harness.mjs';
+
+/** @type {Awaited<ReturnType<typeof start>>} */ let env;
+/** @type {string} */ let tmp;
+
+const MODULE = 'pretrained/biped-4x3-attention.json';
+/** A tiny search: the frozen biped module from a 3 x 3 box, 3 rounds of 10 new bodies, 3-s episodes. */
+const TINY = Object.freeze({ brain: 'frozen', start: '111-111-111', seed: 7, seconds: 3, terrain: 'hilly-1-10', budget: 30, batch: 10 });
+
+before(async () => {
+  env = await start();
+  tmp = await mkdtemp(path.join(os.tmpdir(), 'vsr-codesign-'));
+});
+
+after(async () => {
+  await env?.close();
+  await rm(tmp, { recursive: true, force: true });
+});
+
+/**
+ * Runs a whole body search in a body-search coordinator worker, as the panel does; runs in the
+ * page. @param {[typeof TINY, number, string]} arg settings, workers, the module's run file text
+ */
+async function searchInPage([settings, workers, module]) {
+  const { FromCodesign, ToCodesign } = await import(new URL('protocol.js', location.href).href);
+  const coordinator = new Worker(new URL('codesign/coordinator.js', location.href), { type: 'module' });
+  /** @type {number[]} */
+  const filled = [];
+  const text = await new Promise((resolve, reject) => {
+    coordinator.onmessage = ({ data }) => {
+      if (data.type === FromCodesign.ITERATION) filled.push(data.gallery.length);
+      if (data.type === FromCodesign.DONE) resolve(data.runFile);
+      if (data.type === FromCodesign.ERROR) reject(new Error(data.message));
+    };
+    coordinator.postMessage({ type: ToCodesign.START, settings, workers, module });
+  });
+  coordinator.terminate();
+  return { run: JSON.parse(text), filled };
+}
+
+/**
+ * `vsr codesign` with the same settings on 1 thread. @param {typeof TINY} s @param {string} out
+ * @returns {Promise<any>} its run file
+ */
+async function searchNative(s, out) {
+  execFileSync(BIN, ['codesign', '--brain', s.brain, '--from', path.join(ROOT, MODULE), '--start', s.start,
+    '--evals', String(s.budget), '--seed', String(s.seed), '--seconds', String(s.seconds), '--terrain', s.terrain,
+    '--batch', String(s.batch), '--threads', '1', '--checkpoint-every', '0', '--out', out]);
+  return JSON.parse(await readFile(out, 'utf8'));
+}
+
+/** What must match between two runs of one search: all but wall times and threads. @param {any} run */
+const result = (run) => ({
+  history: run.history.map((/** @type {any} */ r) => ({ ...r, wall_seconds: 0 })),
+  archive: run.archive, best: run.best, evaluations: run.evaluations,
+});
+
+test('a tiny body search in workers is the same with 1 and 2 workers and as vsr codesign, bit for bit', async () => {
+  const { page, problems } = await openPage(env.browser, env.url);
+  const module = await (await fetch(`${env.url}${MODULE}`)).text();
+  const one = await page.evaluate(searchInPage, /** @type {[typeof TINY, number, string]} */ ([TINY, 1, module]));
+  const two = await page.evaluate(searchInPage, /** @type {[typeof TINY, number, string]} */ ([TINY, 2, module]));
+  assert.equal(one.run.format, 'vsr-codesign');
+  assert.ok(one.filled.length >= 2 && one.filled.every((n) => n >= 1), `the gallery filled, round by round: ${one.filled}`);
+  assert.deepEqual(result(two.run), result(one.run), '2 workers as 1');
+  const native = await searchNative(TINY, path.join(tmp, 'native.json'));
+  assert.deepEqual(result(native), result(one.run), 'the page\'s search is vsr codesign\'s');
+  console.log(`# tiny search: ${one.run.evaluations} evaluations, ${one.run.archive.length} bodies, best ${native.best.shape} at ${native.best.fitness.toFixed(3)} m/s, the same in the page and in vsr codesign`);
+  assert.deepEqual(problems, []);
+  await page.context().close();
+});
+
+/** Chooses a pretrained module in "3 · Give it a brain". @param {import('playwright-core').Page} page @param {string} key */
+async function chooseModule(page, key) {
+  await page.locator('#module option[value="' + key + '"]').waitFor({ state: 'attached' });
+  await byTestId(page, 'pretrained').selectOption(key);
+}
+
+test('the panel searches live, the gallery fills, a click loads a body that walks, its best is vsr codesign\'s', async () => {
+  const { page, problems } = await openPage(env.browser, env.url, { width: 1300, height: 1500 });
+  await chooseModule(page, MODULE);
+  await page.locator('#run-seed').fill(String(TINY.seed));
+  await page.locator('#run-workers').fill('2');
+  await byTestId(page, 'codesign-brain').selectOption('frozen');
+  await page.locator('#codesign-from').selectOption('box');
+  await page.locator('#codesign-budget').fill('60');
+  await page.locator('#codesign-seconds').fill(String(TINY.seconds));
+  await byTestId(page, 'codesign').click();
+  await waitForText(page, 'codesign-status', /^searching on 2 workers$/);
+  await page.waitForFunction(() => document.body.dataset.codesign === 'finished', undefined, { timeout: 120_000 });
+  const progress = String(await byTestId(page, 'codesign-progress').textContent());
+  assert.match(progress, /^\d+ of 60 evaluations$/);
+  assert.ok(Number(progress.split(' ')[0]) >= 60, progress);
+  const bodies = byTestId(page, 'codesign-body');
+  const count = await bodies.count();
+  assert.ok(count >= 2, `the gallery shows ${count} bodies`);
+  assert.equal(count, Number(await page.locator('#codesign-summary').getAttribute('data-filled')));
+  assert.match(String(await page.locator('#codesign-summary').textContent()), /kinds? of body found .* fastest: \d+\.\d\d m\/s/);
+
+  // The exported file's best is vsr codesign's with the panel's settings.
+  const [download] = await Promise.all([page.waitForEvent('download'), byTestId(page, 'codesign-export').click()]);
+  const exported = JSON.parse(await readFile(/** @type {string} */ (await download.path()), 'utf8'));
+  const native = await searchNative({ ...TINY, budget: 60, batch: 20 }, path.join(tmp, 'panel.json'));
+  assert.deepEqual(result(exported), result(native), 'the panel\'s search is vsr codesign\'s');
+
+  // A click on the last body loads it with its brain; it walks.
+  const last = bodies.nth(count - 1);
+  const cell = String(await last.getAttribute('data-cell'));
+  const entry = native.archive.find((/** @type {any} */ e) => String(e.cell) === cell);
+  await last.click();
+  await page.waitForFunction((rows) => document.body.dataset.codesignLoaded === rows, entry.shape);
+  await waitForText(page, 'shape-status', new RegExp(`· ${entry.shape}$`));
+  await waitForText(page, 'driver', /a body found by the body search/);
+  const x0 = await figure(page, 'robot-x');
+  await page.waitForTimeout(1500);
+  assert.notEqual(await figure(page, 'robot-x'), x0, 'it walks');
+  await screenshot(page, 'codesign.png');
+  await page.locator('#codesign-panel').screenshot({ path: path.join(SCREENSHOTS, 'codesign-panel.png') });
+
+  // The first and the last best race side by side.
+  await byTestId(page, 'codesign-race').click();
+  await page.waitForFunction(() => document.querySelectorAll('[data-testid="race-robot"]').length === 2);
+  assert.deepEqual(problems, []);
+  await page.context().close();
+});
+
+test('a wrong module and a drawing that is no body are refused in words that stay', async () => {
+  const { page, problems } = await openPage(env.browser, env.url);
+  await chooseModule(page, 'pretrained/biped-4x3-mlp-comm.json');
+  await byTestId(page, 'codesign-brain').selectOption('frozen');
+  await byTestId(page, 'codesign').click();
+  await waitForText(page, 'message', /The body search did not start: .*mlp-comm, not attention: only an attention module can be reassembled into other bodies/);
+  await waitForText(page, 'codesign-status', /^not started$/);
+  assert.equal(await byTestId(page, 'codesign-body').count(), 0);
+  await page.waitForTimeout(2000);
+  assert.match(String(await page.locator('#message').textContent()), /only an attention module/, 'the words stay');
+
+  await page.locator('#clear').click();
+  await page.locator('#codesign-from').selectOption('drawing');
+  await byTestId(page, 'codesign').click();
+  await waitForText(page, 'message', /Your drawing is not a body the search can start from.*Draw one piece of touching voxels/);
+  await screenshot(page, 'codesign-refused.png');
+  assert.deepEqual(problems, []);
+  await page.context().close();
+});
+
+test('benchmark: the quick body search on 2 workers (VSR_BENCH=1)', { skip: !process.env.VSR_BENCH }, async () => {
+  const { page } = await openPage(env.browser, env.url, { width: 1300, height: 1500 });
+  await chooseModule(page, MODULE);
+  await page.locator('#run-workers').fill('2');
+  const started = Date.now();
+  await byTestId(page, 'codesign').click();
+  await page.waitForFunction(() => document.body.dataset.codesign === 'finished', undefined, { timeout: 600_000 });
+  const took = (Date.now() - started) / 1000;
+  console.log(`# quick body search (${await byTestId(page, 'codesign-progress').textContent()}, ${await page.locator('#codesign-seconds').inputValue()}-s episodes) on 2 workers: ${took.toFixed(1)} s; ${await page.locator('#codesign-summary').textContent()}`);
+  await screenshot(page, 'codesign-quick.png');
+  await page.context().close();
+});

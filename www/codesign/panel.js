@@ -1,0 +1,318 @@
+// @ts-check
+/**
+ * The body-search panel ("Search bodies for this brain"): starts a body search (as `vsr
+ * codesign`) from the drawing, the module's own body or a 3 x 3 box, with the chosen module's
+ * brain frozen or fine-tuned, or a brain from scratch, in a body-search coordinator worker
+ * (codesign/coordinator.js) on the run settings' workers; shows its progress and the live
+ * gallery (gallery.js); a click on a body loads it with its brain into the editor, where it
+ * walks (and the page's Share link shares it); the first and the last best race side by side.
+ * Problems (a wrong module, a drawing that is no body) are said in words that stay.
+ */
+import { download } from '../export.js';
+import { messageOf, spawn } from '../kit.js';
+import { plain } from '../message.js';
+import { FromCodesign, ToCodesign } from '../protocol.js';
+import { Gallery } from './gallery.js';
+
+/** The quick body search: finishes in about a minute in Chromium on 2 workers (docs/playground.md). */
+export const QUICK = Object.freeze({ budget: 600, seconds: 10, batch: 20 });
+/** The seed body "a 3 x 3 box". */
+const BOX = '111-111-111';
+
+/**
+ * @typedef {object} CodesignHooks
+ * @property {() => {rows: string, ok: boolean, message: string}} body   the drawing now, and its check
+ * @property {() => Promise<import('../modules.js').Module | null>} module  the module chosen in "3 · Give it a brain"
+ * @property {() => string} controller     the family chosen there (for a brain from scratch)
+ * @property {() => {seed: string, terrain: string, workers: string}} run  the run settings' seed, terrain, workers
+ * @property {(brain: import('../brain.js').Brain) => Promise<void>} open  loads a body with its brain into the editor
+ * @property {(racers: import('../race-lane.js').Racer[]) => void} race  races these robots (the race emptied first)
+ * @property {() => void} share             shares the robot on the page as a link
+ * @property {(text: string) => void} message  an error, in words that stay until closed
+ */
+
+/** @typedef {{controller: string, shape: string, genome: number[], fitness: number}} Entry */
+
+export class CodesignPanel {
+  /** @param {Document} doc @param {CodesignHooks} hooks */
+  constructor(doc, hooks) {
+    const el = (/** @type {string} */ id) => {
+      const found = doc.getElementById(id);
+      if (!found) throw new Error(`the page has no #${id}`);
+      return /** @type {any} */ (found);
+    };
+    this.hooks = hooks;
+    this.brain = /** @type {HTMLSelectElement} */ (el('codesign-brain'));
+    this.from = /** @type {HTMLSelectElement} */ (el('codesign-from'));
+    this.budget = /** @type {HTMLInputElement} */ (el('codesign-budget'));
+    this.seconds = /** @type {HTMLInputElement} */ (el('codesign-seconds'));
+    this.buttons = {
+      start: /** @type {HTMLButtonElement} */ (el('codesign-start')), stop: /** @type {HTMLButtonElement} */ (el('codesign-stop')),
+      race: /** @type {HTMLButtonElement} */ (el('codesign-race')), share: /** @type {HTMLButtonElement} */ (el('codesign-share')),
+      export: /** @type {HTMLButtonElement} */ (el('codesign-export')),
+    };
+    this.progress = /** @type {HTMLElement} */ (el('codesign-progress'));
+    this.summary = /** @type {HTMLElement} */ (el('codesign-summary'));
+    this.status = /** @type {HTMLElement} */ (el('codesign-status'));
+    this.gallery = new Gallery(el('codesign-gallery'), (cell) => this.load(cell));
+    /** @type {Worker | null} */
+    this.coordinator = null;
+    this.running = false;
+    this.starting = false;
+    /** The coordinator said the search started (errors before that: 'did not start'). */
+    this.started = false;
+    /** The latest search's run file (when it ended). @type {string | null} */
+    this.runFile = null;
+    /** What the latest search evolved, in words (labels of its bodies). */
+    this.what = '';
+    /** The best cell after the first round and now, and their entries once fetched. */
+    this.bests = { firstCell: /** @type {[number, number] | null} */ (null), lastCell: /** @type {[number, number] | null} */ (null),
+      first: /** @type {Entry | null} */ (null), last: /** @type {Entry | null} */ (null) };
+    /** The cell loaded last (Share shares it). @type {[number, number] | null} */
+    this.chosen = null;
+    this.tickets = 0;
+    /** Entries asked of the coordinator, by ticket. @type {Map<number, (entry: Entry | null, message?: string) => void>} */
+    this.asked = new Map();
+    this.setQuick();
+    this.wire();
+    this.update();
+  }
+
+  setQuick() {
+    this.budget.value = String(QUICK.budget);
+    this.seconds.value = String(QUICK.seconds);
+  }
+
+  wire() {
+    const b = this.buttons;
+    b.start.addEventListener('click', () => this.start());
+    b.stop.addEventListener('click', () => this.coordinator?.postMessage({ type: ToCodesign.STOP }));
+    b.race.addEventListener('click', () => this.raceFirstLast());
+    b.share.addEventListener('click', () => { if (this.chosen) this.load(this.chosen, true); });
+    b.export.addEventListener('click', () => {
+      if (this.runFile) download(this.runFile, `codesign-${JSON.parse(this.runFile).config.brain ?? 'run'}.json`);
+    });
+    this.brain.addEventListener('change', () => this.update());
+  }
+
+  /**
+   * Chooses the brain and the start body (the tour's set-up); a search under way is left alone.
+   * @param {{brain: string, from: string}} settings
+   */
+  setUp(settings) {
+    if (this.running) return;
+    this.brain.value = settings.brain;
+    this.from.value = settings.from;
+    this.setQuick();
+    this.update();
+  }
+
+  /** Starts a search with the panel's settings; a problem is said in words and starts nothing. */
+  async start() {
+    if (this.running || this.starting) return;
+    this.starting = true;
+    this.update();
+    let plan;
+    try {
+      plan = await this.plan();
+    } catch (error) {
+      plan = { error: `the body search could not be set up: ${messageOf(error)}` };
+    } finally {
+      this.starting = false;
+    }
+    if ('error' in plan) { this.refuse(plan.error); return; }
+    this.coordinator?.terminate(); // the previous search's archive
+    this.asked.clear();
+    this.runFile = null;
+    this.chosen = null;
+    this.bests = { firstCell: null, lastCell: null, first: null, last: null };
+    const { settings, module, workers } = plan;
+    this.what = settings.brain === 'scratch' ? `${settings.controller} from scratch` : `${settings.brain} ${module?.label.replace(/ \([^()]*\)$/, '')}`;
+    const coordinator = spawn('codesign/coordinator.js', (msg) => this.onMessage(coordinator, msg),
+      (text) => this.end(coordinator, `the body search stopped: ${text}`, 'failed'));
+    this.coordinator = coordinator;
+    this.running = true;
+    this.started = false;
+    this.setStatus('starting…');
+    this.progress.textContent = `0 of ${settings.budget.toLocaleString('en')} evaluations`;
+    this.summary.textContent = '';
+    coordinator.postMessage({ type: ToCodesign.START, settings, workers, module: module?.text ?? null });
+    this.update();
+  }
+
+  /**
+   * The search the panel describes, or what is wrong, in words.
+   * @returns {Promise<{settings: import('../protocol.js').CodesignSettings, module: import('../modules.js').Module | null,
+   *   workers: number} | {error: string}>}
+   */
+  async plan() {
+    const brain = /** @type {'frozen' | 'finetune' | 'scratch'} */ (this.brain.value);
+    const from = this.from.value;
+    const budget = Number(this.budget.value);
+    const seconds = Number(this.seconds.value);
+    const run = this.hooks.run();
+    if (!Number.isInteger(budget) || budget < 1) return { error: `evaluations must be a whole number of at least 1, not "${this.budget.value}"` };
+    if (!(seconds > 0 && seconds <= 3600)) return { error: `the episode must last from a fraction of a second to 3600 s, not "${this.seconds.value}"` };
+    const seed = Number(run.seed);
+    if (!Number.isSafeInteger(seed) || seed < 0) return { error: `the seed (Run, under 3 · Give it a brain) must be a whole number from 0, not "${run.seed}"` };
+    let start;
+    if (from === 'drawing') {
+      const body = this.hooks.body();
+      if (!body.ok) {
+        return { error: `Your drawing is not a body the search can start from${body.message ? `: ${plain(body.message)}` : ''}. `
+          + 'Draw one piece of touching voxels, or start from the module\'s own body or a 3 x 3 box.' };
+      }
+      start = body.rows;
+    } else if (from === 'box') {
+      start = BOX;
+    }
+    const module = brain === 'scratch' ? null : await this.hooks.module();
+    if (brain !== 'scratch' && !module) return { error: 'choose a module first (Transplant a module, under 3 · Give it a brain): its brain is the one the bodies are searched for' };
+    /** @type {import('../protocol.js').CodesignSettings} */
+    const settings = { brain, seed, seconds, terrain: run.terrain.trim(), budget, batch: QUICK.batch };
+    if (brain === 'scratch') settings.controller = this.hooks.controller();
+    if (start !== undefined) settings.start = start;
+    return { settings, module, workers: Number(run.workers) || 1 };
+  }
+
+  /** A search that cannot start: says why. @param {string} why */
+  refuse(why) {
+    this.hooks.message(`The body search did not start: ${why}`);
+    this.setStatus('not started');
+    this.update();
+  }
+
+  /** @param {Worker} from @param {any} msg */
+  onMessage(from, msg) {
+    if (from !== this.coordinator) return;
+    switch (msg.type) {
+      case FromCodesign.STARTED:
+        this.started = true;
+        this.gallery.setLayout(msg.layout);
+        this.setStatus(`searching on ${msg.workers} worker${msg.workers === 1 ? '' : 's'}`);
+        break;
+      case FromCodesign.ITERATION: this.onIteration(msg); break;
+      case FromCodesign.ENTRY: {
+        const answer = this.asked.get(msg.ticket);
+        this.asked.delete(msg.ticket);
+        answer?.(msg.entry, msg.message);
+        break;
+      }
+      case FromCodesign.RECOVERED: this.hooks.message(msg.message); break;
+      case FromCodesign.DONE: this.onDone(msg); break;
+      case FromCodesign.ERROR:
+        this.end(from, this.started ? `The body search failed: ${msg.message}` : `The body search did not start: ${msg.message}`,
+          this.started ? 'failed' : 'not started');
+        break;
+      default: console.warn('unknown message from the body-search coordinator', msg);
+    }
+  }
+
+  /** @param {{record: any, evaluations: number, planned: number, gallery: import('../protocol.js').GalleryEntry[], seconds: number}} msg */
+  onIteration(msg) {
+    const { record, gallery } = msg;
+    this.gallery.show(gallery, record.iteration);
+    this.progress.textContent = `${msg.evaluations.toLocaleString('en')} of ${msg.planned.toLocaleString('en')} evaluations`;
+    const best = bestEntry(gallery);
+    const rate = msg.seconds > 0 ? `, ${(msg.evaluations / msg.seconds).toFixed(1)} evaluations a second` : '';
+    this.summary.textContent = `${gallery.length} kind${gallery.length === 1 ? '' : 's'} of body found (cells filled) after round ${record.iteration}`
+      + (best?.fitness != null ? ` · fastest: ${best.fitness.toFixed(2)} m/s, ${best.voxels} voxels with ${best.feet} ${best.feet === 1 ? 'foot' : 'feet'}` : '')
+      + ` · ${msg.seconds.toFixed(0)} s${rate}`;
+    this.summary.dataset.filled = String(gallery.length);
+    this.summary.dataset.best = String(best?.fitness ?? '');
+    if (best) {
+      if (record.iteration === 0) this.bests.firstCell = best.cell;
+      this.bests.lastCell = best.cell;
+    }
+    if (record.iteration === 0 && best) this.ask(best.cell, (entry) => { this.bests.first = entry; this.update(); });
+  }
+
+  /** @param {{stopped: boolean, runFile: string | null}} msg */
+  onDone(msg) {
+    this.running = false;
+    this.runFile = msg.runFile;
+    this.setStatus(msg.stopped ? 'stopped' : 'finished');
+    const last = this.bests.lastCell;
+    if (last) this.ask(last, (entry) => { this.bests.last = entry; this.update(); });
+    this.update();
+  }
+
+  /** The search ended with a problem: says it, and ends the coordinator. @param {Worker} which @param {string} error @param {string} status */
+  end(which, error, status) {
+    if (which !== this.coordinator) return;
+    which.terminate();
+    this.coordinator = null;
+    this.running = false;
+    this.hooks.message(error);
+    this.setStatus(status);
+    this.update();
+  }
+
+  /** Asks the coordinator for the body in `cell` with its brain. @param {[number, number]} cell @param {(entry: Entry | null, message?: string) => void} answer */
+  ask(cell, answer) {
+    if (!this.coordinator) return;
+    const ticket = ++this.tickets;
+    this.asked.set(ticket, answer);
+    this.coordinator.postMessage({ type: ToCodesign.ENTRY, cell, ticket });
+  }
+
+  /**
+   * Loads the body of `cell` with its brain into the editor (it walks there), then shares it
+   * as a link when asked. @param {[number, number]} cell @param {boolean} [share]
+   */
+  load(cell, share = false) {
+    this.ask(cell, async (entry, message) => {
+      if (!entry) { this.hooks.message(`that body could not be loaded: ${message ?? 'it is no longer in the gallery'}`); return; }
+      this.chosen = cell;
+      this.gallery.choose(cell);
+      await this.hooks.open(this.brainOf(entry));
+      document.body.dataset.codesignLoaded = entry.shape;
+      this.update();
+      if (share) this.hooks.share();
+    });
+  }
+
+  /** @param {Entry} entry @returns {import('../brain.js').Brain} */
+  brainOf(entry) {
+    return {
+      controller: entry.controller, genome: new Float32Array(entry.genome), rows: entry.shape, origin: { left: 0, bottom: 0 },
+      module: null, source: null, seconds: Number(this.seconds.value) || null,
+      trained: Number.isFinite(entry.fitness) ? { speed: entry.fitness, terrain: this.hooks.run().terrain.trim() } : null,
+      label: `a body found by the body search (${this.what}): ${Number.isFinite(entry.fitness) ? `${entry.fitness.toFixed(2)} m/s in training` : 'no speed'}`,
+    };
+  }
+
+  /** Races the best body after the first round against the best at the end. */
+  raceFirstLast() {
+    const { first, last } = this.bests;
+    if (!first || !last) return;
+    const racer = (/** @type {Entry} */ e, /** @type {string} */ when) => ({
+      label: `${when}: ${e.shape} (${this.what})`, shape: e.shape, controller: e.controller, genome: new Float32Array(e.genome),
+    });
+    this.hooks.race([racer(first, 'best after the first round'), racer(last, 'best at the end')]);
+  }
+
+  /** @param {string} text */
+  setStatus(text) {
+    this.status.textContent = text;
+    document.body.dataset.codesign = text.split(' ')[0].replace('…', '');
+  }
+
+  /** Enables what applies now. */
+  update() {
+    const b = this.buttons;
+    b.start.disabled = this.running || this.starting;
+    b.stop.disabled = !this.running;
+    b.race.disabled = !this.bests.first || !this.bests.last;
+    b.share.disabled = this.chosen === null || this.coordinator === null;
+    b.export.disabled = this.runFile === null;
+    for (const input of [this.brain, this.from, this.budget, this.seconds]) input.disabled = this.running;
+  }
+}
+
+/** The fastest entry of a gallery, or null. @param {import('../protocol.js').GalleryEntry[]} gallery */
+function bestEntry(gallery) {
+  let best = null;
+  for (const e of gallery) if (e.fitness !== null && (best === null || e.fitness > /** @type {number} */ (best.fitness))) best = e;
+  return best;
+}
