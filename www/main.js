@@ -15,6 +15,9 @@ import { Keeper } from './keeper.js';
 import { messageOf } from './kit.js';
 import { Measurer } from './measure.js';
 import { MessageBox } from './message.js';
+import { Classroom } from './classroom/classroom.js';
+import { Lab } from './classroom/lab.js';
+import { wireWords } from './classroom/simple-words.js';
 import { CodesignPanel } from './codesign/panel.js';
 import { ModuleList } from './modules.js';
 import { Race } from './race.js';
@@ -24,6 +27,7 @@ import { RunFollower } from './run-follow.js';
 import { RunEstimate } from './run-estimate.js';
 import { RunPanel } from './run-panel.js';
 import { SpeedNote } from './speed-note.js';
+import { fillResults } from './tour/results.js';
 import { StudyPanel } from './tour/study.js';
 import { Tour } from './tour/tour.js';
 import { Viewer } from './viewer.js';
@@ -180,6 +184,10 @@ const playground = {
 race,
   message: showMessage,
 };
-const tour = new Tour(document, playground, new StudyPanel(document, playground));
+const lab = new Lab({ defaults, runBests: () => race.run.bests, raceSeconds: () => Number(race.seconds.value) });
+const study = new StudyPanel(document, playground);
+const tour = new Tour(document, playground, study, new Classroom(document, lab));
+fillResults(el('results-plain-body'), (id) => study.show(id));
+wireWords(document);
 
 start().then(() => tour.begin());

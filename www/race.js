@@ -37,7 +37,7 @@ export class Race {
     this.speed = /** @type {HTMLSelectElement} */ (el('race-speed-select'));
     this.generation = /** @type {HTMLSelectElement} */ (el('race-generation'));
     this.buttons = { add: el('race-add'), best: el('race-best'), generation: el('race-add-generation'),
-      restart: el('race-restart'), clear: el('race-clear') };
+      firstLast: el('race-first-last'), restart: el('race-restart'), clear: el('race-clear') };
     /** @type {Lane[]} */
     this.lanes = [];
     /** The current run's best evaluation of every generation, and what it evolved. */
@@ -58,6 +58,7 @@ export class Race {
     b.add.addEventListener('click', () => this.addModule());
     b.best.addEventListener('click', () => this.addGeneration(-1));
     b.generation.addEventListener('click', () => this.addGeneration(Number(this.generation.value)));
+    b.firstLast.addEventListener('click', () => this.firstMiddleLast());
     b.restart.addEventListener('click', () => this.restart());
     b.clear.addEventListener('click', () => this.clear());
     this.speed.addEventListener('change', () => this.restart());
@@ -103,6 +104,25 @@ export class Race {
     if (!pick) { this.hooks.message(`the current run has no generation ${generation}`); return; }
     const which = generation < 0 ? `best so far (generation ${pick.generation})` : `generation ${pick.generation}'s best`;
     this.add({ label: `${this.run.what}, ${which}`, shape: this.run.shape, controller: this.run.controller, genome: pick.genome });
+  }
+
+  /**
+   * The generations {@link firstMiddleLast} races: the first, the middle one and the last of
+   * the current run (fewer when it has fewer).
+   * @param {GenerationBest[]} bests @returns {number[]}
+   */
+  static firstMiddleLastOf(bests) {
+    const gens = bests.map((b) => b.generation);
+    return [...new Set([gens[0], gens[Math.floor((gens.length - 1) / 2)], gens[gens.length - 1]])].filter((g) => g !== undefined);
+  }
+
+  /** Races the current run's first generation's best against its middle and last ones' (the race emptied first). */
+  firstMiddleLast() {
+    if (this.run.bests.length === 0) { this.hooks.message('evolve or fine-tune first: the race takes the bests of the current run'); return; }
+    for (const lane of this.lanes) lane.dispose();
+    this.lanes = [];
+    for (const g of Race.firstMiddleLastOf(this.run.bests)) this.addGeneration(g);
+    this.section.scrollIntoView({ block: 'start', behavior: 'instant' });
   }
 
   /** @param {Racer} racer */
@@ -159,6 +179,7 @@ export class Race {
     b.add.disabled = n >= MAX_RACERS;
     b.best.disabled = n >= MAX_RACERS || this.run.bests.length === 0;
     b.generation.disabled = b.best.disabled;
+    b.firstLast.disabled = this.run.bests.length < 2;
     this.generation.disabled = this.run.bests.length === 0;
     b.restart.disabled = n === 0;
     b.clear.disabled = n === 0;

@@ -111,9 +111,11 @@ test('a glossary explains every word of the page; the paper and the study are li
   assert.match(String(await glossary.textContent()), /query.*keys/s);
   const paper = page.locator('header a[href="https://arxiv.org/abs/2204.06547"]');
   assert.match(String(await paper.textContent()), /Evolving Modular Soft Robots without Explicit Inter-Module Communication using Local Self-Attention/);
-  const results = await page.locator('header a', { hasText: 'results' }).getAttribute('href');
+  assert.equal(await page.locator('header a', { hasText: 'what our study found' }).getAttribute('href'), '#results-plain',
+    'the header opens the results in plain words');
+  const results = await page.locator('#results-plain a', { hasText: 'researchers' }).getAttribute('href');
   const response = await page.request.get(new URL(String(results), env.url).href);
-  assert.equal(response.status(), 200, 'the study\'s results are served with the page');
+  assert.equal(response.status(), 200, 'the study\'s results for researchers are served with the page');
   assert.match(await response.text(), /^# /m);
   const visible = await page.evaluate(() => document.body.innerText + [...document.querySelectorAll('[title]')].map((e) => e.getAttribute('title')).join(' '));
   for (const internal of [/SPEC \d/, /downstream/i, /\bengine\b/i, /sim s \/ wall s/, /\.js\b/, /\bevals\b/]) {

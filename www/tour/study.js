@@ -6,6 +6,7 @@
  * chosen run's best robot in the viewer, on its own body (its run file, study/runs/<run>.json,
  * becomes a module of the list, so it can also race or be transplanted).
  */
+import { withStats } from '../classroom/simple-words.js';
 import { messageOf } from '../kit.js';
 import { unseenWords } from '../modules.js';
 import { FIGURES, STUDY_DIR, TABLES } from './figures.js';
@@ -99,7 +100,7 @@ export class StudyPanel {
     this.image.src = src;
     this.image.alt = fig.title;
     this.link.href = src;
-    this.caption.textContent = `${fig.read} ${fig.paper}`;
+    this.caption.replaceChildren(...withStats(this.section.ownerDocument, `${fig.read} ${fig.paper}`));
     const runs = runsOf(fig, this.runs);
     this.runPick.replaceChildren(...runs.map((r) => new Option(describe(r), r.run)));
     this.watch.disabled = runs.length === 0;

@@ -7,6 +7,7 @@
  * share link's `#...` and both can be in one address. Leaving the tour leaves the playground
  * as the chapter set it.
  */
+import { withStats } from '../classroom/simple-words.js';
 import { messageOf } from '../kit.js';
 import { CHAPTERS } from './chapters.js';
 import { FIGURES, STUDY_DIR } from './figures.js';
@@ -35,11 +36,14 @@ export class Tour {
    * @param {Document} doc
    * @param {import('./stage.js').Playground} page
    * @param {{show: (id: string) => void}} study  shows a figure in the study panel
+   * @param {{exercise: (index: number, notice: HTMLElement | null) => HTMLElement | null, tools: () => HTMLElement} | null} [classroom]
+   *   each chapter's task (asked before its “Notice” shows) and the teacher's tools (../classroom/)
    */
-  constructor(doc, page, study) {
+  constructor(doc, page, study, classroom = null) {
     this.doc = doc;
     this.page = page;
     this.study = study;
+    this.classroom = classroom;
     this.index = -1;
     /** Counts chapter openings, so that a slow one never overwrites a newer one. */
     this.opening = 0;
@@ -67,6 +71,7 @@ export class Tour {
         <a id="tour-link" class="tour-link" title="This chapter's own link: send it, and it opens here">link to this chapter</a>
         <button type="button" id="tour-next" data-testid="tour-next" class="primary">Next &rarr;</button>
       </nav>`;
+    if (this.classroom) box.querySelector('.tour-nav')?.before(this.classroom.tools());
     doc.body.append(box);
     const pick = /** @type {HTMLSelectElement} */ (box.querySelector('#tour-pick'));
     CHAPTERS.forEach((c, i) => pick.append(new Option(`${i + 1}`, String(i))));
@@ -88,6 +93,9 @@ export class Tour {
   begin() {
     const index = chapterOf(location.search);
     if (index >= 0) this.open(index);
+    else if (new URLSearchParams(location.search).has(CHAPTER_PARAM)) {
+      this.page.message(`there is no chapter “${new URLSearchParams(location.search).get(CHAPTER_PARAM)}”: the tour has ${CHAPTERS.length} chapters, 1 to ${CHAPTERS.length} (Learn opens the first)`);
+    }
   }
 
   /**
@@ -130,8 +138,11 @@ export class Tour {
     const body = /** @type {HTMLElement} */ (this.box.querySelector('#tour-body'));
     this.fold(false);
     body.scrollTop = 0;
-    body.replaceChildren(...chapter.text.map((t) => paragraph(doc, t)),
-      paragraph(doc, chapter.task, 'Do', 'tour-task'), paragraph(doc, chapter.notice, 'Notice', 'tour-notice'));
+    const notice = paragraph(doc, chapter.notice, 'Notice', 'tour-notice');
+    body.replaceChildren(...chapter.text.map((t) => paragraph(doc, t)));
+    const task = this.classroom?.exercise(i, notice);
+    if (task) body.append(task);
+    body.append(paragraph(doc, chapter.task, 'Do', 'tour-task'), notice);
     if (chapter.figure) body.append(this.figure(chapter.figure));
     /** @type {HTMLButtonElement} */ (this.box.querySelector('#tour-back')).disabled = i === 0;
     const next = /** @type {HTMLButtonElement} */ (this.box.querySelector('#tour-next'));
@@ -158,7 +169,7 @@ export class Tour {
     img.src = src;
     img.alt = fig.title;
     const caption = /** @type {HTMLElement} */ (box.querySelector('figcaption'));
-    caption.textContent = `Our study: ${fig.title}. ${fig.read} ${fig.paper} `;
+    caption.replaceChildren(...withStats(doc, `Our study: ${fig.title}. ${fig.read} ${fig.paper} `));
     const watch = doc.createElement('button');
     watch.type = 'button';
     watch.textContent = 'Watch its robots';

@@ -1,0 +1,227 @@
+// @ts-check
+/**
+ * Browser test of the classroom (node --test): in every tour chapter a task asks before it
+ * shows (Reveal waits for an answer; the chapter's “Notice” waits for the reveal), and the
+ * reveal's numbers are the page's own (chapter 1's speeds are the viewer's, chapter 3's gene
+ * gain is the gene count's); the teacher's answer keys agree with the students' reveals; the
+ * worksheet holds every chapter's task and link and prints alone (page.pdf, and a screenshot
+ * in print media); after a run, one button races its first, middle and last generations' bests;
+ * the simple-words switch hides formulas and statistics and stays on after a reload, and the
+ * glossary explains the issue's newcomer words, linked where they appear, with the voxel's
+ * width the core's; the plain results have no Markdown and no file paths, and every number in
+ * them is in docs/RESULTS.md. Screenshots: screenshots/classroom-*.png, worksheet.pdf.
+ */
+import assert from 'node:assert/strict';
+import { readFileSync, statSync } from 'node:fs';
+import path from 'node:path';
+import { after, before, test } from 'node:test';
+import { EXERCISES, TASKS, exerciseOf } from '../../www/classroom/exercises.js';
+import { CHAPTERS } from '../../www/tour/chapters.js';
+import { ROOT, SCREENSHOTS, byTestId, figure, openPage, screenshot, start, waitForText } from './harness.mjs';
+
+/** @type {Awaited<ReturnType<typeof start>>} */ let env;
+
+before(async () => { env = await start(); });
+after(async () => { await env?.close(); });
+
+/** @param {import('playwright-core').Page} page */
+async function ready(page) {
+  await page.locator('#tour-box[data-state="ready"]').waitFor({ timeout: 20_000 });
+}
+
+/** Answers chapter `n`'s task (the first choice, or the number 4) and reveals it. @param {import('playwright-core').Page} page @param {number} n */
+async function answerAndReveal(page, n) {
+  const task = byTestId(page, 'tour-exercise');
+  assert.equal(await task.count(), 1, `chapter ${n}: one task`);
+  assert.equal(await byTestId(page, 'tour-reveal').isDisabled(), true, `chapter ${n}: no reveal before an answer`);
+  assert.equal(await page.locator('.tour-notice').isVisible(), false, `chapter ${n}: the Notice waits for the reveal`);
+  if (exerciseOf(n - 1)?.choices) await task.locator('input[type=radio]').first().check();
+  else await task.locator('input[type=number]').fill('4');
+  await byTestId(page, 'tour-reveal').click();
+  await page.locator('[data-testid="tour-exercise"][data-state="revealed"]').waitFor({ timeout: 60_000 });
+  const text = (await byTestId(page, 'tour-answer').locator('p').allTextContents()).join(' ');
+  assert.match(text, /You said: .* The page's answer: /, `chapter ${n}: the answer beside the student's`);
+  assert.equal(await page.locator('.tour-notice').isVisible(), true, `chapter ${n}: the Notice after the reveal`);
+  return text;
+}
+
+test('every chapter asks before it shows: an answer, then the reveal with why', async () => {
+  assert.deepEqual(EXERCISES, TASKS, 'every task\'s chapter is in the tour');
+  const without = CHAPTERS.filter((c, i) => !exerciseOf(i)).map((c) => c.title);
+  console.log(`# chapters without a task: ${JSON.stringify(without)}`);
+  assert.ok(without.length <= 1, 'a task in every chapter but one at most (a chapter in the making)');
+  for (let n = 1; n <= CHAPTERS.length; n++) {
+    if (!exerciseOf(n - 1)) continue;
+    const { page, problems } = await openPage(env.browser, `${env.url}?chapter=${n}`, { width: 1400, height: 900 });
+    await ready(page);
+    const text = await answerAndReveal(page, n);
+    console.log(`# chapter ${n}: ${text}`);
+    if (CHAPTERS[n - 1].title === 'One small brain in every voxel') {
+      const genes = await figure(page, 'param-count');
+      assert.match(text, new RegExp(`The page's answer: 4 genes\\..*${genes} genes for 10 voxels`), 'chapter 3: the gene count the page shows');
+    }
+    if (n === 1) { // the chapter 1 that the exercises name
+      // The speed quoted for φ 1.5 is the one the viewer shows when its episode ends.
+      await page.waitForFunction(() => document.getElementById('robot-speed')?.dataset.ended === 'true', undefined, { timeout: 40_000 });
+      const shown = await figure(page, 'robot-speed');
+      const quoted = Number(/([-\d.]+) m\/s at φ 1\.5/.exec(text)?.[1]);
+      assert.equal(quoted, Number(shown.toFixed(2)), `chapter 1: the reveal's speed is the viewer's (${shown})`);
+    }
+    if (n === 1 || n === 5) await page.screenshot({ path: path.join(SCREENSHOTS, `classroom-reveal-${n}.png`) });
+    assert.deepEqual(problems, [], `chapter ${n}`);
+    await page.context().close();
+  }
+});
+
+test('the teacher\'s answer keys: every chapter\'s, the same as a student\'s reveal', async () => {
+  const { page, problems } = await openPage(env.browser, `${env.url}?chapter=2`, { width: 1400, height: 900 });
+  await ready(page);
+  const student = await answerAndReveal(page, 2);
+  await byTestId(page, 'teacher-keys-open').click();
+  const keys = byTestId(page, 'teacher-keys');
+  await keys.waitFor();
+  await page.locator('[data-testid="teacher-keys"][data-state="done"]').waitFor({ timeout: 120_000 });
+  const rows = await byTestId(page, 'teacher-key').allTextContents();
+  assert.equal(rows.length, CHAPTERS.length);
+  for (const [i, row] of rows.entries()) if (exerciseOf(i)) assert.match(row, /^Answer: /, `chapter ${i + 1}: ${row}`);
+  const shown = /The page's answer: (.*?)\. The page's check/.exec(student)?.[1] ?? '';
+  assert.ok(shown.length > 0);
+  assert.ok(rows[1].startsWith(`Answer: ${shown}.`), `the key of chapter 2 is the student's reveal: ${rows[1]} / ${shown}`);
+  assert.match(rows[2], /^Answer: 4 genes\./);
+  await byTestId(page, 'teacher-keys').screenshot({ path: path.join(SCREENSHOTS, 'classroom-keys-sheet.png') });
+  await screenshot(page, 'classroom-keys.png');
+  assert.deepEqual(problems, []);
+  await page.context().close();
+});
+
+test('Print worksheet: every chapter\'s task, room to write and its link, printed alone', async () => {
+  const { page, problems } = await openPage(env.browser, `${env.url}?chapter=1`, {
+    width: 1400, height: 900, init: () => { window.print = () => { /** @type {any} */ (window).printed = true; }; } });
+  await ready(page);
+  await byTestId(page, 'worksheet-open').click();
+  const sheet = byTestId(page, 'worksheet');
+  await sheet.waitFor();
+  await page.waitForFunction(() => /** @type {any} */ (window).printed === true);
+  const tasks = sheet.locator('.sheet-task');
+  assert.equal(await tasks.count(), CHAPTERS.length);
+  for (let i = 0; i < CHAPTERS.length; i++) {
+    const text = String(await tasks.nth(i).textContent());
+    assert.ok(text.includes(CHAPTERS[i].title), `chapter ${i + 1}'s title`);
+    assert.ok(text.includes(exerciseOf(i)?.ask ?? CHAPTERS[i].task), `chapter ${i + 1}'s task`);
+    assert.match(text, new RegExp(`\\?chapter=${i + 1}(?!\\d)`), `chapter ${i + 1}'s link as text`);
+    assert.equal(await tasks.nth(i).locator('.sheet-write').count(), 1, 'room to write');
+  }
+  await page.emulateMedia({ media: 'print' });
+  assert.equal(await page.locator('main').isVisible(), false, 'printed, the playground is away');
+  assert.equal(await page.locator('#tour-box').isVisible(), false, 'and the tour');
+  assert.equal(await sheet.isVisible(), true, 'the worksheet prints');
+  await page.screenshot({ path: path.join(SCREENSHOTS, 'classroom-worksheet-print.png'), fullPage: true });
+  const pdf = path.join(SCREENSHOTS, 'worksheet.pdf');
+  await page.pdf({ path: pdf, format: 'A4', margin: { top: '15mm', bottom: '15mm', left: '15mm', right: '15mm' } });
+  const bytes = readFileSync(pdf, 'latin1');
+  const pages = (bytes.match(/\/Type\s*\/Page[^s]/g) ?? []).length;
+  console.log(`# worksheet.pdf: ${pages} pages, ${statSync(pdf).size} bytes`);
+  assert.ok(pages >= 2 && pages <= 6, `a few pages: ${pages}`);
+  await page.emulateMedia({ media: 'screen' });
+  await page.getByRole('button', { name: 'Close' }).click();
+  assert.equal(await sheet.count(), 0);
+  assert.deepEqual(problems, []);
+  await page.context().close();
+});
+
+test('after a run, one button races its first, middle and last generations side by side', async () => {
+  const { page, problems } = await openPage(env.browser, env.url, { width: 1400, height: 1000 });
+  assert.equal(await byTestId(page, 'race-first-last').isDisabled(), true, 'no run yet');
+  for (const [key, value] of Object.entries({ population: '4', seconds: '2', budget: '40', seed: '3', workers: '2' })) {
+    await page.locator(`#run-${key}`).fill(value);
+  }
+  await byTestId(page, 'evolve').click();
+  await waitForText(page, 'run-status', /^finished$/, 90_000);
+  const last = await figure(page, 'run-generation');
+  await byTestId(page, 'race-first-last').click();
+  await page.waitForFunction(() => document.querySelectorAll('[data-testid="race-robot"]').length === 3);
+  const names = await page.locator('.race-name').allTextContents();
+  assert.match(names[0], /generation 0's best/);
+  assert.match(names[1], new RegExp(`generation ${Math.floor(last / 2)}'s best`));
+  assert.match(names[2], new RegExp(`generation ${last}'s best`));
+  await page.waitForFunction(() => [...document.querySelectorAll('[data-testid="race-speed"]')]
+    .every((o) => Number(/** @type {HTMLElement} */ (o).dataset.time) > 2), undefined, { timeout: 30_000 });
+  await byTestId(page, 'race').screenshot({ path: path.join(SCREENSHOTS, 'classroom-first-last.png') });
+  assert.deepEqual(problems, []);
+  await page.context().close();
+});
+
+test('simple words: formulas and statistics hidden, kept after a reload; the newcomer\'s words explained', async () => {
+  const { page, problems } = await openPage(env.browser, `${env.url}?chapter=6`, { width: 1400, height: 900 });
+  await ready(page);
+  const stats = page.locator('#tour-box figcaption .stats');
+  assert.ok(await stats.count() >= 1, 'the figure\'s p-values are marked');
+  assert.equal(await stats.first().isVisible(), true);
+  await byTestId(page, 'simple-words').check();
+  assert.equal(await stats.first().isVisible(), false, 'simple words: no p-values');
+  assert.doesNotMatch(String(await page.locator('#tour-box figcaption').innerText()), /\bp\b \d|Holm/);
+  await page.reload();
+  await waitForText(page, 'status', /voxels/);
+  assert.equal(await byTestId(page, 'simple-words').isChecked(), true, 'kept');
+  assert.equal(await page.locator('#attention-reader details.formula').evaluate((el) => getComputedStyle(el).display), 'none');
+  assert.equal(await page.locator('#results-plain details.stats').isVisible(), false);
+
+  // The glossary explains the issue's words, and a word in the page links to its entry.
+  const glossary = String(await page.locator('#glossary dl').textContent());
+  for (const word of ['VSR', 'GECCO', 'MLP', 'network', 'weights', 'bias', 'tanh', 'softmax', 'dot product', 'saturate', 'a, b, c, d', 'Holm', 'IQR', 'JSON', '20000 + 10000']) {
+    assert.ok(glossary.includes(word), `the glossary explains ${word}`);
+  }
+  const side = Number(/VOXEL_SIDE: f64 = ([\d.]+);/.exec(readFileSync(path.join(ROOT, 'crate/src/simulation/constants.rs'), 'utf8'))?.[1]);
+  assert.match(glossary, new RegExp(`voxel[^.]*${side} m wide`), `a voxel's width is the core's (${side} m)`);
+  await page.locator('header a.term[href="#g-gecco"]').click();
+  assert.equal(await page.locator('#glossary').getAttribute('open'), '');
+  await page.waitForFunction(() => { const r = document.getElementById('g-gecco')?.getBoundingClientRect(); return r && r.top >= 0 && r.bottom <= innerHeight; });
+  await screenshot(page, 'classroom-simple-words.png');
+  assert.deepEqual(problems, []);
+  await page.context().close();
+});
+
+test('the study\'s results in plain words: no Markdown, no file paths, every number from RESULTS.md, the tests behind a fold', async () => {
+  const { page, problems } = await openPage(env.browser, env.url, { width: 1400, height: 900 });
+  const section = byTestId(page, 'results-plain');
+  await page.locator('header a[href="#results-plain"]').click();
+  await page.waitForFunction(() => { const r = document.getElementById('results-plain')?.getBoundingClientRect(); return r && r.top < innerHeight && r.bottom > 0; });
+  assert.equal(new URL(page.url()).hash, '', 'the address (the share link\'s #...) is left alone');
+  const plain = String(await section.evaluate((el) => {
+    const copy = /** @type {HTMLElement} */ (el.cloneNode(true));
+    copy.querySelector('details')?.remove();
+    return copy.textContent;
+  }));
+  assert.doesNotMatch(plain, /\*\*|`|\||^#|\[[^\]]*\]\(/m, 'no Markdown characters');
+  assert.doesNotMatch(plain, /[\w-]+\/[\w.-]+\.(md|json|csv|toml|svg)\b|docs\/|study\//, 'no file paths');
+  assert.doesNotMatch(plain, /\bRQ\d|A12|Hodges|Mann-Whitney|CCD|dyn4j|SPEC|latched/, 'none of the researchers\' terms');
+  assert.match(plain, /No difference detected” means/);
+  const results = readFileSync(path.join(ROOT, 'docs/RESULTS.md'), 'utf8');
+  const words = await section.evaluate((el) => { // every text node apart, so that table cells do not run together
+    const walk = document.createTreeWalker(el, NodeFilter.SHOW_TEXT);
+    const out = [];
+    while (walk.nextNode()) out.push(walk.currentNode.textContent);
+    return out.join(' ');
+  });
+  const numbers = [...words.matchAll(/[+-]?\d[\d,]*\.\d+|\d{1,3}(?:,\d{3})+/g)].map((m) => m[0]);
+  assert.ok(numbers.length >= 10, `numbers: ${numbers}`);
+  for (const n of numbers) assert.ok(results.includes(n.replace(/^\+/, '')), `${n} is in docs/RESULTS.md`);
+  const fold = section.locator('details.stats');
+  assert.equal(await fold.getAttribute('open'), null, 'the tests are folded');
+  assert.equal(await section.locator('table.tests').isVisible(), false);
+  await fold.locator('summary').click();
+  assert.equal(await section.locator('table.tests tbody tr').count(), 6);
+  await section.screenshot({ path: path.join(SCREENSHOTS, 'classroom-results-plain.png') });
+  await section.locator('button', { hasText: 'See the figure' }).first().click();
+  await page.waitForFunction(() => /fig4-rq1-biped/.test(/** @type {HTMLImageElement} */ (document.getElementById('study-image')).src));
+  assert.deepEqual(problems, []);
+  await page.context().close();
+});
+
+test('a link to a chapter the tour does not have says how many it has', async () => {
+  const { page, problems } = await openPage(env.browser, `${env.url}?chapter=12`, { width: 1400, height: 900 });
+  await waitForText(page, 'message', new RegExp(`no chapter “12”: the tour has ${CHAPTERS.length} chapters`));
+  assert.equal(await page.locator('#tour-box').isVisible(), false);
+  assert.deepEqual(problems, []);
+  await page.context().close();
+});

@@ -1,0 +1,237 @@
+// @ts-check
+/**
+ * The classroom: each tour chapter's task (exercises.js) under its text, asked before it is
+ * shown: the student answers (a choice or a number), then Reveal runs it in the page (lab.js)
+ * and shows the answer, with why, beside the student's; the chapter's “Notice” waits until
+ * then. Two tools for the teacher in the tour's box: “Print worksheet” (a sheet generated in the
+ * page: every chapter's task, room to write, the chapter's link as text; printed alone by
+ * classroom.css) and “Answer keys” (every key, computed as a student's reveal computes it).
+ */
+import { messageOf } from '../kit.js';
+import { CHAPTERS } from '../tour/chapters.js';
+import { exerciseOf } from './exercises.js';
+
+/** The address of chapter `index` (0-based), as text. @param {number} index */
+export function chapterLink(index) {
+  const url = new URL(location.href);
+  url.search = '';
+  url.hash = '';
+  url.searchParams.set('chapter', String(index + 1));
+  return url.href;
+}
+
+/**
+ * @param {Document} doc @param {string} tag @param {string} [className] @param {string} [text]
+ * @returns {HTMLElement}
+ */
+function make(doc, tag, className, text) {
+  const el = doc.createElement(tag);
+  if (className) el.className = className;
+  if (text !== undefined) el.textContent = text;
+  return el;
+}
+
+export class Classroom {
+  /** @param {Document} doc @param {import('./lab.js').Lab} lab */
+  constructor(doc, lab) {
+    this.doc = doc;
+    this.lab = lab;
+    /** The student's answers by chapter, kept while the page is open. @type {Map<number, string>} */
+    this.answers = new Map();
+  }
+
+  /**
+   * Chapter `index`'s task, to go under its text; `notice` (the chapter's “Notice”) is hidden
+   * until the reveal. Null for a chapter without a task.
+   * @param {number} index @param {HTMLElement | null} notice @returns {HTMLElement | null}
+   */
+  exercise(index, notice) {
+    const doc = this.doc;
+    const ex = exerciseOf(index);
+    if (!ex) return null;
+    const box = make(doc, 'section', 'exercise');
+    box.dataset.testid = 'tour-exercise';
+    box.dataset.chapter = String(index + 1);
+    box.append(make(doc, 'h3', 'exercise-title', 'Predict first'), make(doc, 'p', 'exercise-ask', ex.ask));
+    /** @type {() => string} */
+    let given;
+    const reveal = /** @type {HTMLButtonElement} */ (make(doc, 'button', 'primary', 'Reveal'));
+    reveal.type = 'button';
+    reveal.dataset.testid = 'tour-reveal';
+    reveal.title = 'Answer first: then the page runs it and shows what happens, and why';
+    const kept = this.answers.get(index) ?? '';
+    if (ex.choices) {
+      const list = make(doc, 'div', 'exercise-choices');
+      list.setAttribute('role', 'radiogroup');
+      ex.choices.forEach((text, i) => {
+        const label = make(doc, 'label', 'exercise-choice');
+        const input = /** @type {HTMLInputElement} */ (doc.createElement('input'));
+        input.type = 'radio';
+        input.name = `exercise-${index}`;
+        input.value = String(i);
+        input.checked = kept === String(i);
+        label.append(input, ` ${text}`);
+        list.append(label);
+      });
+      box.append(list);
+      given = () => /** @type {HTMLInputElement | null} */ (list.querySelector('input:checked'))?.value ?? '';
+    } else {
+      const label = make(doc, 'label', 'exercise-number', 'My guess ');
+      const input = /** @type {HTMLInputElement} */ (doc.createElement('input'));
+      input.type = 'number';
+      input.step = 'any';
+      input.value = kept;
+      input.setAttribute('aria-label', 'My guess');
+      label.append(input, ` ${ex.unit ?? ''}`);
+      box.append(label);
+      given = () => input.value.trim();
+    }
+    const result = make(doc, 'div', 'exercise-result');
+    result.dataset.testid = 'tour-answer';
+    result.setAttribute('aria-live', 'polite');
+    result.hidden = true;
+    const ready = () => {
+      const answered = given() !== '';
+      reveal.disabled = !answered || box.dataset.state === 'revealing';
+      if (answered) this.answers.set(index, given());
+    };
+    box.addEventListener('input', ready);
+    box.addEventListener('change', ready);
+    const hint = make(doc, 'span', 'exercise-hint', 'answer first, then reveal');
+    const bar = make(doc, 'div', 'exercise-bar');
+    bar.append(reveal, hint);
+    box.append(bar, result);
+    if (notice) notice.hidden = true;
+    reveal.addEventListener('click', async () => {
+      const mine = given();
+      if (mine === '') return;
+      box.dataset.state = 'revealing';
+      reveal.disabled = true;
+      reveal.textContent = 'Running it…';
+      try {
+        const key = await ex.key(this.lab);
+        const right = ex.choices ? Number(mine) === key.answer : Number(mine) === key.answer;
+        const yours = ex.choices ? ex.choices[Number(mine)] : `${mine} ${ex.unit ?? ''}`.trim();
+        result.replaceChildren(
+          make(doc, 'p', right ? 'exercise-right' : 'exercise-wrong', `${right ? '✓ Right.' : '✗ Not this time.'} You said: ${yours}.`),
+          make(doc, 'p', 'exercise-key', `The page's answer: ${key.shown}.`),
+          make(doc, 'p', 'exercise-why', key.why));
+        if (ex.try) result.append(make(doc, 'p', 'exercise-try', `Now try it: ${ex.try}`));
+        result.hidden = false;
+        box.dataset.state = 'revealed';
+        box.dataset.right = String(right);
+        if (notice) notice.hidden = false;
+      } catch (error) {
+        result.replaceChildren(make(doc, 'p', 'exercise-wrong', `The page could not run it: ${messageOf(error)}`));
+        result.hidden = false;
+        box.dataset.state = 'failed';
+      }
+      reveal.textContent = 'Reveal';
+      reveal.disabled = false;
+    });
+    ready();
+    return box;
+  }
+
+  /** The teacher's tools: a row of buttons for the tour's box. */
+  tools() {
+    const doc = this.doc;
+    const bar = make(doc, 'div', 'tour-class');
+    const print = /** @type {HTMLButtonElement} */ (make(doc, 'button', '', 'Print worksheet'));
+    print.type = 'button';
+    print.dataset.testid = 'worksheet-open';
+    print.title = 'A sheet for a class: every chapter\'s task, room to write, the chapter\'s link';
+    print.addEventListener('click', () => this.worksheet(true));
+    const keys = /** @type {HTMLButtonElement} */ (make(doc, 'button', '', 'Answer keys (teacher)'));
+    keys.type = 'button';
+    keys.dataset.testid = 'teacher-keys-open';
+    keys.title = 'Every task\'s answer, computed by the page now, with why';
+    keys.addEventListener('click', () => this.keys());
+    bar.append(print, keys);
+    return bar;
+  }
+
+  /** An overlay sheet with a title, a Print and a Close button. @param {string} id @param {string} title */
+  sheet(id, title) {
+    const doc = this.doc;
+    for (const open of doc.querySelectorAll('.class-sheet')) open.remove(); // one sheet at a time
+    const sheet = make(doc, 'section', 'class-sheet');
+    sheet.id = id;
+    sheet.setAttribute('role', 'dialog');
+    sheet.setAttribute('aria-label', title);
+    const bar = make(doc, 'div', 'class-sheet-bar');
+    const print = /** @type {HTMLButtonElement} */ (make(doc, 'button', 'primary', 'Print'));
+    print.type = 'button';
+    print.addEventListener('click', () => { doc.body.dataset.printing = id; print.ownerDocument.defaultView?.print(); });
+    const close = /** @type {HTMLButtonElement} */ (make(doc, 'button', '', 'Close'));
+    close.type = 'button';
+    close.addEventListener('click', () => { sheet.remove(); delete doc.body.dataset.printing; });
+    bar.append(print, close);
+    sheet.append(bar, make(doc, 'h1', '', title));
+    doc.body.append(sheet);
+    doc.body.dataset.printing = id; // the browser's own Print prints this sheet while it is open
+    return sheet;
+  }
+
+  /** The worksheet (and the print dialog, when `print`). @param {boolean} print */
+  worksheet(print) {
+    const doc = this.doc;
+    const sheet = this.sheet('worksheet', 'VSR Playground: predict, then try');
+    sheet.dataset.testid = 'worksheet';
+    sheet.append(make(doc, 'p', 'sheet-name', 'Name: ______________________________   Date: ______________'),
+      make(doc, 'p', 'sheet-how', 'For each chapter: open its link, read it, write your prediction before you press Reveal, then try it and write what happened.'));
+    CHAPTERS.forEach((chapter, i) => {
+      const ex = exerciseOf(i);
+      const part = make(doc, 'section', 'sheet-task');
+      part.append(make(doc, 'h2', '', `Chapter ${i + 1}. ${chapter.title}`), make(doc, 'p', 'sheet-link', chapterLink(i)),
+        make(doc, 'p', 'sheet-ask', ex?.ask ?? chapter.task));
+      if (!ex) {
+        // a chapter without a task: its “Do”, and room to write
+      } else if (ex.choices) {
+        const list = make(doc, 'ul', 'sheet-choices');
+        for (const c of ex.choices) list.append(make(doc, 'li', '', `☐ ${c}`));
+        part.append(list);
+      } else {
+        part.append(make(doc, 'p', 'sheet-guess', `My guess: ____________ ${ex.unit ?? ''}`));
+      }
+      part.append(make(doc, 'p', 'sheet-lines', 'What happened, and why:'), make(doc, 'div', 'sheet-write'));
+      sheet.append(part);
+    });
+    sheet.scrollIntoView({ block: 'start' });
+    if (print) setTimeout(() => doc.defaultView?.print(), 0);
+    return sheet;
+  }
+
+  /** The teacher view: every task with its key, computed one after another. */
+  async keys() {
+    const doc = this.doc;
+    const sheet = this.sheet('teacher-keys', 'Answer keys: predict, then try');
+    sheet.dataset.testid = 'teacher-keys';
+    sheet.dataset.state = 'computing';
+    sheet.append(make(doc, 'p', 'sheet-how', 'Each answer is computed now by this page, as a student\'s Reveal computes it: the numbers come from walks the page just ran or from the study\'s files.'));
+    const rows = CHAPTERS.map((chapter, i) => {
+      const part = make(doc, 'section', 'sheet-task');
+      const key = make(doc, 'p', 'sheet-key', 'computing…');
+      key.dataset.testid = 'teacher-key';
+      const ex = exerciseOf(i);
+      part.append(make(doc, 'h2', '', `Chapter ${i + 1}. ${chapter.title}`), make(doc, 'p', 'sheet-ask', ex?.ask ?? chapter.task));
+      if (!ex) key.textContent = 'No task in this chapter: its “Do” above.';
+      else if (ex.choices) part.append(make(doc, 'p', 'sheet-choices-inline', `Choices: ${ex.choices.join(' · ')}`));
+      part.append(key);
+      sheet.append(part);
+      return key;
+    });
+    for (const [i, row] of rows.entries()) {
+      const ex = exerciseOf(i);
+      if (!ex) continue;
+      try {
+        const key = await ex.key(this.lab);
+        row.replaceChildren(make(doc, 'b', '', `Answer: ${key.shown}. `), key.why);
+        row.dataset.answer = String(key.answer);
+      } catch (error) {
+        row.textContent = `could not be computed: ${messageOf(error)}`;
+      }
+    }
+    sheet.dataset.state = 'done';
+  }
+}

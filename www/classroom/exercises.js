@@ -1,0 +1,236 @@
+// @ts-check
+/**
+ * Predict, then try: one task per tour chapter (tied to its chapter by title), as data. A
+ * task asks before it shows: choices, or a number to guess. Its key is never written here: it
+ * is computed when asked (`key(lab)`, lab.js), by walking the chapter's robots in the page, by
+ * the core's checks, or from committed run files, and it says where its numbers come from. The
+ * tour shows a task under its chapter, the worksheet prints them all, the teacher view lists
+ * every key (classroom.js).
+ */
+import { CHAPTERS } from '../tour/chapters.js';
+
+/** A value of an attention matrix beyond ±this counts as "at +1 or −1". */
+export const SATURATED = 0.9;
+
+/**
+ * @typedef {object} Key  a task's answer, computed
+ * @property {number} answer   the right choice's index, or the number
+ * @property {string} shown    the answer in words
+ * @property {string} why      why, with the numbers the page just ran and where they come from
+ */
+/**
+ * @typedef {object} Exercise
+ * @property {string} chapter        its chapter's title
+ * @property {string} ask            the question
+ * @property {string[]} [choices]    choices (else a number to guess)
+ * @property {string} [unit]         the number's unit
+ * @property {string} [try]          what to do after answering, to see it happen
+ * @property {(lab: import('./lab.js').Lab) => Promise<Key>} key
+ */
+
+/** @param {number} v @param {number} [digits] */
+const ms = (v, digits = 2) => `${(Math.abs(v) < 0.5 * 10 ** -digits ? 0 : v).toFixed(digits)} m/s`;
+/** @param {string} rows */
+const voxels = (rows) => rows.split('').filter((c) => c === '1').length;
+/** The chapters the tasks belong to, by title (a task follows its chapter wherever it moves). */
+const GAIT = 'A voxel and its colours';
+const BODY = 'A body';
+const BRAIN = 'One small brain in every voxel';
+const ATTENTION = 'Attention, read on one voxel';
+const EVOLUTION = 'Evolution';
+const THREE = 'Three brains, side by side';
+const FREEZE = 'Freeze the attention';
+const TRANSPLANT = 'Transplant a module';
+const YOURS = 'Your turn';
+
+/** @typedef {import('../tour/chapters.js').Chapter['setup']} Setup */
+/** @type {Setup} a chapter that is not there (its task is left out, see EXERCISES) */
+const MISSING = { rows: '', brain: null, terrain: 'flat' };
+/** A chapter's set-up. @param {string} title @returns {Setup} */
+const setup = (title) => CHAPTERS.find((c) => c.title === title)?.setup ?? MISSING;
+/** The chapter's own module (a run file served with the page). @param {string} title */
+const moduleOf = (title) => setup(title).brain?.module ?? '';
+
+/**
+ * The index of the choice a ratio falls in: faster than 1, from a half to 1, under a half.
+ * @param {number} ratio
+ */
+const third = (ratio) => (ratio > 1 ? 0 : ratio >= 0.5 ? 1 : 2);
+/** The three choices {@link third} tells apart. @param {string} than what the speed is compared with */
+const thirds = (than) => [`faster than ${than}`, 'slower, but at least half as fast', 'less than half as fast'];
+const GAIT_CHOICES = thirds(`at φ ${setup(GAIT).gait?.phase}`);
+const FREEZE_CHOICES = thirds('before the freeze');
+const TRANSPLANT_CHOICES = thirds('on its own body');
+
+/** Rows with column `col` (0-based from the left) erased. @param {string} rows @param {number} col */
+const erase = (rows, col) => rows.split('-').map((r) => `${r.slice(0, col)}0${r.slice(col + 1)}`).join('-');
+
+/** @type {Exercise[]} */
+export const TASKS = [
+  {
+    chapter: GAIT,
+    ask: `The robot walks with φ ${setup(GAIT).gait?.phase} (each column a little later than the one on its left). If every column beats together (φ 0), how fast will it walk?`,
+    choices: GAIT_CHOICES,
+    try: 'Change φ to 0 under the robot and read its speed.',
+    async key(lab) {
+      const { rows, terrain, gait } = setup(GAIT);
+      const f = gait?.frequency ?? lab.defaults.gait.frequency;
+      const seconds = lab.defaults.quick.seconds;
+      const wave = await lab.walk({ rows: /** @type {string} */ (rows), terrain, seconds, gait: { frequency: f, phase: gait?.phase ?? 0 } });
+      const together = await lab.walk({ rows: /** @type {string} */ (rows), terrain, seconds, gait: { frequency: f, phase: 0 } });
+      const answer = third(together.speed / wave.speed);
+      return { answer, shown: `${GAIT_CHOICES[answer]}: ${ms(together.speed)} against ${ms(wave.speed)}`,
+        why: `The page just walked both for ${seconds} s on ${terrain} ground: ${ms(wave.speed)} at φ ${gait?.phase}, ${ms(together.speed)} at φ 0. `
+          + 'When every column squeezes at the same moment the body bounces on the spot: no wave runs along it to push it forward.' };
+    },
+  },
+  {
+    chapter: BODY,
+    ask: 'Erase the third column of the biped, so that it falls into two pieces. What will the page do?',
+    choices: ['both pieces walk, each on its own', 'the bigger piece walks, the other one is dropped', 'nothing walks until it is one piece again'],
+    try: 'Erase that column (drag with the right mouse button, or press Erase first) and watch.',
+    async key(lab) {
+      const cut = erase(/** @type {string} */ (setup(BODY).rows), 2);
+      const check = await lab.check(cut);
+      const answer = check.ok ? 0 : 2;
+      return { answer, shown: answer === 2 ? 'nothing walks until it is one piece again' : 'it walks',
+        why: `The page's check of the cut drawing (${cut}) finds ${check.pieces.length} pieces${check.ok ? '' : ` and says: “${check.message}”`}. `
+          + 'Voxels only push and pull on the voxels they touch, so a piece on its own would be a second robot.' };
+    },
+  },
+  {
+    chapter: BRAIN,
+    ask: `This biped has ${voxels(/** @type {string} */ (setup(BRAIN).rows))} voxels. Give it one more voxel: how many genes (the numbers evolution tunes) does its attention brain gain?`,
+    unit: 'genes',
+    try: 'Click an empty square right next to the robot and read the gene count under “3 · Give it a brain”.',
+    async key(lab) {
+      const rows = /** @type {string} */ (setup(BRAIN).rows);
+      const bigger = rows.replace(/0(?=[01]*$)/, '1'); // one more voxel in the bottom row, next to a leg
+      const [a, b] = await Promise.all([lab.check(rows), lab.check(bigger)]);
+      const genes = (/** @type {import('../core.js').ShapeCheck} */ c) => c.params.find(([k]) => k === 'attention')?.[1] ?? NaN;
+      const gain = genes(b) - genes(a);
+      return { answer: gain, shown: `${gain} genes`,
+        why: `The page counts ${genes(a)} genes for ${a.voxels} voxels and ${genes(b)} for ${b.voxels}. The new voxel runs the same network as `
+          + `every other; only its own output weights are new, one for each of the ${gain} things a voxel feels (area, vx, vy, touch).` };
+    },
+  },
+  {
+    chapter: ATTENTION,
+    ask: 'A voxel\'s attention matrix holds 16 values, each between −1 and +1. At any moment of this walk, how many of the 16 do you expect to sit at +1 or −1 (beyond ±0.9)?',
+    unit: 'of 16',
+    try: 'Click a voxel\'s map beside the robot and count the darkest squares.',
+    async key(lab) {
+      const { rows, controller, genome } = await lab.module(moduleOf(ATTENTION));
+      const seconds = lab.defaults.quick.seconds;
+      const walk = await lab.walk({ rows, terrain: setup(ATTENTION).terrain, seconds, brain: { controller, genome }, saturated: SATURATED });
+      const n = /** @type {number} */ (walk.saturatedPer16);
+      const moved = /** @type {number[]} */ (walk.movedByRow).map((m, i) => `${['area', 'vx', 'vy', 'touch'][i]} ${Math.round(100 * m)}%`);
+      return { answer: Math.round(n), shown: `about ${n.toFixed(1)} of 16`,
+        why: `The page just walked this robot for ${seconds} s and read every voxel's matrix at every decision (three a second): on average `
+          + `${n.toFixed(1)} of the 16 values sat beyond ±${SATURATED}. Each value is a tanh of numbers evolution made large, so it sits at −1 or +1 `
+          + `unless they nearly cancel. Share of each row's values that swung by more than 0.5 during the walk: ${moved.join(', ')}.` };
+    },
+  },
+  {
+    chapter: EVOLUTION,
+    ask: 'Press Evolve. By the end of this quick run, how many times faster than the best of generation 0 (random brains) will the best brain be?',
+    choices: ['less than 2 times', '2 to 10 times', 'more than 10 times'],
+    try: 'Press Evolve, and when it ends press “Race first, middle and last” under “Side by side”.',
+    async key(lab) {
+      const own = lab.runBests();
+      const bests = own.length >= 2 ? own : await lab.history(moduleOf(BRAIN));
+      const source = own.length >= 2 ? 'this page\'s latest run'
+        : `the study's best run of this brain on this body (${bests[bests.length - 1].evaluations?.toLocaleString('en')} evaluations)`;
+      const first = bests[0];
+      const last = bests[bests.length - 1];
+      const ratio = last.fitness / first.fitness;
+      const answer = first.fitness <= 0 || ratio > 10 ? 2 : ratio >= 2 ? 1 : 0;
+      const times = first.fitness > 0 ? `${ratio.toFixed(1)} times` : 'beyond any ratio (generation 0 went nowhere)';
+      return { answer, shown: `${['less than 2 times', '2 to 10 times', 'more than 10 times'][answer]} (${times})`,
+        why: `From ${source}: generation 0's best walked ${ms(first.fitness)} in training, the last generation's best (generation ${last.generation}) ${ms(last.fitness)}. `
+          + 'Random brains barely move; each generation keeps the fastest and tries changed copies of them, and small gains pile up.'
+          + (own.length >= 2 ? '' : ' A quick run of 2,000 evaluations gets less far: evolve first and reveal again to see yours.') };
+    },
+  },
+  {
+    chapter: THREE,
+    ask: 'Three brains on the same body race for 30 s on the same ground. Which one will be fastest?',
+    choices: ['attention', 'mlp-comm (voxels that send messages)', 'mlp (no attention)'],
+    try: 'Watch the race under “Side by side” to the end.',
+    async key(lab) {
+      const keys = /** @type {string[]} */ (setup(THREE).race);
+      const seconds = lab.raceSeconds();
+      const speeds = [];
+      for (const key of keys) {
+        const { rows, controller, genome } = await lab.module(key);
+        speeds.push({ controller, speed: (await lab.walk({ rows, terrain: setup(THREE).terrain, seconds, brain: { controller, genome } })).speed });
+      }
+      const win = speeds.reduce((a, b) => (b.speed > a.speed ? b : a));
+      const answer = ['attention', 'mlp-comm', 'mlp'].indexOf(win.controller);
+      return { answer, shown: win.controller,
+        why: `The page just ran the race's ${seconds} s on ${setup(THREE).terrain}: ${speeds.map((s) => `${s.controller} ${ms(s.speed)}`).join(', ')} `
+          + '(the speeds the race shows at its finish). One race is one terrain and one run of each brain: the figure below compares every run on ten terrains.' };
+    },
+  },
+  {
+    chapter: FREEZE,
+    ask: 'After 5 s of walking, the attention is frozen: every voxel keeps its matrix as it is. How fast will the robot walk from then on?',
+    choices: FREEZE_CHOICES,
+    try: 'Let it walk about 5 s, press “Freeze the attention” and read the line under it.',
+    async key(lab) {
+      const { rows, controller, genome, seconds } = await lab.module(moduleOf(FREEZE));
+      const at = 5;
+      const walk = await lab.walk({ rows, terrain: setup(FREEZE).terrain, seconds, brain: { controller, genome }, freezeAt: at });
+      const [before, frozen] = [/** @type {number} */ (walk.before), /** @type {number} */ (walk.frozen)];
+      const answer = third(frozen / before);
+      return { answer, shown: `${FREEZE_CHOICES[answer]}: ${ms(frozen)} against ${ms(before)}`,
+        why: `The page just walked this robot ${at} s (${ms(before)}), froze its attention and walked on to ${seconds} s: ${ms(frozen)} frozen. `
+          + 'The changing attention is how each voxel follows its own motion; fixed, every voxel keeps doing the same thing and the stride falls apart.' };
+    },
+  },
+  {
+    chapter: TRANSPLANT,
+    ask: `This brain walks fast on its own small biped. Put on this larger biped (${voxels(/** @type {string} */ (setup(TRANSPLANT).rows))} voxels) before any training, how fast will it walk?`,
+    choices: TRANSPLANT_CHOICES,
+    try: 'Read the one-shot speed under the robot, then press Fine-tune.',
+    async key(lab) {
+      const path = moduleOf(TRANSPLANT);
+      const own = await lab.module(path);
+      const rows = /** @type {string} */ (setup(TRANSPLANT).rows);
+      const seed = Number(setup(TRANSPLANT).run?.seed ?? 0);
+      const genome = await lab.transplant(path, rows, seed);
+      const terrain = setup(TRANSPLANT).terrain;
+      const home = await lab.walk({ rows: own.rows, terrain, seconds: own.seconds, brain: { controller: own.controller, genome: own.genome } });
+      const away = await lab.walk({ rows, terrain, seconds: own.seconds, brain: { controller: own.controller, genome } });
+      const answer = third(away.speed / home.speed);
+      return { answer, shown: `${TRANSPLANT_CHOICES[answer]}: ${ms(away.speed)} against ${ms(home.speed)}`,
+        why: `The page just walked both for ${own.seconds} s on ${terrain}: ${ms(home.speed)} on its own body, ${ms(away.speed)} transplanted (its new voxels' weights drawn with seed ${seed}). `
+          + 'The attention fits any body, but the last step, the weights of each voxel\'s place, was made for the old body: a brain is made for its body.' };
+    },
+  },
+  {
+    chapter: YOURS,
+    ask: `This new robot (${voxels(/** @type {string} */ (setup(YOURS).rows))} voxels) has no brain yet: the phase gait drives it. Driven by the same gait on the same ground, will it be faster or slower than the biped of chapter 1?`,
+    choices: ['faster', 'slower'],
+    try: 'Watch its speed under the robot; then draw your own and compare.',
+    async key(lab) {
+      const terrain = setup(YOURS).terrain;
+      const seconds = lab.defaults.quick.seconds;
+      const gait = lab.defaults.gait;
+      const mine = await lab.walk({ rows: /** @type {string} */ (setup(YOURS).rows), terrain, seconds, gait });
+      const biped = await lab.walk({ rows: /** @type {string} */ (setup(GAIT).rows), terrain, seconds, gait });
+      const answer = mine.speed > biped.speed ? 0 : 1;
+      return { answer, shown: `${['faster', 'slower'][answer]}: ${ms(mine.speed)} against ${ms(biped.speed)}`,
+        why: `The page just walked both with the phase gait (f ${gait.frequency} Hz, φ ${gait.phase}) for ${seconds} s on ${terrain}: this robot ${ms(mine.speed)}, the biped ${ms(biped.speed)}. `
+          + 'The same clock moves different bodies differently: that is why evolution tunes a brain for one body.' };
+    },
+  },
+];
+
+/** The tasks whose chapter is in the tour (all of them, unless a chapter was renamed: the browser test checks). */
+export const EXERCISES = TASKS.filter((t) => CHAPTERS.some((c) => c.title === t.chapter));
+
+/** Chapter `index`'s task (0-based), or null when it has none. @param {number} index @returns {Exercise | null} */
+export function exerciseOf(index) {
+  return EXERCISES.find((t) => t.chapter === CHAPTERS[index]?.title) ?? null;
+}

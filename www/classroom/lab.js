@@ -1,0 +1,66 @@
+// @ts-check
+/**
+ * What a task's answer key may compute (exercises.js), each number run by the page or read
+ * from a committed file at the moment it is asked: walks in the lab worker (lab-worker.js: the
+ * core's own episode), the core's checks and transplant (core.js), the committed run files
+ * (pretrained/, study/), and the page's latest run (its best of every generation, kept by the
+ * race).
+ */
+import { checkShape, describeRun, runGenome, transplant } from '../core.js';
+import { requester } from '../kit.js';
+
+const ask = requester('classroom/lab-worker.js', 'the classroom\'s measuring worker');
+
+/** @typedef {import('./lab-worker.js').Walk} Walk */
+/** @typedef {{generation: number, fitness: number, evaluations?: number}} GenerationBest */
+
+export class Lab {
+  /**
+   * @param {{defaults: import('../core.js').Defaults, runBests: () => GenerationBest[], raceSeconds: () => number}} page
+   */
+  constructor(page) {
+    this.page = page;
+    this.defaults = page.defaults;
+    /** @type {Map<string, Promise<string>>} */
+    this.files = new Map();
+  }
+
+  /**
+   * Walks a robot; see lab-worker.js for what comes back.
+   * @param {Walk} walk @returns {Promise<{speed: number, before?: number, frozen?: number, saturatedPer16?: number, movedByRow?: number[], voxels?: number}>}
+   */
+  walk(walk) { return ask('walk', walk); }
+
+  /** A committed file's text (fetched once). @param {string} path served with the page */
+  file(path) {
+    if (!this.files.has(path)) {
+      this.files.set(path, fetch(path).then((r) => (r.ok ? r.text() : Promise.reject(new Error(`${path}: HTTP ${r.status}`)))));
+    }
+    return /** @type {Promise<string>} */ (this.files.get(path));
+  }
+
+  /** A run file's best on its own body. @param {string} path */
+  async module(path) {
+    const text = await this.file(path);
+    const [info, genome] = await Promise.all([describeRun(text), runGenome(text)]);
+    return { rows: info.shape, controller: info.controller, genome, seconds: info.seconds, info };
+  }
+
+  /** A run file's best generation by generation. @param {string} path @returns {Promise<GenerationBest[]>} */
+  async history(path) {
+    const run = JSON.parse(await this.file(path));
+    return run.generations.map((/** @type {{generation: number, best: number, evaluations: number}} */ g) => ({ generation: g.generation, fitness: g.best, evaluations: g.evaluations }));
+  }
+
+  /** The core's transplant of a module onto `rows`. @param {string} path @param {string} rows @param {number} seed */
+  async transplant(path, rows, seed) { return transplant(await this.file(path), rows, seed); }
+
+  /** The core's check of a drawing. @param {string} rows */
+  check(rows) { return checkShape(rows); }
+
+  /** The page's latest run, its best of each generation (empty before any run). */
+  runBests() { return this.page.runBests(); }
+
+  /** How long the race lasts (s), as its form says. */
+  raceSeconds() { return this.page.raceSeconds(); }
+}

@@ -1,0 +1,128 @@
+// @ts-check
+/**
+ * The study's results in a newcomer's words (the page's “What our study found”): what the paper
+ * asked, what our reproduction found, how sure it is, with the figures of the study panel; the
+ * tests and p-values behind a fold for the statistically minded. Every number here is copied
+ * from docs/RESULTS.md (the researchers' account, itself copied from the reports `vsr report`
+ * writes); the browser test checks each one is there. Pure data and one function that builds
+ * the section's content.
+ */
+
+/**
+ * @typedef {object} Finding
+ * @property {string} question  what the paper asked, in plain words
+ * @property {string} paper     what the paper found
+ * @property {string} ours      what our study found
+ * @property {string} [figure]  a study figure (figures.js) that shows it
+ */
+
+/** @type {Finding[]} */
+export const FINDINGS = [
+  {
+    question: 'Does attention make a robot walk faster than the same small brain without it?',
+    paper: 'Yes: attention walked faster than a plain network (mlp).',
+    ours: 'Yes, on both bodies. On ten hilly terrains no robot trained on, the middle one of ten attention bipeds walked 4.01 m/s, '
+      + 'the middle plain-network biped 1.28 m/s: attention is ahead by about 2.6 m/s on the biped and 1.5 m/s on the comb.',
+    figure: 'validation-biped',
+  },
+  {
+    question: 'Is attention also faster than voxels that send messages to their neighbours (mlp-comm)?',
+    paper: 'Yes: attention walked faster, even though its voxels never talk.',
+    ours: 'We cannot tell them apart. On the biped the middle attention robot was 0.70 m/s faster, but ten runs of each are too few to rule out '
+      + 'anything from attention being 0.30 m/s slower to 1.40 m/s faster. On the comb they are closer still, and five runs of each evolved twice as long '
+      + '(60,000 evaluations) did not separate them either (3.28 against 3.62 m/s).',
+    figure: 'validation-comb',
+  },
+  {
+    question: 'Does the robot need its attention to keep changing as it walks?',
+    paper: 'Yes: frozen at any moment, the robots stopped.',
+    ours: 'Yes, the same: frozen, the middle biped of ten crawled at 0.023 m/s, against 4.23 m/s with its attention free (on the same terrain).',
+    figure: 'frozen-biped',
+  },
+  {
+    question: 'Can an attention evolved on one body help another body learn to walk?',
+    paper: 'Yes: transplanted and fine-tuned, it got fast much sooner than a brain evolved from scratch.',
+    ours: 'Yes, early on: after 2,500 evaluations the fine-tuned robots were ahead on all four pairs of bodies we tried. '
+      + 'By the end of the budget the brains evolved from scratch had caught up: no difference detected. '
+      + 'On its own, before fine-tuning, a transplanted brain walks badly, as the paper found.',
+    figure: 'finetune-biped-large',
+  },
+];
+
+/** What “no difference detected” means, said once. */
+export const NO_DIFFERENCE = '“No difference detected” means: the runs we have are too few to be sure the two brains differ. '
+  + 'It does not mean they are equal. Each run of evolution is a little lucky or unlucky (its seed), so a study runs each brain several times '
+  + 'and asks whether the gap between them is larger than luck alone would often give.';
+
+/** Why the same robot has several speeds on this page. */
+export const SPEEDS = 'The same robot can show several speeds, each true for what it measures: its best walk in training (one freshly drawn '
+  + 'terrain, and evolution keeps the luckiest), its mean over ten terrains it never trained on (what the figures compare, usually lower), '
+  + 'and its speed on the one terrain under the robot. Each speed on the page says which one it is.';
+
+/**
+ * The statistics behind the fold, as in docs/RESULTS.md (ten runs of each, the two-sided
+ * Mann-Whitney test, Holm's correction within each family of six comparisons).
+ * @type {{shape: string, comparison: string, p: string, holm: string, shift: string}[]}
+ */
+export const TESTS = [
+  { shape: 'biped-4x3', comparison: 'attention vs mlp', p: '0.0029', holm: '0.017', shift: '+2.65 [+1.11, +3.32]' },
+  { shape: 'biped-4x3', comparison: 'attention vs mlp-comm', p: '0.14', holm: '0.29', shift: '+0.70 [-0.30, +1.40]' },
+  { shape: 'biped-4x3', comparison: 'mlp-comm vs mlp', p: '0.019', holm: '0.074', shift: '+1.71 [+0.63, +2.61]' },
+  { shape: 'comb-7x2', comparison: 'attention vs mlp', p: '0.0068', holm: '0.034', shift: '+1.47 [+0.69, +2.64]' },
+  { shape: 'comb-7x2', comparison: 'attention vs mlp-comm', p: '0.63', holm: '0.63', shift: '+0.34 [-0.65, +1.00]' },
+  { shape: 'comb-7x2', comparison: 'mlp-comm vs mlp', p: '0.029', holm: '0.086', shift: '+1.15 [+0.17, +2.10]' },
+];
+
+/**
+ * Fills `box` with the findings, the two explanations and the fold of tests.
+ * @param {HTMLElement} box @param {(id: string) => void} show shows a study figure in the study panel
+ */
+export function fillResults(box, show) {
+  const doc = box.ownerDocument;
+  const add = (/** @type {string} */ tag, /** @type {string} */ text, /** @type {string} */ className = '') => {
+    const el = doc.createElement(tag);
+    el.textContent = text;
+    if (className) el.className = className;
+    return el;
+  };
+  box.replaceChildren(add('p', 'The paper asked four questions about robots whose voxels each run the same small brain. '
+    + 'We ran its study again, on this page\'s simulator, evolving every kind of brain at least five times (ten times for the first two questions).', 'explain'));
+  const list = doc.createElement('ol');
+  list.className = 'findings';
+  for (const f of FINDINGS) {
+    const item = doc.createElement('li');
+    item.append(add('p', f.question, 'finding-question'), add('p', `The paper: ${f.paper}`), add('p', `Our study: ${f.ours}`));
+    if (f.figure) {
+      const button = add('button', 'See the figure and its robots');
+      /** @type {HTMLButtonElement} */ (button).type = 'button';
+      button.addEventListener('click', () => show(/** @type {string} */ (f.figure)));
+      item.append(button);
+    }
+    list.append(item);
+  }
+  box.append(list, add('h3', 'How sure is it?'), add('p', NO_DIFFERENCE), add('h3', 'Why one robot has several speeds'), add('p', SPEEDS));
+  const fold = doc.createElement('details');
+  fold.className = 'stats';
+  fold.append(add('summary', 'The tests, for the statistically minded'), add('p', 'Ten runs of each brain, each best robot\'s mean speed on ten unseen terrains; '
+    + 'two-sided Mann-Whitney test; p adjusted by Holm\'s method within each family of six comparisons; shift: the typical difference in m/s with its 95% interval.', 'explain'));
+  const table = doc.createElement('table');
+  table.className = 'tests';
+  const head = table.createTHead().insertRow();
+  for (const h of ['body', 'comparison', 'p', 'p (Holm)', 'shift (m/s)']) head.append(add('th', h));
+  const body = table.createTBody();
+  for (const t of TESTS) {
+    const row = body.insertRow();
+    for (const v of [t.shape, t.comparison, t.p, t.holm, t.shift]) row.append(add('td', v));
+  }
+  const more = doc.createElement('p');
+  more.className = 'explain';
+  more.append('Every number, every test and what the paper reported beside it: ');
+  const link = doc.createElement('a');
+  link.href = 'docs/RESULTS.md';
+  link.target = '_blank';
+  link.rel = 'noopener';
+  link.textContent = 'the researchers\' account';
+  more.append(link, '.');
+  fold.append(table, more);
+  box.append(fold);
+}
