@@ -225,3 +225,20 @@ test('a link to a chapter the tour does not have says how many it has', async ()
   assert.deepEqual(problems, []);
   await page.context().close();
 });
+
+test('numbers that agree: the race says how long it lasts, the budget and the modules\' 30,100, who talks, a chapter\'s rows', async () => {
+  const { page, problems } = await openPage(env.browser, env.url, { width: 1400, height: 900 });
+  const seconds = await page.locator('#race-seconds').inputValue();
+  const explain = String(await page.locator('#race-panel .explain').textContent());
+  assert.doesNotMatch(explain, /one\s+training episode/, 'the race does not claim a training episode\'s length');
+  assert.match(explain, new RegExp(`\\(${seconds} s`), `the race says the ${seconds} s it runs`);
+  const modules = await byTestId(page, 'pretrained').locator('option').allTextContents();
+  const glossary = String(await page.locator('#glossary').textContent());
+  if (modules.some((m) => /30,100/.test(m))) assert.match(glossary, /30,000 evaluations counted 30,100/, 'the 30,100 of the modules is explained');
+  assert.match(glossary, /20,000 evaluations on its first body, then fine-tuned 10,000/, 'the figures\' (20000 + 10000) is explained');
+  assert.match(String(await page.locator('header p').textContent()), /no voxel talks to another \(in one of the brains it is compared with, mlp-comm, they do\)/);
+  const attention = CHAPTERS.find((c) => c.title === 'Attention, read on one voxel');
+  assert.doesNotMatch(String(attention?.notice), /stay there/, 'chapter 4 no longer says the values stay');
+  assert.deepEqual(problems, []);
+  await page.context().close();
+});

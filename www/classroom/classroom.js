@@ -194,7 +194,9 @@ export class Classroom {
       } else {
         part.append(make(doc, 'p', 'sheet-guess', `My guess: ____________ ${ex.unit ?? ''}`));
       }
-      part.append(make(doc, 'p', 'sheet-lines', 'What happened, and why:'), make(doc, 'div', 'sheet-write'));
+      const write = make(doc, 'div', 'sheet-write'); // ruled lines (borders: a printer drops backgrounds)
+      for (let line = 0; line < 3; line++) write.append(make(doc, 'div', 'sheet-line'));
+      part.append(make(doc, 'p', 'sheet-lines', 'What happened, and why:'), write);
       sheet.append(part);
     });
     sheet.scrollIntoView({ block: 'start' });

@@ -210,7 +210,7 @@ export const TASKS = [
   },
   {
     chapter: YOURS,
-    ask: `This new robot (${voxels(/** @type {string} */ (setup(YOURS).rows))} voxels) has no brain yet: the phase gait drives it. Driven by the same gait on the same ground, will it be faster or slower than the biped of chapter 1?`,
+    ask: `This new robot (${voxels(/** @type {string} */ (setup(YOURS).rows))} voxels) has no brain yet: the phase gait drives it. Driven by the same gait on the same ground, will it be faster or slower than the biped (the body of chapter 1)?`,
     choices: ['faster', 'slower'],
     try: 'Watch its speed under the robot; then draw your own and compare.',
     async key(lab) {
