@@ -15,6 +15,7 @@ import { Keeper } from './keeper.js';
 import { messageOf } from './kit.js';
 import { Measurer } from './measure.js';
 import { MessageBox } from './message.js';
+import { Challenge } from './classroom/challenge.js';
 import { Classroom } from './classroom/classroom.js';
 import { Lab } from './classroom/lab.js';
 import { wireWords } from './classroom/simple-words.js';
@@ -189,5 +190,11 @@ const study = new StudyPanel(document, playground);
 const tour = new Tour(document, playground, study, new Classroom(document, lab));
 fillResults(el('results-plain-body'), (id) => study.show(id));
 wireWords(document);
+const challenge = new Challenge(document, lab, {
+  defaults, rows: () => drawing.rows(), race, message: showMessage,
+  setView: (terrain) => { viewer.terrain.value = terrain; viewer.terrain.dispatchEvent(new Event('change')); },
+  setRun: (values) => { runs.setValues(values); keeper.schedule(); },
+  setBody: (rows) => robot.setBody(rows),
+});
 
-start().then(() => tour.begin());
+start().then(() => challenge.begin()).then(() => tour.begin());
