@@ -4,6 +4,7 @@
 #   make test-cluster  the campaign recipes from a bare folder: GNU parallel, and Slurm on a
 #                      single-node Slurm started here (scripts/slurm-local.sh; needs root)
 #   make test-python the Python package (python/): wheel, install, pytest (docs/python.md)
+#   make test-python-install  pip install "./python[examples,gym]" in a fresh venv, then use it
 #   make bench-wasm  speed of the wasm build in Node (figures for the README)
 #   make web-package the npm-ready web package (wasm core + <vsr-robot>) in target/web-package
 #   make bench-native-v3  opt-in: native speed built for x86-64-v3 (AVX2) CPUs only
@@ -18,11 +19,11 @@ WASM_PACK_BUILD := wasm-pack build --release --target web --out-dir www/pkg --ou
 .NOTPARALLEL:
 
 .PHONY: run test setup setup-test wasm serve lint test-native test-wasm test-web test-cluster \
-	test-parallel test-slurm test-python test-browsers bench-wasm bench-native-v3 bench-python web-package
+	test-parallel test-slurm test-python test-python-install test-browsers bench-wasm bench-native-v3 bench-python web-package
 
 run: setup wasm serve
 
-test: setup-test lint test-native test-python test-cluster test-wasm wasm test-web
+test: setup-test lint test-native test-python test-python-install test-cluster test-wasm wasm test-web
 
 setup:
 	bash scripts/setup.sh
@@ -56,6 +57,19 @@ test-python:
 	$(PY_VENV)/bin/maturin build --release -m python/Cargo.toml --out target/wheels
 	$(PY_VENV)/bin/pip install --force-reinstall --no-deps target/wheels/vsr-*.whl
 	$(PY_VENV)/bin/pytest -q python/tests
+
+## The documented install (docs/python.md) in a fresh virtual environment: pip builds
+## "./python[examples,gym]" (maturin from PyPI as its build backend, then cargo), the pycma example
+## on a tiny budget and gymnasium's check_env on vsr.gym.WalkEnv run from it.
+PY_FRESH := target/py-fresh
+test-python-install:
+	rm -rf $(PY_FRESH)
+	python3 -m venv $(PY_FRESH)
+	$(PY_FRESH)/bin/pip install --quiet --disable-pip-version-check "./python[examples,gym]"
+	$(PY_FRESH)/bin/python python/examples/cma_evolve.py --evaluations 30 --seconds 1
+	$(PY_FRESH)/bin/python -c 'from gymnasium.utils.env_checker import check_env; \
+	  from vsr.gym import WalkEnv; check_env(WalkEnv(seconds=2.0), skip_render_check=True); \
+	  print("check_env: WalkEnv passes")'
 
 ## Evaluations per second through vsr.evaluate against `vsr evaluate` on the same batch, and a
 ## pycma run (the figures of docs/python.md); needs `make test-python` first.
