@@ -15,7 +15,7 @@ import { FromCodesign, ToCodesign } from '../protocol.js';
 import { Gallery } from './gallery.js';
 
 /** The quick body search: finishes in about a minute in Chromium on 2 workers (docs/playground.md). */
-export const QUICK = Object.freeze({ budget: 600, seconds: 10, batch: 20 });
+export const QUICK = Object.freeze({ budget: 1000, seconds: 10, batch: 20 });
 /** The seed body "a 3 x 3 box". */
 const BOX = '111-111-111';
 
@@ -190,6 +190,7 @@ export class CodesignPanel {
         this.started = true;
         this.gallery.setLayout(msg.layout);
         this.setStatus(`searching on ${msg.workers} worker${msg.workers === 1 ? '' : 's'}`);
+        this.status.title = `bodies searched for ${this.what}`;
         break;
       case FromCodesign.ITERATION: this.onIteration(msg); break;
       case FromCodesign.ENTRY: {
@@ -215,7 +216,8 @@ export class CodesignPanel {
     this.progress.textContent = `${msg.evaluations.toLocaleString('en')} of ${msg.planned.toLocaleString('en')} evaluations`;
     const best = bestEntry(gallery);
     const rate = msg.seconds > 0 ? `, ${(msg.evaluations / msg.seconds).toFixed(1)} evaluations a second` : '';
-    this.summary.textContent = `${gallery.length} kind${gallery.length === 1 ? '' : 's'} of body found (cells filled) after round ${record.iteration}`
+    const rounds = record.iteration + 1;
+    this.summary.textContent = `${gallery.length} kind${gallery.length === 1 ? '' : 's'} of body found (cells filled) in ${rounds} round${rounds === 1 ? '' : 's'}`
       + (best?.fitness != null ? ` · fastest: ${best.fitness.toFixed(2)} m/s, ${best.voxels} voxels with ${best.feet} ${best.feet === 1 ? 'foot' : 'feet'}` : '')
       + ` · ${msg.seconds.toFixed(0)} s${rate}`;
     this.summary.dataset.filled = String(gallery.length);
