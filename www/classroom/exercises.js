@@ -41,6 +41,7 @@ const EVOLUTION = 'Evolution';
 const THREE = 'Three brains, side by side';
 const FREEZE = 'Freeze the attention';
 const TRANSPLANT = 'Transplant a module';
+const BODIES = 'Which body for this brain?';
 const YOURS = 'Your turn';
 
 /** @typedef {import('../tour/chapters.js').Chapter['setup']} Setup */
@@ -206,6 +207,22 @@ export const TASKS = [
       return { answer, shown: `${TRANSPLANT_CHOICES[answer]}: ${ms(away.speed)} against ${ms(home.speed)}`,
         why: `The page just walked both for ${own.seconds} s on ${terrain}: ${ms(home.speed)} on its own body, ${ms(away.speed)} transplanted (its new voxels' weights drawn with seed ${seed}). `
           + 'The attention fits any body, but the last step, the weights of each voxel\'s place, was made for the old body: a brain is made for its body.' };
+    },
+  },
+  {
+    chapter: BODIES,
+    ask: 'The body search keeps the brain\'s attention frozen while it changes the body. Of the brain\'s numbers (its genes), how many stay exactly the same on every body it tries?',
+    unit: 'genes',
+    try: 'Press “Search bodies” and read the gene count of the bodies it finds.',
+    async key(lab) {
+      const box = '111-111-111'; // the search's start, a 3 x 3 box
+      const biped = /** @type {string} */ (setup(GAIT).rows);
+      const [a, b] = await Promise.all([lab.check(box), lab.check(biped)]);
+      const genes = (/** @type {import('../core.js').ShapeCheck} */ c) => c.params.find(([k]) => k === 'attention')?.[1] ?? NaN;
+      const shared = lab.defaults.attentionGenes;
+      return { answer: shared, shown: `${shared} genes`,
+        why: `The page counts ${genes(a)} genes for the 3 × 3 box (${a.voxels} voxels) and ${genes(b)} for the biped (${b.voxels} voxels). `
+          + `${shared} of them are the attention block, the same for any body; the rest (four weights for each voxel's place, and one bias) depend on the body or may change with it.` };
     },
   },
   {
