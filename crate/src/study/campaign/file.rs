@@ -77,6 +77,9 @@ pub struct Campaign {
     /// Gait ensembles measured on the reference simulator, measured here too.
     #[serde(default)]
     pub fidelity: Vec<FidelityGroup>,
+    /// Body searches (`vsr codesign`).
+    #[serde(default)]
+    pub codesign: Vec<super::codesign::CodesignGroup>,
 }
 
 /// The frozen-attention ablation's settings.
@@ -223,6 +226,11 @@ impl Campaign {
             let path = path_clean::clean(dir.join(&g.reference));
             g.reference = path.display().to_string();
         }
+        for g in &mut self.codesign {
+            if let Some(module) = &g.module {
+                g.module = Some(path_clean::clean(dir.join(module)).display().to_string());
+            }
+        }
         self
     }
 
@@ -268,6 +276,9 @@ impl Campaign {
                     g.name, g.controller
                 ));
             }
+        }
+        for g in &self.codesign {
+            g.check()?;
         }
         for g in &self.fidelity {
             if !g.reference.ends_with(".json") {

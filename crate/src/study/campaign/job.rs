@@ -44,6 +44,8 @@ pub enum Task {
         /// Episode seconds.
         seconds: f64,
     },
+    /// A body search (`vsr codesign`).
+    Codesign(CodesignTask),
     /// The reference's gait ensembles measured here (`vsr fidelity`).
     Fidelity {
         /// The reference file.
@@ -76,11 +78,32 @@ pub struct RunTask {
     pub continue_from: Option<PathBuf>,
 }
 
+/// A body search of a campaign.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CodesignTask {
+    /// How the brain is obtained.
+    pub brain: crate::experiment::BrainMode,
+    /// The controller of a brain from scratch.
+    pub controller: Option<ControllerKind>,
+    /// The module's run file (frozen, finetune).
+    pub from: Option<PathBuf>,
+    /// The start body, when not the default.
+    pub start: Option<String>,
+    /// Evaluation budget.
+    pub evals: u64,
+    /// Run seed.
+    pub seed: u64,
+    /// Episode seconds.
+    pub seconds: f64,
+    /// Training terrain family or name.
+    pub terrain: String,
+}
+
 impl Job {
     /// True when the job is an evolution or a fine-tuning (it takes `--threads`; minutes, where
     /// an assessment takes seconds).
     pub fn threaded(&self) -> bool {
-        matches!(self.task, Task::Run(_))
+        matches!(self.task, Task::Run(_) | Task::Codesign(_))
     }
 }
 

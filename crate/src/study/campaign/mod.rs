@@ -4,6 +4,7 @@
 //! into a table (`merge`) and its best modules chosen for `pretrained/` (`export`). The command
 //! line reads and writes the files and turns each job into a `vsr` command.
 
+pub mod codesign;
 pub mod export;
 pub mod file;
 pub mod job;
@@ -12,6 +13,7 @@ pub mod plan;
 pub mod results;
 
 pub use file::Campaign;
-pub use job::{select, Job, RunTask, Task};
+pub use codesign::CodesignGroup;
+pub use job::{select, CodesignTask, Job, RunTask, Task};
 pub use plan::{earlier_runs, fidelity_path, known_runs, plan, runs, RunSpec};
 pub use results::{Results, RunData};

@@ -247,6 +247,7 @@ pub fn plan(c: &Campaign, out: &Path) -> Vec<Job> {
             needs: vec![],
         });
     }
+    jobs.extend(super::codesign::codesign_jobs(c, out));
     jobs.sort_by_key(|j| j.stage);
     jobs
 }

@@ -2,7 +2,7 @@
 //! and its whole line for a POSIX shell (what `vsr campaign plan` prints and the manifest
 //! records).
 
-use vsr::study::campaign::{Job, RunTask, Task};
+use vsr::study::campaign::{CodesignTask, Job, RunTask, Task};
 
 /// The arguments after `vsr` of `job`, `--threads threads` added to evolutions.
 pub fn args(job: &Job, threads: usize) -> Vec<String> {
@@ -40,6 +40,7 @@ pub fn args(job: &Job, threads: usize) -> Vec<String> {
             &seconds.to_string(),
             "--json",
         ]),
+        Task::Codesign(task) => codesign_args(task),
         Task::Fidelity { reference } => {
             words(&["fidelity", "--reference", &reference.display().to_string()])
         }
@@ -48,6 +49,31 @@ pub fn args(job: &Job, threads: usize) -> Vec<String> {
     if job.threaded() {
         args.extend(["--threads".to_string(), threads.to_string()]);
     }
+    args
+}
+
+/// `vsr codesign` without `--out`.
+fn codesign_args(task: &CodesignTask) -> Vec<String> {
+    let mut args = words(&["codesign", "--brain", task.brain.name()]);
+    if let Some(from) = &task.from {
+        args.extend(words(&["--from", &from.display().to_string()]));
+    }
+    if let Some(kind) = task.controller {
+        args.extend(words(&["--controller", kind.name()]));
+    }
+    if let Some(start) = &task.start {
+        args.extend(words(&["--start", start]));
+    }
+    args.extend(words(&[
+        "--evals",
+        &task.evals.to_string(),
+        "--seed",
+        &task.seed.to_string(),
+        "--seconds",
+        &task.seconds.to_string(),
+        "--terrain",
+        &task.terrain,
+    ]));
     args
 }
 
