@@ -1,26 +1,30 @@
 #!/usr/bin/env bash
 # Runs a campaign in the background of a working session and commits its outputs as they
-# finish, on the `study` branch in a separate worktree (../study-wt), so that the main tree
-# stays free for building and testing. Resumable: run it again after a stop and the campaign
-# skips what exists and continues each run from its checkpoint (docs/campaigns.md).
+# finish, on the branch `study-NAME` (NAME: the campaign file's name) in a separate worktree
+# (../study-NAME), so that the main tree stays free for building and testing. Resumable: run
+# it again after a stop (merge the branch into main first, so the new worktree starts with
+# what was done) and the campaign skips what exists and continues each run from its
+# checkpoint (docs/campaigns.md).
 #
 #   scripts/study-background.sh campaigns/noninferiority.toml [--jobs 2]
 #
-# It copies the `vsr` binary built in this tree (target/release/vsr) beside the worktree, so a
-# rebuild here never changes the program of the runs in flight; merge `study` into main to
-# land the results (`git merge study`).
+# The `vsr` binary is built from the worktree's clean commit, in its own target folder
+# (../target-study), so a rebuild of the main tree never changes the program of the runs in
+# flight and the run files name a clean code version; merge `study-NAME` into main to land
+# the results.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 campaign="$1"; shift
 root="$(pwd)"
-wt="$root/../study-wt"
-bin="$root/../study-bin"
 label="$(basename "$campaign" .toml)"
+wt="$root/../study-$label"
+bin="$root/../study-bin-$label"
 
-git show-ref --quiet refs/heads/study || git branch study
-[ -d "$wt" ] || git worktree add -q "$wt" study
+git show-ref --quiet "refs/heads/study-$label" || git branch "study-$label"
+[ -d "$wt" ] || git worktree add -q "$wt" "study-$label"
 mkdir -p "$bin"
-cp target/release/vsr "$bin/vsr"
+( cd "$wt" && CARGO_TARGET_DIR="$root/../target-study" nice cargo build -q --release --bin vsr )
+cp "$root/../target-study/release/vsr" "$bin/vsr"
 
 commit() {
   cd "$wt"
