@@ -2,8 +2,9 @@
 /**
  * Browser test of the body search in the page (node --test):
  *  - a tiny body search in the page's workers (the body-search coordinator and its evaluation
- *    workers) gives the same archive and best, bit for bit, with 1 and 2 workers and as
- *    `vsr codesign` with those settings (needs target/release/vsr; VSR_BIN);
+ *    workers) gives the same archive and best, bit for bit, with 1 and 2 workers, when an
+ *    evaluation worker dies mid-search (a new one re-runs its job), and as `vsr codesign` with
+ *    those settings (needs target/release/vsr; VSR_BIN);
  *  - the panel runs a small search live: the progress counts evaluations of the planned ones,
  *    the gallery fills, a click on a body loads it with its brain into the editor and it
  *    walks; its exported file's best is `vsr codesign`'s with the same settings; the first and
@@ -41,15 +42,20 @@ after(async () => {
 
 /**
  * Runs a whole body search in a body-search coordinator worker, as the panel does; runs in the
- * page. @param {[typeof TINY, number, string]} arg settings, workers, the module's run file text
+ * page. @param {[typeof TINY, number, string, boolean]} arg settings, workers, the module's run file
+ * text, whether evaluation worker 2 crashes at the start (a new one must re-run its job)
  */
-async function searchInPage([settings, workers, module]) {
+async function searchInPage([settings, workers, module, crash]) {
   const { FromCodesign, ToCodesign } = await import(new URL('protocol.js', location.href).href);
   const coordinator = new Worker(new URL('codesign/coordinator.js', location.href), { type: 'module' });
   /** @type {number[]} */
   const filled = [];
+  /** @type {string[]} */
+  const recovered = [];
   const text = await new Promise((resolve, reject) => {
     coordinator.onmessage = ({ data }) => {
+      if (data.type === FromCodesign.STARTED && crash) coordinator.postMessage({ type: ToCodesign.CRASH_WORKER, index: 1 });
+      if (data.type === FromCodesign.RECOVERED) recovered.push(data.message);
       if (data.type === FromCodesign.ITERATION) filled.push(data.gallery.length);
       if (data.type === FromCodesign.DONE) resolve(data.runFile);
       if (data.type === FromCodesign.ERROR) reject(new Error(data.message));
@@ -57,7 +63,7 @@ async function searchInPage([settings, workers, module]) {
     coordinator.postMessage({ type: ToCodesign.START, settings, workers, module });
   });
   coordinator.terminate();
-  return { run: JSON.parse(text), filled };
+  return { run: JSON.parse(text), filled, recovered };
 }
 
 /**
@@ -77,16 +83,21 @@ const result = (run) => ({
   archive: run.archive, best: run.best, evaluations: run.evaluations,
 });
 
-test('a tiny body search in workers is the same with 1 and 2 workers and as vsr codesign, bit for bit', async () => {
+test('a tiny body search in workers is the same with 1 and 2 workers, with a worker that dies, and as vsr codesign, bit for bit', async () => {
   const { page, problems } = await openPage(env.browser, env.url);
   const module = await (await fetch(`${env.url}${MODULE}`)).text();
-  const one = await page.evaluate(searchInPage, /** @type {[typeof TINY, number, string]} */ ([TINY, 1, module]));
-  const two = await page.evaluate(searchInPage, /** @type {[typeof TINY, number, string]} */ ([TINY, 2, module]));
+  const one = await page.evaluate(searchInPage, /** @type {[typeof TINY, number, string, boolean]} */ ([TINY, 1, module, false]));
+  const two = await page.evaluate(searchInPage, /** @type {[typeof TINY, number, string, boolean]} */ ([TINY, 2, module, false]));
+  const crashed = await page.evaluate(searchInPage, /** @type {[typeof TINY, number, string, boolean]} */ ([TINY, 2, module, true]));
+  assert.equal(crashed.recovered.length, 1, `one recovery: ${crashed.recovered.join('; ')}`);
+  assert.match(crashed.recovered[0], /worker 2 stopped.*re-runs its job/);
+  assert.deepEqual(result(crashed.run), result(one.run), 'a worker that died changed nothing');
   assert.equal(one.run.format, 'vsr-codesign');
   assert.ok(one.filled.length >= 2 && one.filled.every((n) => n >= 1), `the gallery filled, round by round: ${one.filled}`);
   assert.deepEqual(result(two.run), result(one.run), '2 workers as 1');
   const native = await searchNative(TINY, path.join(tmp, 'native.json'));
   assert.deepEqual(result(native), result(one.run), 'the page\'s search is vsr codesign\'s');
+  problems.splice(0, problems.length, ...problems.filter((p) => !/crashed on request/.test(p)));
   console.log(`# tiny search: ${one.run.evaluations} evaluations, ${one.run.archive.length} bodies, best ${native.best.shape} at ${native.best.fitness.toFixed(3)} m/s, the same in the page and in vsr codesign`);
   assert.deepEqual(problems, []);
   await page.context().close();
