@@ -59,6 +59,8 @@ export class CodesignPanel {
     this.coordinator = null;
     this.running = false;
     this.starting = false;
+    /** The latest search's settings. @type {import('../protocol.js').CodesignSettings | null} */
+    this.settings = null;
     /** The coordinator said the search started (errors before that: 'did not start'). */
     this.started = false;
     /** The latest search's run file (when it ended). @type {string | null} */
@@ -127,7 +129,10 @@ export class CodesignPanel {
     this.chosen = null;
     this.bests = { firstCell: null, lastCell: null, first: null, last: null };
     const { settings, module, workers } = plan;
-    this.what = settings.brain === 'scratch' ? `${settings.controller} from scratch` : `${settings.brain} ${module?.label.replace(/ \([^()]*\)$/, '')}`;
+    this.settings = settings;
+    const from = { box: 'from a 3 x 3 box', drawing: 'from your drawing', module: 'from the module\'s own body' }[this.from.value] ?? '';
+    this.what = `${settings.brain === 'scratch' ? `${settings.controller} from scratch`
+      : `${settings.brain === 'frozen' ? 'frozen' : 'fine-tuned'} ${module?.label.replace(/ \([^()]*\)$/, '')}`}, bodies ${from}`;
     const coordinator = spawn('codesign/coordinator.js', (msg) => this.onMessage(coordinator, msg),
       (text) => this.end(coordinator, `the body search stopped: ${text}`, 'failed'));
     this.coordinator = coordinator;
@@ -219,7 +224,7 @@ export class CodesignPanel {
     const best = bestEntry(gallery);
     const rate = msg.seconds > 0 ? `, ${(msg.evaluations / msg.seconds).toFixed(1)} evaluations a second` : '';
     const rounds = record.iteration + 1;
-    this.summary.textContent = `${gallery.length} kind${gallery.length === 1 ? '' : 's'} of body found (cells filled) in ${rounds} round${rounds === 1 ? '' : 's'}`
+    this.summary.textContent = `Brain: ${this.what} · ${gallery.length} kind${gallery.length === 1 ? '' : 's'} of body found (cells filled) in ${rounds} round${rounds === 1 ? '' : 's'}`
       + (best?.fitness != null ? ` · fastest: ${best.fitness.toFixed(2)} m/s, ${best.voxels} voxels with ${best.feet} ${best.feet === 1 ? 'foot' : 'feet'}` : '')
       + ` · ${msg.seconds.toFixed(0)} s${rate}`;
     this.summary.dataset.filled = String(gallery.length);
@@ -282,8 +287,8 @@ export class CodesignPanel {
   brainOf(entry) {
     return {
       controller: entry.controller, genome: new Float32Array(entry.genome), rows: entry.shape, origin: { left: 0, bottom: 0 },
-      module: null, source: null, seconds: Number(this.seconds.value) || null,
-      trained: Number.isFinite(entry.fitness) ? { speed: entry.fitness, terrain: this.hooks.run().terrain.trim() } : null,
+      module: null, source: null, seconds: this.settings?.seconds ?? null,
+      trained: Number.isFinite(entry.fitness) && this.settings ? { speed: entry.fitness, terrain: this.settings.terrain } : null,
       label: `a body found by the body search (${this.what}): ${Number.isFinite(entry.fitness) ? `${entry.fitness.toFixed(2)} m/s in training` : 'no speed'}`,
     };
   }
