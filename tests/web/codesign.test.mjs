@@ -173,7 +173,7 @@ test('the panel searches live, the gallery fills, a click loads a body that walk
   await page.context().close();
 });
 
-test('a wrong module and a drawing that is no body are refused in words that stay', async () => {
+test('a wrong module and a drawing that is no body are refused in words that stay; from scratch, any module\'s body is a start', async () => {
   const { page, problems } = await openPage(env.browser, env.url);
   await chooseModule(page, 'pretrained/biped-4x3-mlp-comm.json');
   await byTestId(page, 'codesign-brain').selectOption('frozen');
@@ -189,6 +189,16 @@ test('a wrong module and a drawing that is no body are refused in words that sta
   await byTestId(page, 'codesign').click();
   await waitForText(page, 'message', /Your drawing is not a body the search can start from.*Draw one piece of touching voxels/);
   await screenshot(page, 'codesign-refused.png');
+
+  // From scratch, any module's body is a start: a new attention brain on the MLP-Comm module's biped.
+  await byTestId(page, 'codesign-brain').selectOption('scratch');
+  await page.locator('#codesign-from').selectOption('module');
+  await page.locator('#codesign-budget').fill('20');
+  await page.locator('#codesign-seconds').fill('1');
+  await byTestId(page, 'codesign').click();
+  await page.waitForFunction(() => document.body.dataset.codesign === 'finished', undefined, { timeout: 60_000 });
+  await waitForText(page, 'codesign-summary', /^Brain: attention from scratch, bodies from the module's own body · /);
+  assert.ok(await byTestId(page, 'codesign-body').count() >= 1);
   assert.deepEqual(problems, []);
   await page.context().close();
 });

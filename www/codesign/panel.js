@@ -8,6 +8,7 @@
  * walks (and the page's Share link shares it); the first and the last best race side by side.
  * Problems (a wrong module, a drawing that is no body) are said in words that stay.
  */
+import { describeRun } from '../core.js';
 import { download } from '../export.js';
 import { messageOf, spawn } from '../kit.js';
 import { plain } from '../message.js';
@@ -172,8 +173,11 @@ export class CodesignPanel {
     } else if (from === 'box') {
       start = BOX;
     }
-    const module = brain === 'scratch' ? null : await this.hooks.module();
-    if (brain !== 'scratch' && !module) return { error: 'choose a module first (Transplant a module, under 3 · Give it a brain): its brain is the one the bodies are searched for' };
+    const chosen = brain !== 'scratch' || from === 'module' ? await this.hooks.module() : null;
+    if (!chosen && brain !== 'scratch') return { error: 'choose a module first (Transplant a module, under 3 · Give it a brain): its brain is the one the bodies are searched for' };
+    if (!chosen && from === 'module') return { error: 'choose a module first (Transplant a module, under 3 · Give it a brain): the search starts from its body' };
+    if (chosen && brain === 'scratch' && from === 'module') start = (await describeRun(chosen.text)).shape; // a new brain on the module's body
+    const module = brain === 'scratch' ? null : chosen;
     /** @type {import('../protocol.js').CodesignSettings} */
     const settings = { brain, seed, seconds, terrain: run.terrain.trim(), budget, batch: QUICK.batch };
     if (brain === 'scratch') settings.controller = this.hooks.controller();
