@@ -41,8 +41,9 @@ def load_run(path):
     try:
         checked = _vsr.check_run(text)
     except ValueError as e:
-        # worded as `vsr` words it: the file, then the engine's message
-        raise ValueError(f"invalid input: {path}: {e}") from None
+        # worded as `vsr` words it: the file, then the engine's message ("invalid input" once)
+        message = str(e).removeprefix("invalid input: ")
+        raise ValueError(f"invalid input: {path}: {message}") from None
     return _arrays(json.loads(checked))
 
 
