@@ -38,3 +38,36 @@ test('wasm and native give the bit-identical 30-s distance', async () => {
   assert.ok(Number.isFinite(native) && Math.abs(native) > 0.1, `native distance ${native}`);
   assert.equal(inWasm, native, `wasm ${inWasm} vs native ${native}`);
 });
+
+/** A run file without what depends on the machine (timing, wall seconds). @param {string} text */
+function withoutTiming(text) {
+  const run = JSON.parse(text);
+  run.timing = null;
+  for (const r of run.history) r.wall_seconds = 0;
+  return run;
+}
+
+test('a body search in wasm (Node, jobs in reverse order) gives the file of vsr codesign', async (t) => {
+  const wasm = await import(path.join(PKG, 'vsr.js'));
+  wasm.initSync({ module: readFileSync(path.join(PKG, 'vsr_bg.wasm')) });
+  const module = readFileSync(path.join(ROOT, 'pretrained', 'biped-4x3-attention.json'), 'utf8');
+  const search = new wasm.Codesign({ brain: 'frozen', start: '111-111-111', seed: 9, seconds: 2,
+    terrain: 'hilly-1-10', budget: 80, batch: 12 }, module);
+  while (!search.isDone) {
+    const jobs = search.ask();
+    const fitness = new Float64Array(jobs.length);
+    for (let i = jobs.length - 1; i >= 0; i--) fitness[i] = wasm.evaluateJob(jobs[i], search.genome(i));
+    search.tell(fitness, 0);
+  }
+  const inWasm = withoutTiming(search.runFile(1, 0));
+  search.free();
+
+  const out = path.join(ROOT, 'target', `codesign-node-${process.pid}.json`);
+  execFileSync(BIN, ['codesign', '--brain', 'frozen', '--from',
+    path.join(ROOT, 'pretrained', 'biped-4x3-attention.json'), '--start', '111-111-111', '--seed', '9',
+    '--seconds', '2', '--evals', '80', '--batch', '12', '--threads', '2', '--out', out]);
+  const native = withoutTiming(readFileSync(out, 'utf8'));
+  t.diagnostic(`${native.archive.length} bodies, best ${native.best.fitness} m/s`);
+  assert.ok(native.archive.length >= 2, 'the archive holds several bodies');
+  assert.deepEqual(inWasm, native);
+});
