@@ -60,7 +60,9 @@ const third = (ratio) => (ratio > 1 ? 0 : ratio >= 0.5 ? 1 : 2);
 /** The three choices {@link third} tells apart. @param {string} than what the speed is compared with */
 const thirds = (than) => [`faster than ${than}`, 'slower, but at least half as fast', 'less than half as fast'];
 const GAIT_CHOICES = thirds(`at φ ${setup(GAIT).gait?.phase}`);
-const FREEZE_CHOICES = thirds('before the freeze');
+const FREEZE_CHOICES = ['at least half as fast as before', 'between a tenth and half as fast', 'less than a tenth as fast: it nearly stops'];
+/** The freeze's choice a ratio falls in. @param {number} ratio */
+const freezeChoice = (ratio) => (ratio >= 0.5 ? 0 : ratio >= 0.1 ? 1 : 2);
 const TRANSPLANT_CHOICES = thirds('on its own body');
 
 /** Rows with column `col` (0-based from the left) erased. @param {string} rows @param {number} col */
@@ -183,10 +185,10 @@ export const TASKS = [
       const at = 5;
       const walk = await lab.walk({ rows, terrain: setup(FREEZE).terrain, seconds, brain: { controller, genome }, freezeAt: at });
       const [before, frozen] = [/** @type {number} */ (walk.before), /** @type {number} */ (walk.frozen)];
-      const answer = third(frozen / before);
+      const answer = freezeChoice(frozen / before);
       return { answer, shown: `${FREEZE_CHOICES[answer]}: ${ms(frozen)} against ${ms(before)}`,
         why: `The page just walked this robot ${at} s (${ms(before)}), froze its attention and walked on to ${seconds} s: ${ms(frozen)} frozen. `
-          + 'The changing attention is how each voxel follows its own motion; fixed, every voxel keeps doing the same thing and the stride falls apart.' };
+          + 'The changing attention is how each voxel re-weighs its readings as it moves; fixed, it can no longer, and the stride falls apart (the paper\'s Fig. 6 and our study found the same for every best robot).' };
     },
   },
   {
