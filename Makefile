@@ -65,7 +65,7 @@ PY_FRESH := target/py-fresh
 test-python-install:
 	rm -rf $(PY_FRESH)
 	python3 -m venv $(PY_FRESH)
-	$(PY_FRESH)/bin/pip install --quiet --disable-pip-version-check "./python[examples,gym]"
+	CARGO_TARGET_DIR=$(CURDIR)/target $(PY_FRESH)/bin/pip install --quiet --disable-pip-version-check "./python[examples,gym]"
 	$(PY_FRESH)/bin/python python/examples/cma_evolve.py --evaluations 30 --seconds 1
 	$(PY_FRESH)/bin/python -c 'from gymnasium.utils.env_checker import check_env; \
 	  from vsr.gym import WalkEnv; check_env(WalkEnv(seconds=2.0), skip_render_check=True); \

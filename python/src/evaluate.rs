@@ -61,7 +61,7 @@ pub fn evaluate<'py>(
 }
 
 /// A pool of `threads` threads, or `None` for rayon's pool of all cores.
-fn pool(threads: Option<usize>) -> PyResult<Option<rayon::ThreadPool>> {
+pub(crate) fn pool(threads: Option<usize>) -> PyResult<Option<rayon::ThreadPool>> {
     match threads {
         None => Ok(None),
         Some(0) => Err(input("threads must be at least 1".into())),

@@ -5,6 +5,7 @@
 //! exception carrying the engine's message (see `errors`).
 
 mod args;
+mod bodies;
 mod controller;
 mod episode;
 mod errors;
@@ -20,6 +21,7 @@ use pyo3::prelude::*;
 fn _vsr(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(evaluate::param_count, m)?)?;
     m.add_function(wrap_pyfunction!(evaluate::evaluate, m)?)?;
+    m.add_function(wrap_pyfunction!(bodies::evaluate_bodies, m)?)?;
     m.add_function(wrap_pyfunction!(simulate::simulate, m)?)?;
     m.add_function(wrap_pyfunction!(measures::validate, m)?)?;
     m.add_function(wrap_pyfunction!(measures::ablate, m)?)?;

@@ -25,3 +25,16 @@ def test_the_cma_example_evolves_validates_and_writes_a_run(tmp_path, vsr_bin):
     mean = json.loads(text)["mean"]
     assert run["best"]["fitness"] == mean
     assert f"validation on hilly-1-10-0..9: mean {mean:.3f} m/s" in done.stdout
+
+
+def test_the_body_search_example_runs_and_every_body_it_keeps_is_one_piece():
+    done = subprocess.run(
+        [sys.executable, str(ROOT / "python" / "examples" / "body_search.py")],
+        capture_output=True, text=True, timeout=600, cwd=ROOT,
+    )
+    assert done.returncode == 0, done.stderr
+    lines = done.stdout.strip().splitlines()
+    assert len(lines) == 5, done.stdout
+    for line in lines:
+        body = line.split("best ")[1].split(" at ")[0]
+        assert vsr.param_count(body, "attention") > 32, body

@@ -6,6 +6,8 @@ simulator does (Pigozzi, Tang, Medvet, Ha, GECCO 2022), bit for bit as the `vsr`
 - ``evaluate(genomes, shape, controller, terrain, ...)``: velocities of many genomes (one per
   row; a 1-D genome is one row), on every core with the GIL released, each what ``vsr
   evaluate`` prints.
+- ``evaluate_bodies(shapes, genomes, controller, terrain, ...)``: one body per genome (a
+  body search of your own), each what ``vsr evaluate`` prints for it.
 - ``simulate(genome, ...)``: one episode, with its trajectory on request.
 - ``validate(genome, ...)``, ``ablate(genome, ...)``: ``vsr validate`` and ``vsr ablate``,
   bit for bit (validation uses each terrain's own noise seed, returned in ``noise_seeds``).
@@ -30,6 +32,7 @@ __all__ = [
     "UnstableError",
     "ablate",
     "evaluate",
+    "evaluate_bodies",
     "load_run",
     "new_run",
     "param_count",
@@ -64,6 +67,18 @@ def evaluate(genomes, shape, controller, terrain, seconds=30.0, threads=None, no
         genomes = genomes[None, :]
     genomes = _genes(genomes, 2, "genomes")
     return _vsr.evaluate(genomes, shape, controller, terrain, seconds, threads, noise_seed)
+
+
+def evaluate_bodies(shapes, genomes, controller, terrain, seconds=30.0, threads=None, noise_seed=0):
+    """Velocity (m/s, float64) of each robot: ``genomes[i]`` driving `controller` on
+    ``shapes[i]`` (a preset or rows, e.g. ``"110-111"``) over `terrain` for `seconds`, each
+    exactly what ``vsr evaluate`` prints for that body and genome. For a body search of your
+    own: bodies differ, so genomes differ in length (``param_count(shape, controller)``).
+    Runs on `threads` threads (all cores when None) with the GIL released; NaN where an
+    episode exploded."""
+    genomes = [_genes(g, 1, f"genome {i}") for i, g in enumerate(genomes)]
+    return _vsr.evaluate_bodies(list(shapes), genomes, controller, terrain, seconds, threads,
+                                noise_seed)
 
 
 def validate(genome, shape, controller, set="paper", seconds=30.0):

@@ -62,9 +62,8 @@ function start(settings, workers, module) {
     recovered: (message) => self.postMessage({ type: FromCodesign.RECOVERED, message }),
   });
   started = performance.now();
-  const layout = search.layout(); // a JSON object, which serde_wasm_bindgen hands over as a Map
   self.postMessage({ type: FromCodesign.STARTED, planned: search.budget, workers: count,
-    layout: layout instanceof Map ? Object.fromEntries(layout) : layout });
+    layout: search.layout() });
   nextIteration();
 }
 

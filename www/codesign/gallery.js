@@ -7,7 +7,7 @@
  */
 
 /** @typedef {import('../protocol.js').GalleryEntry} GalleryEntry */
-/** @typedef {{columns: number, rows: number, minVoxels: number, sizeBin: number, maxFeet: number}} Layout */
+/** @typedef {{columns: number, rows: number, minVoxels: number, maxVoxels: number, sizeBin: number, maxFeet: number}} Layout */
 
 /** Canvas size of one body (CSS pixels). */
 const BODY_W = 72;
@@ -23,8 +23,8 @@ export function speedColour(speed, best) {
 /** The voxel counts of size column `c`, in words. @param {Layout} layout @param {number} c */
 export function sizeWords(layout, c) {
   const low = layout.minVoxels + c * layout.sizeBin;
-  if (c === layout.columns - 1) return `${low}+`; // the last column holds the largest bodies
-  return layout.sizeBin === 1 ? String(low) : `${low}–${low + layout.sizeBin - 1}`;
+  const high = Math.min(low + layout.sizeBin - 1, layout.maxVoxels);
+  return high === low ? String(low) : `${low}–${high}`;
 }
 
 /** Feet row `r` (0: one foot), in words. @param {Layout} layout @param {number} r */

@@ -112,14 +112,7 @@ impl Shape {
     /// The paper's row notation: rows top first, '1' voxel, '0' empty,
     /// separated by '-'. Parsing it gives back an equal shape.
     pub fn to_rows(&self) -> String {
-        (0..self.height)
-            .rev()
-            .map(|y| {
-                let row = &self.cells[y * self.width..(y + 1) * self.width];
-                row.iter().map(|&c| if c { '1' } else { '0' }).collect()
-            })
-            .collect::<Vec<String>>()
-            .join("-")
+        rows_of(self.width, &self.cells)
     }
 
     /// Parses the row notation, reporting the first bad row.
@@ -208,8 +201,19 @@ fn label_pieces(width: usize, height: usize, cells: &[bool]) -> Vec<Vec<(usize, 
     pieces
 }
 
+/// The row notation (top row first, '1' filled, '-' between rows) of a grid `width` cells
+/// wide whose `cells` run bottom row first.
+pub(crate) fn rows_of(width: usize, cells: &[bool]) -> String {
+    cells
+        .chunks(width.max(1))
+        .rev()
+        .map(|row| row.iter().map(|&c| if c { '1' } else { '0' }).collect())
+        .collect::<Vec<String>>()
+        .join("-")
+}
+
 /// Width, height and cells (bottom row first) of rows written top first.
-fn grid_from_rows(spec: &str) -> Result<(usize, usize, Vec<bool>)> {
+pub(crate) fn grid_from_rows(spec: &str) -> Result<(usize, usize, Vec<bool>)> {
     let rows: Vec<&str> = spec.split('-').map(str::trim).collect();
     let width = rows[0].chars().count();
     for (r, row) in rows.iter().enumerate() {

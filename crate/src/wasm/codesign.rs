@@ -50,6 +50,18 @@ struct GalleryEntry {
     found: u32,
 }
 
+/// The archive's shape, for the gallery.
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct Layout {
+    columns: usize,
+    rows: usize,
+    min_voxels: usize,
+    max_voxels: usize,
+    size_bin: usize,
+    max_feet: usize,
+}
+
 /// A body search in progress, driven by the page's coordinator.
 #[wasm_bindgen]
 pub struct Codesign {
@@ -156,14 +168,18 @@ impl Codesign {
         to_js(&entries)
     }
 
-    /// The archive's shape: `[size bins, feet bins]`, and the voxel counts of the first bin
-    /// and per bin: `{columns, rows, minVoxels, sizeBin, maxFeet}`.
+    /// The archive's shape: `{columns (size bins), rows (feet bins), minVoxels, maxVoxels,
+    /// sizeBin, maxFeet}` (a plain object).
     pub fn layout(&self) -> Result<JsValue, JsError> {
         let c = self.inner.config();
-        to_js(&serde_json::json!({
-            "columns": c.size_bins(), "rows": c.max_feet, "minVoxels": c.min_voxels,
-            "sizeBin": c.size_bin, "maxFeet": c.max_feet,
-        }))
+        to_js(&Layout {
+            columns: c.size_bins(),
+            rows: c.max_feet,
+            min_voxels: c.min_voxels,
+            max_voxels: c.max_voxels,
+            size_bin: c.size_bin,
+            max_feet: c.max_feet,
+        })
     }
 
     /// Entry `i` (cell order) as a plain run file's `best`: `{controller, shape, genome,

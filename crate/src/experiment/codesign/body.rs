@@ -5,6 +5,7 @@
 //! walks. The core's shape check ([`Shape::parse`]) is the only judge of a valid body.
 
 use crate::error::{Error, Result};
+use crate::simulation::shape::{grid_from_rows, rows_of};
 use crate::simulation::Shape;
 use serde::{Deserialize, Serialize};
 
@@ -178,42 +179,21 @@ impl BodyGrid {
 
     /// The rows, top first.
     pub fn to_rows(&self) -> String {
-        (0..self.height)
-            .rev()
-            .map(|y| {
-                let row = &self.cells[y * self.width..(y + 1) * self.width];
-                row.iter().map(|&c| if c { '1' } else { '0' }).collect()
-            })
-            .collect::<Vec<String>>()
-            .join("-")
+        rows_of(self.width, &self.cells)
     }
 
     /// Parses rows written by [`BodyGrid::to_rows`]; the body must be one piece.
     pub fn from_rows(rows: &str) -> Result<BodyGrid> {
-        let lines: Vec<&str> = rows.trim().split('-').collect();
-        let width = lines[0].len();
-        let height = lines.len();
-        let bad = |why: String| Error::Input(format!("a body grid '{rows}': {why}"));
-        if width == 0 || lines.iter().any(|l| l.len() != width) {
-            return Err(bad("every row must have the same, non-zero length".into()));
-        }
-        let mut cells = vec![false; width * height];
-        for (r, line) in lines.iter().enumerate() {
-            for (x, ch) in line.chars().enumerate() {
-                cells[(height - 1 - r) * width + x] = match ch {
-                    '1' => true,
-                    '0' => false,
-                    other => return Err(bad(format!("'{other}' is neither 1 nor 0"))),
-                };
-            }
-        }
+        let (width, height, cells) = grid_from_rows(rows.trim())?;
         let body = BodyGrid {
             width,
             height,
             cells,
         };
         if !body.is_connected() {
-            return Err(bad("the body is empty or in separate pieces".into()));
+            return Err(Error::Input(format!(
+                "a body grid '{rows}' is empty or in separate pieces"
+            )));
         }
         Ok(body)
     }

@@ -12,8 +12,8 @@ pub mod merge;
 pub mod plan;
 pub mod results;
 
-pub use file::Campaign;
 pub use codesign::CodesignGroup;
+pub use file::Campaign;
 pub use job::{select, CodesignTask, Job, RunTask, Task};
 pub use plan::{earlier_runs, fidelity_path, known_runs, plan, runs, RunSpec};
 pub use results::{Results, RunData};
