@@ -16,6 +16,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 campaign="$1"; shift
 root="$(pwd)"
+# nice alone does not yield to other sessions' work where the kernel groups processes by
+# session (autogroup): lower this session's group too, best effort.
+echo 19 > /proc/self/autogroup 2>/dev/null || true
 label="$(basename "$campaign" .toml)"
 wt="$root/../study-$label"
 bin="$root/../study-bin-$label"
