@@ -5,11 +5,10 @@
 //! `scratch-mlp-comm`). Outputs: `codesign/NAME-CONDITION-EVALS-sSEED.json` and
 //! `validation/NAME-CONDITION-EVALS-sSEED.SET.json`.
 
-use super::file::Campaign;
 use super::job::{CodesignTask, Job, Task};
 use crate::controllers::ControllerKind;
 use crate::error::{Error, Result};
-use crate::experiment::BrainMode;
+use crate::experiment::{BrainMode, ValidationSet};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 
@@ -76,17 +75,24 @@ impl CodesignGroup {
     }
 }
 
-/// The jobs of every co-design group of `c` under `out`: each run (stage 1), then its
-/// validations (stage 2).
-pub fn codesign_jobs(c: &Campaign, out: &Path) -> Vec<Job> {
-    let mut jobs = Vec::new();
-    for g in &c.codesign {
-        for cond in &g.conditions {
+impl CodesignGroup {
+    /// This group's jobs under `out`: each run (stage 1), then its validations on `sets`
+    /// (stage 2); `seeds` when the group names none, episodes of `seconds` on `terrain`.
+    pub fn jobs(
+        &self,
+        seeds: &[u64],
+        seconds: f64,
+        terrain: &str,
+        sets: &[ValidationSet],
+        out: &Path,
+    ) -> Vec<Job> {
+        let mut jobs = Vec::new();
+        for cond in &self.conditions {
             let Ok((brain, controller)) = condition(cond) else {
                 continue;
             };
-            for &seed in g.seeds.as_ref().unwrap_or(&c.seeds) {
-                let stem = g.stem(cond, seed);
+            for &seed in self.seeds.as_deref().unwrap_or(seeds) {
+                let stem = self.stem(cond, seed);
                 let run = out.join("codesign").join(format!("{stem}.json"));
                 jobs.push(Job {
                     stage: 1,
@@ -94,24 +100,24 @@ pub fn codesign_jobs(c: &Campaign, out: &Path) -> Vec<Job> {
                         brain,
                         controller,
                         from: (brain != BrainMode::Scratch)
-                            .then(|| g.module.as_ref().map(PathBuf::from))
+                            .then(|| self.module.as_ref().map(PathBuf::from))
                             .flatten(),
-                        start: g.start.clone(),
-                        evals: g.evals,
+                        start: self.start.clone(),
+                        evals: self.evals,
                         seed,
-                        seconds: c.seconds,
-                        terrain: c.terrain.clone(),
+                        seconds,
+                        terrain: terrain.to_string(),
                     }),
                     out: run.clone(),
                     needs: vec![],
                 });
-                for &set in &c.validate {
+                for &set in sets {
                     jobs.push(Job {
                         stage: 2,
                         task: Task::Validate {
                             genome: run.clone(),
                             set,
-                            seconds: c.seconds,
+                            seconds,
                         },
                         out: out.join("validation").join(format!("{stem}.{set}.json")),
                         needs: vec![run.clone()],
@@ -119,60 +125,6 @@ pub fn codesign_jobs(c: &Campaign, out: &Path) -> Vec<Job> {
                 }
             }
         }
-    }
-    jobs
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::study::campaign::plan;
-
-    const FILE: &str = r#"
-output = "out"
-seeds = [1, 2]
-validate = ["unseen"]
-[[codesign]]
-name = "q"
-conditions = ["frozen", "scratch-mlp"]
-module = "m.json"
-evals = 100
-"#;
-
-    #[test]
-    fn each_condition_and_seed_is_a_run_then_its_validations() {
-        let c = Campaign::parse(FILE).unwrap().relative_to(Path::new("dir"));
-        let jobs = plan(&c, Path::new("out"));
-        assert_eq!(jobs.len(), 8);
-        let runs: Vec<&Job> = jobs.iter().filter(|j| j.stage == 1).collect();
-        assert_eq!(runs.len(), 4);
-        assert!(jobs.iter().all(|j| j.threaded() == (j.stage == 1)));
-        let Task::Codesign(t) = &runs[0].task else {
-            panic!("{:?}", runs[0].task)
-        };
-        assert_eq!(t.from, Some(PathBuf::from("dir/m.json")));
-        assert_eq!(
-            runs[0].out,
-            PathBuf::from("out/codesign/q-frozen-100-s1.json")
-        );
-        let Task::Codesign(t) = &runs[2].task else {
-            panic!()
-        };
-        assert_eq!(
-            (t.brain, t.controller, &t.from),
-            (BrainMode::Scratch, Some(ControllerKind::Mlp), &None)
-        );
-    }
-
-    #[test]
-    fn bad_conditions_and_a_missing_module_are_named() {
-        let err = Campaign::parse(&FILE.replace("scratch-mlp", "fozen")).unwrap_err();
-        assert!(
-            err.to_string()
-                .contains("unknown co-design condition 'fozen'"),
-            "{err}"
-        );
-        let err = Campaign::parse(&FILE.replace("module = \"m.json\"", "")).unwrap_err();
-        assert!(err.to_string().contains("needs a module"), "{err}");
+        jobs
     }
 }

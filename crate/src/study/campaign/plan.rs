@@ -247,7 +247,9 @@ pub fn plan(c: &Campaign, out: &Path) -> Vec<Job> {
             needs: vec![],
         });
     }
-    jobs.extend(super::codesign::codesign_jobs(c, out));
+    for g in &c.codesign {
+        jobs.extend(g.jobs(&c.seeds, c.seconds, &c.terrain, &c.validate, out));
+    }
     jobs.sort_by_key(|j| j.stage);
     jobs
 }

@@ -1,5 +1,6 @@
 //! The plan's unit tests: order, stages, continuation, fine-tuning chains.
 use super::*;
+use crate::experiment::BrainMode;
 
 pub(crate) const CAMPAIGN: &str = r#"
 output = "o"
@@ -97,4 +98,56 @@ fn chains_of_budgets_and_fine_tunings_of_continued_runs_come_stage_after_stage()
         stage("biped-4x3-attention-300-to-comb-7x2-100-s1.paper.json"),
         5
     );
+}
+
+// Body searches in a campaign ([[codesign]] groups).
+
+const CODESIGN_FILE: &str = r#"
+output = "out"
+seeds = [1, 2]
+validate = ["unseen"]
+[[codesign]]
+name = "q"
+conditions = ["frozen", "scratch-mlp"]
+module = "m.json"
+evals = 100
+"#;
+
+#[test]
+fn each_condition_and_seed_is_a_run_then_its_validations() {
+    let c = Campaign::parse(CODESIGN_FILE)
+        .unwrap()
+        .relative_to(Path::new("dir"));
+    let jobs = plan(&c, Path::new("out"));
+    assert_eq!(jobs.len(), 8);
+    let runs: Vec<&Job> = jobs.iter().filter(|j| j.stage == 1).collect();
+    assert_eq!(runs.len(), 4);
+    assert!(jobs.iter().all(|j| j.threaded() == (j.stage == 1)));
+    let Task::Codesign(t) = &runs[0].task else {
+        panic!("{:?}", runs[0].task)
+    };
+    assert_eq!(t.from, Some(PathBuf::from("dir/m.json")));
+    assert_eq!(
+        runs[0].out,
+        PathBuf::from("out/codesign/q-frozen-100-s1.json")
+    );
+    let Task::Codesign(t) = &runs[2].task else {
+        panic!()
+    };
+    assert_eq!(
+        (t.brain, t.controller, &t.from),
+        (BrainMode::Scratch, Some(ControllerKind::Mlp), &None)
+    );
+}
+
+#[test]
+fn bad_conditions_and_a_missing_module_are_named() {
+    let err = Campaign::parse(&CODESIGN_FILE.replace("scratch-mlp", "fozen")).unwrap_err();
+    assert!(
+        err.to_string()
+            .contains("unknown co-design condition 'fozen'"),
+        "{err}"
+    );
+    let err = Campaign::parse(&CODESIGN_FILE.replace("module = \"m.json\"", "")).unwrap_err();
+    assert!(err.to_string().contains("needs a module"), "{err}");
 }
