@@ -43,6 +43,14 @@ impl Default for GaConfig {
     }
 }
 
+/// The one check of a uniform initialisation range: finite ends, low <= high.
+pub(crate) fn check_init_range(low: f32, high: f32) -> Result<()> {
+    if low.is_finite() && high.is_finite() && low <= high {
+        return Ok(());
+    }
+    Err(Error::Input(format!("bad init range [{low}, {high}]")))
+}
+
 impl GaConfig {
     /// Checks the settings against a genome length; messages say what is accepted.
     pub(crate) fn validate(&self, genome_len: usize) -> Result<()> {
@@ -60,15 +68,7 @@ impl GaConfig {
         if sigmas.iter().any(|s| !s.is_finite() || *s < 0.0) {
             return bad(format!("sigmas must be finite and >= 0, got {sigmas:?}"));
         }
-        if !(self.init_low.is_finite()
-            && self.init_high.is_finite()
-            && self.init_low <= self.init_high)
-        {
-            return bad(format!(
-                "bad init range [{}, {}]",
-                self.init_low, self.init_high
-            ));
-        }
+        check_init_range(self.init_low, self.init_high)?;
         if genome_len == 0 || self.frozen_prefix > genome_len {
             return bad(format!(
                 "genome length {genome_len} must be at least 1 and at least the frozen prefix {}",

@@ -11,6 +11,7 @@ pub(crate) mod ga;
 pub mod operators;
 mod stats;
 
+pub(crate) use config::check_init_range;
 pub use config::GaConfig;
 pub use ga::{Candidate, Ga, GaState};
 pub use stats::GenerationStats;

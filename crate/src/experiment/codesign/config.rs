@@ -240,15 +240,7 @@ impl CodesignConfig {
         if !self.sigma.is_finite() || self.sigma < 0.0 {
             return bad(format!("sigma must be finite and >= 0, got {}", self.sigma));
         }
-        if !(self.init_low.is_finite()
-            && self.init_high.is_finite()
-            && self.init_low <= self.init_high)
-        {
-            return bad(format!(
-                "bad init range [{}, {}]",
-                self.init_low, self.init_high
-            ));
-        }
+        crate::genetics::check_init_range(self.init_low, self.init_high)?;
         if self.seed > MAX_SEED {
             return bad(format!(
                 "the seed must be at most {MAX_SEED}, got {}",
