@@ -111,11 +111,20 @@ fn bad_arguments_exit_2_with_a_message() {
 }
 
 #[test]
-fn bench_json_has_one_entry_per_shape() {
+fn bench_json_has_one_entry_per_shape_and_the_batch() {
     let (code, out, err) = vsr(&["bench", "--json", "--repeats", "1"]);
     assert_eq!(code, 0, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).expect("JSON");
-    let rows = v.as_array().expect("array");
+    let batch = &v["batch"];
+    assert_eq!(batch["evaluations"], 100, "{batch}");
+    assert_eq!(batch["threads"], 1, "{batch}");
+    for key in ["ms_per_evaluation", "evaluations_per_second"] {
+        assert!(
+            batch[key].as_f64().is_some_and(|x| x > 0.0),
+            "{key} in {batch}"
+        );
+    }
+    let rows = v["simulation"].as_array().expect("array");
     let shapes: Vec<&str> = rows.iter().filter_map(|r| r["shape"].as_str()).collect();
     assert_eq!(shapes, ["biped-4x3", "comb-7x2", "biped-6x4", "comb-14x2"]);
     for r in rows {

@@ -49,7 +49,7 @@ pub struct Outcome {
 /// A robot on a terrain driven by a policy, stepped on demand.
 #[derive(Debug)]
 pub struct Episode {
-    world: World,
+    pub(super) world: World,
     terrain: Arc<Terrain>,
     policy: Policy,
     sensors: Sensors,
@@ -159,12 +159,22 @@ impl Episode {
     pub fn step(&mut self, steps: usize) -> Result<()> {
         for _ in 0..steps {
             self.world.step();
-            let k = self.world.steps();
-            self.act(k, (k - 1) % ACTUATION_HOLD_STEPS as u64 == 0);
-            if self.first_x.is_none() {
-                self.first_x = Some(self.world.centre().0);
-            }
+            self.after_step();
         }
+        self.check()
+    }
+
+    /// What follows each world step: the policy, and the start of the distance.
+    pub(super) fn after_step(&mut self) {
+        let k = self.world.steps();
+        self.act(k, (k - 1) % ACTUATION_HOLD_STEPS as u64 == 0);
+        if self.first_x.is_none() {
+            self.first_x = Some(self.world.centre().0);
+        }
+    }
+
+    /// An error if the simulation became non-finite.
+    pub(super) fn check(&self) -> Result<()> {
         if self.world.is_finite() {
             Ok(())
         } else {

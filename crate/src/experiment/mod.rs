@@ -19,6 +19,7 @@ pub mod playground;
 pub(crate) mod policy;
 pub mod run;
 pub mod seeds;
+mod together;
 pub(crate) mod trajectory;
 pub mod validation;
 
@@ -33,5 +34,6 @@ pub use finetune::{source_of, transplant};
 pub use freeze::freezable_policy;
 pub use gait::PhaseGait;
 pub use run::{Best, GenerationRecord, RunFile, Timing};
+pub use together::fitness_together;
 pub use trajectory::Frame;
 pub use validation::{validate, validate_on, Validation, ValidationSet};

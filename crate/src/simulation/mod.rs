@@ -14,6 +14,7 @@ mod contact_law;
 pub(crate) mod ground;
 pub(crate) mod java_random;
 pub(crate) mod joint;
+pub mod lockstep;
 pub(crate) mod ropes;
 pub(crate) mod self_collide;
 pub(crate) mod self_contact;

@@ -37,7 +37,7 @@ use super::springs::Springs;
 pub struct World {
     pub(crate) pieces: Pieces,
     pub(crate) squares: Squares,
-    springs: Springs,
+    pub(super) springs: Springs,
     ropes: Ropes,
     pub(super) ground: Ground,
     contacts: Vec<Contact>,
@@ -104,21 +104,46 @@ impl World {
         self.actuated = true;
     }
 
-    /// Advances the world by one step of [`DT`] seconds.
+    /// Advances the world by one step of [`DT`] seconds. The phases are methods so that
+    /// [`super::lockstep`] runs the same ones with the springs of several robots in lanes.
     pub fn step(&mut self) {
+        self.begin_step();
+        self.springs.prepare(&mut self.pieces);
+        self.prepare_others();
+        for _ in 0..VELOCITY_ITERATIONS {
+            self.springs.solve_velocity(&mut self.pieces.vel);
+            self.solve_others();
+        }
+        self.end_step();
+    }
+
+    /// Before the springs: self-contacts, gravity and damping.
+    #[inline]
+    pub(super) fn begin_step(&mut self) {
         self.detect_self_contacts();
         self.apply_gravity_and_damping();
-        self.springs.prepare(&mut self.pieces);
+    }
+
+    /// After the springs' preparation: every other row's, with its warm start.
+    #[inline]
+    pub(super) fn prepare_others(&mut self) {
         self.ropes.prepare(&mut self.pieces);
         self.solver.prepare(&self.contacts, &mut self.pieces);
         self.self_solver
             .prepare(&self.self_contacts, &mut self.pieces);
-        for _ in 0..VELOCITY_ITERATIONS {
-            self.springs.solve_velocity(&mut self.pieces.vel);
-            self.ropes.solve_velocity(&mut self.pieces.vel);
-            self.solver.solve_velocity(&mut self.pieces);
-            self.self_solver.solve_velocity(&mut self.pieces);
-        }
+    }
+
+    /// After each spring sweep: one sweep over ropes, ground contacts and self-contacts.
+    #[inline]
+    pub(super) fn solve_others(&mut self) {
+        self.ropes.solve_velocity(&mut self.pieces.vel);
+        self.solver.solve_velocity(&mut self.pieces);
+        self.self_solver.solve_velocity(&mut self.pieces);
+    }
+
+    /// After the velocity iterations: positions, their corrections, the new contacts.
+    #[inline]
+    pub(super) fn end_step(&mut self) {
         self.integrate_positions();
         for _ in 0..POSITION_ITERATIONS {
             let contacts_ok = ContactSolver::solve_position(&self.contacts, &mut self.pieces);

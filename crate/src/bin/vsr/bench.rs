@@ -1,28 +1,31 @@
 //! `vsr bench`: single-thread simulation speed on the paper's four shapes under a
-//! phase gait on a hilly terrain; with `--evolution`, see `bench_evolution`.
+//! phase gait on a hilly terrain, and the throughput over a batch of 100 evaluations (a GA
+//! generation, see `batch`); with `--evolution`, see `evolution`.
 
 use std::time::Instant;
 
 use vsr::experiment::{steps_for, GaitEpisode, PhaseGait};
 use vsr::simulation::{Shape, Terrain};
 
+mod batch;
 mod evolution;
 
 /// Arguments of `vsr bench`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Print JSON: one entry per shape.
+    /// Print JSON: {"simulation": [one entry per shape], "batch": {...}}.
     #[arg(long)]
     json: bool,
-    /// Timed 30-s evaluations per shape (the best is reported).
+    /// Timed 30-s evaluations per shape (the best is reported); passes over the batch of
+    /// 100 evaluations: at most 3.
     #[arg(long, default_value_t = 10)]
     repeats: usize,
     /// Terrain.
     #[arg(long, default_value = "hilly-1-10-0")]
     terrain: String,
     /// Also time whole evolution steps per controller (1 thread and all threads) and the
-    /// controller's cost over the bare simulation (about a minute); with --json the output
-    /// becomes {"simulation": [...], "evolution": {...}}.
+    /// controller's cost over the bare simulation (about a minute); with --json under
+    /// "evolution".
     #[arg(long)]
     evolution: bool,
     /// Population of the timed evolution steps.
@@ -56,23 +59,24 @@ pub fn run(args: Args) -> vsr::Result<()> {
             "realtime_factor": 30.0 / best,
         }));
     }
+    let batch = batch::measure(args.repeats.min(3))?;
     let evolution = match args.evolution {
         true => Some(evolution::measure(args.population, args.repeats.min(3))?),
         false => None,
     };
-    match (args.json, evolution) {
-        (true, None) => println!("{}", serde_json::Value::Array(rows)),
-        (true, Some(e)) => println!(
-            "{}",
-            serde_json::json!({ "simulation": rows, "evolution": e })
-        ),
-        (false, evolution) => {
-            print_rows(&args, rows);
-            if let Some(e) = evolution {
-                println!();
-                evolution::print(&e);
-            }
+    if args.json {
+        let mut out = serde_json::json!({ "simulation": rows, "batch": batch });
+        if let Some(e) = evolution {
+            out["evolution"] = e;
         }
+        println!("{out}");
+        return Ok(());
+    }
+    print_rows(&args, rows);
+    batch::print(&batch);
+    if let Some(e) = evolution {
+        println!();
+        evolution::print(&e);
     }
     Ok(())
 }

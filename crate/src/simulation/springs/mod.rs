@@ -55,7 +55,9 @@
 //! - `lanes`: the lane width, one value per lane, velocities gathered per lane;
 //! - `batch`: the packed data (`batch::Batches`), struct-of-arrays over the lanes;
 //! - `packing`: springs into groups, groups into batches;
-//! - `prepare`, `group`, `sweep`: the per-step work described above.
+//! - `prepare`, `group`, `sweep`: the per-step work described above;
+//! - `robots`: the same solver with one robot per lane, for robots of the same body
+//!   stepped together ([`RobotLanes`]).
 
 mod batch;
 mod group;
@@ -63,9 +65,12 @@ mod kind;
 mod lanes;
 mod packing;
 mod prepare;
+mod robots;
 mod sweep;
 
 pub use kind::{SpringDef, SpringKind};
+pub use lanes::LANES;
+pub use robots::RobotLanes;
 
 use super::body::{Pieces, Velocity};
 use super::constants::{DT, SPRING_DAMPING_RATIO, SPRING_FREQUENCY};

@@ -9,9 +9,8 @@
 
 use super::batch::{Batch, Batches, Row, RowDef};
 use super::group::group_matrices;
-use super::lanes::{Lane3, L, LANES};
+use super::lanes::{Source, L, LANES};
 use super::sweep::apply;
-use crate::simulation::body::Pieces;
 use crate::simulation::constants::{CORNER_INERTIA, CORNER_MASS};
 use wide::{f64x4, CmpGt};
 
@@ -38,18 +37,13 @@ struct Side {
 }
 
 impl Side {
-    /// A padding lane ([`super::lanes::PAD`]) reads the last piece's pose: any finite
-    /// pose would do, its rows have no effect.
     #[inline(always)]
-    fn gather(pieces: &Pieces, ids: &[u32; LANES], sx: &L, sy: &L) -> Side {
-        let last = pieces.len() - 1;
-        let p = ids.map(|id| (id as usize).min(last));
-        let get = |values: &[f64]| f64x4::from(p.map(|p| values[p]));
-        let (c, s) = (get(&pieces.cos), get(&pieces.sin));
+    fn gather(source: &impl Source, ids: &[u32; LANES], sx: &L, sy: &L) -> Side {
+        let [x, y, c, s] = source.pose(ids).map(f64x4::from);
         let (sx, sy) = (v(sx), v(sy));
         Side {
-            x: get(&pieces.x),
-            y: get(&pieces.y),
+            x,
+            y,
             c,
             s,
             lx: c * sx - s * sy,
@@ -135,11 +129,11 @@ fn row(g: &Geometry, target: &L, batch: &Batch, law: Law) -> (Row, (L, L)) {
 
 impl Batches {
     /// Prepares every row for this step and applies the warm-start impulses.
-    pub(super) fn prepare(&mut self, pieces: &mut Pieces, law: Law) {
+    pub(super) fn prepare(&mut self, pieces: &mut impl Source, law: Law) {
         for batch in &self.batches {
             let sq = &batch.squares;
-            let a = Side::gather(pieces, &batch.a, &sq[0], &sq[1]);
-            let b = Side::gather(pieces, &batch.b, &sq[2], &sq[3]);
+            let a = Side::gather(&*pieces, &batch.a, &sq[0], &sq[1]);
+            let b = Side::gather(&*pieces, &batch.b, &sq[2], &sq[3]);
             let range = batch.start as usize..(batch.start + batch.rows) as usize;
             for r in range.clone() {
                 let def = &self.defs[r];
@@ -150,11 +144,11 @@ impl Batches {
             let t = &mut self.coupling[batch.coupling as usize..];
             group_matrices(&mut self.rows[range.clone()], &batch.inv, t);
             let (rows, acc) = (&self.rows[range.clone()], &self.impulse[range]);
-            let mut va = Lane3::gather(&pieces.vel, &batch.a);
-            let mut vb = Lane3::gather(&pieces.vel, &batch.b);
+            let mut va = pieces.gather(&batch.a);
+            let mut vb = pieces.gather(&batch.b);
             apply(rows, acc, &batch.inv, &mut va, &mut vb);
-            va.scatter(&mut pieces.vel, &batch.a);
-            vb.scatter(&mut pieces.vel, &batch.b);
+            pieces.scatter(&va, &batch.a);
+            pieces.scatter(&vb, &batch.b);
         }
     }
 }

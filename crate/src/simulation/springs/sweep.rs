@@ -7,8 +7,7 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::batch::{Batches, Row, MAX_ROWS};
-use super::lanes::{Lane3, L};
-use crate::simulation::body::Velocity;
+use super::lanes::{Lane3, Velocities, L};
 use wide::f64x4;
 
 /// Applies per-row impulses `lambda` to the lanes' velocities: -J^T on a, +J^T on b.
@@ -71,10 +70,10 @@ fn solve_batch<const R: usize>(
 
 impl Batches {
     /// One sequential-impulse sweep over every batch.
-    pub(super) fn solve(&mut self, vel: &mut [Velocity]) {
+    pub(super) fn solve<V: Velocities + ?Sized>(&mut self, vel: &mut V) {
         for batch in &self.batches {
-            let mut a = Lane3::gather(vel, &batch.a);
-            let mut b = Lane3::gather(vel, &batch.b);
+            let mut a = vel.gather(&batch.a);
+            let mut b = vel.gather(&batch.b);
             let (start, m) = (batch.start as usize, batch.coupling as usize);
             let data = (
                 &self.rows[start..],
@@ -88,8 +87,8 @@ impl Batches {
                 3 => solve_batch::<3>(data, inv, a_, b_),
                 _ => solve_batch::<MAX_ROWS>(data, inv, a_, b_),
             }
-            a.scatter(vel, &batch.a);
-            b.scatter(vel, &batch.b);
+            vel.scatter(&a, &batch.a);
+            vel.scatter(&b, &batch.b);
         }
     }
 }
