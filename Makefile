@@ -14,12 +14,6 @@ SHELL := /bin/bash
 export PATH := $(HOME)/.cargo/bin:$(PATH)
 PORT ?= 8080
 WASM_PACK_BUILD := wasm-pack build --release --target web --out-dir www/pkg --out-name vsr
-# binaryen's wasm-opt from npm (package.json pins it; scripts/setup.sh installs it): -O3 on
-# the release module, IEEE-exact (no fast-math), measured in docs/speed.md.
-WASM_OPT := node_modules/.bin/wasm-opt
-WASM_BUILD = $(WASM_PACK_BUILD) && \
-	{ test -x $(WASM_OPT) || bash scripts/setup.sh; } && \
-	$(WASM_OPT) -O3 www/pkg/vsr_bg.wasm -o www/pkg/vsr_bg.wasm
 
 # The steps depend on each other's results (setup before builds, wasm before test-web).
 .NOTPARALLEL:
@@ -37,10 +31,9 @@ setup:
 setup-test:
 	bash scripts/setup.sh --test
 
-## The page's wasm module and its JS glue, into www/pkg (build output, not committed),
-## optimized by wasm-opt -O3.
+## The page's wasm module and its JS glue, into www/pkg (build output, not committed).
 wasm:
-	$(WASM_BUILD)
+	$(WASM_PACK_BUILD)
 
 serve:
 	PORT=$(PORT) node scripts/serve.mjs
@@ -108,7 +101,7 @@ test-web:
 ## measures as `vsr evaluate` (docs/playground.md); prints its figures and times.
 test-browsers:
 	bash scripts/setup.sh --browsers
-	$(WASM_BUILD)
+	$(WASM_PACK_BUILD)
 	$(if $(VSR_BIN),,cargo build --release --bin vsr)
 	xvfb-run -a node --test --test-concurrency=1 tests/browsers/
 

@@ -4,7 +4,6 @@
 # machine (as root, or with sudo for apt); needs Rust (rustup) and Node.js >= 18.19.
 #
 #   scripts/setup.sh          wasm target, wasm-pack, the exact wasm-bindgen-cli, npm packages
-#                             (among them binaryen, whose wasm-opt `make wasm` runs)
 #   scripts/setup.sh --test   the same, plus rustfmt, clippy, Debian chromium for the browser test,
 #                             Debian parallel, slurm-wlm and munge for the campaign recipes' tests,
 #                             and a Python virtual environment (target/py-venv) with maturin,
