@@ -9,10 +9,8 @@ use std::time::Instant;
 
 use rayon::prelude::*;
 use vsr::experiment::{
-    fitness_together, Evolution, EvolutionConfig, GenerationRecord, Job, RunFile, Timing,
-    TrainingTerrain,
+    Evolution, EvolutionConfig, GenerationRecord, Job, RunFile, Timing, TrainingTerrain,
 };
-use vsr::simulation::lockstep::LANES;
 
 use vsr::{Error, Result};
 
@@ -45,17 +43,13 @@ pub fn execute(mut config: EvolutionConfig, options: &RunOptions) -> Result<()> 
     let clock = || earlier + start.elapsed().as_secs_f64();
     let progress = Progress::new(evolution.planned_evaluations());
     progress.resume_at(evolution.evaluations());
-    // Four jobs at a time, their springs in SIMD lanes (`fitness_together`: the fitness
-    // of each job alone, bit for bit, so the thread count still changes nothing).
     let evaluate = |jobs: &[Job]| -> Result<Vec<f64>> {
-        let fitness = |chunk: &[Job]| {
-            let f = fitness_together(chunk);
-            progress.inc(chunk.len() as u64);
+        let fitness = |job: &Job| {
+            let f = job.fitness();
+            progress.inc(1);
             f
         };
-        let chunks: Vec<Result<Vec<f64>>> =
-            pool.install(|| jobs.par_chunks(LANES).map(fitness).collect());
-        Ok(chunks.into_iter().collect::<Result<Vec<_>>>()?.concat())
+        pool.install(|| jobs.par_iter().map(fitness).collect())
     };
     let after_generation = |e: &Evolution| {
         if let Some(record) = e.history().last() {
