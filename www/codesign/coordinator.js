@@ -7,13 +7,13 @@
  * fitness values are told in job order: the archive is the same for any number of workers, and
  * a dying worker is replaced and its job run again. After each iteration the page gets the
  * record and the gallery (every archive cell's best body); once the search ends, its archive
- * stays here to answer for any entry until the page ends this worker. Messages: protocol.js (ToCodesign,
+ * stays here to answer for any entry until the page ends this worker. Messages: protocol.js here (ToCodesign,
  * FromCodesign).
  */
 import init, { Codesign, start as installPanicHook } from '../pkg/vsr.js';
 import { loadWasm, messageOf } from '../kit.js';
 import { EvaluatorPool, workerCount } from '../pool.js';
-import { FromCodesign, ToCodesign } from '../protocol.js';
+import { FromCodesign, ToCodesign } from './protocol.js';
 
 const ready = loadWasm(init, installPanicHook);
 
@@ -45,7 +45,7 @@ self.onmessage = async (event) => {
 
 /**
  * Starts the search; bad settings or a wrong module answer 'error' before any worker starts.
- * @param {import('../protocol.js').CodesignSettings} settings @param {number} workers
+ * @param {import('./protocol.js').CodesignSettings} settings @param {number} workers
  * @param {string | null} module the module's run file (frozen, finetune)
  */
 function start(settings, workers, module) {

@@ -7,6 +7,7 @@
 pub mod codesign;
 pub mod export;
 pub mod file;
+pub mod groups;
 pub mod job;
 pub mod merge;
 pub mod plan;
