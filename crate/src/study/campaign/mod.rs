@@ -12,6 +12,7 @@ pub mod job;
 pub mod merge;
 pub mod plan;
 pub mod results;
+pub mod run_spec;
 
 pub use codesign::CodesignGroup;
 pub use file::Campaign;
