@@ -11,7 +11,7 @@
  * FromCodesign).
  */
 import init, { Codesign, start as installPanicHook } from '../pkg/vsr.js';
-import { loadWasm, messageOf } from '../kit.js';
+import { loadWasm, messageOf, onReadyMessage } from '../kit.js';
 import { EvaluatorPool, workerCount } from '../pool.js';
 import { FromCodesign, ToCodesign } from './protocol.js';
 
@@ -25,15 +25,7 @@ let started = 0;
 /** The search ended: its archive stays to answer 'entry' until the page ends this worker. */
 let over = false;
 
-/** @param {MessageEvent} event */
-self.onmessage = async (event) => {
-  try {
-    await ready;
-  } catch (error) {
-    fail(messageOf(error));
-    return;
-  }
-  const msg = event.data;
+onReadyMessage(ready, fail, (/** @type {any} */ msg) => {
   switch (msg.type) {
     case ToCodesign.START: start(msg.settings, msg.workers, msg.module ?? null); break;
     case ToCodesign.STOP: finish(true); break;
@@ -41,7 +33,7 @@ self.onmessage = async (event) => {
     case ToCodesign.CRASH_WORKER: pool?.crash(Number(msg.index) || 0); break;
     default: fail(`unknown message type ${JSON.stringify(msg.type)}`);
   }
-};
+});
 
 /**
  * Starts the search; bad settings or a wrong module answer 'error' before any worker starts.
