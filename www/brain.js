@@ -28,6 +28,7 @@ import { describeRun, ready, remapGenome, runGenome, transplant } from './core.j
  *   terrain of the training terrain (a family draws a fresh one for every evaluation)
  * @property {number} speed   m/s
  * @property {string} terrain the training terrain (family or name)
+ * @property {boolean} [single] the best single evaluation seen during a run (not the run's result)
  */
 
 /** @typedef {{left: number, bottom: number}} Origin */
@@ -84,7 +85,7 @@ export async function followEdit(brain, rows, origin, seed, edit) {
 export function bestSoFar(genome, fitness, settings, kind, finetuning, source, origin) {
   return {
     controller: kind, genome, rows: settings.shape, origin, module: null, source: finetuning ? source : null,
-    seconds: settings.seconds, trained: { speed: fitness, terrain: settings.terrain }, run: true,
+    seconds: settings.seconds, trained: { speed: fitness, terrain: settings.terrain, single: true }, run: true,
     label: `the best so far while ${finetuning ? 'fine-tuning' : 'evolving'}: ${fitness.toFixed(2)} m/s in one evaluation, seed ${settings.seed}`,
   };
 }

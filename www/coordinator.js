@@ -10,7 +10,7 @@
  * generation); a step runs one generation; stopping drops the unfinished generation. Messages: protocol.js (ToCoordinator, FromCoordinator, EvaluatorMessage).
  */
 import init, { Evolution, start as installPanicHook } from './pkg/vsr.js';
-import { loadWasm, messageOf } from './kit.js';
+import { loadWasm, messageOf, onReadyMessage } from './kit.js';
 import { EvaluatorPool, workerCount } from './pool.js';
 import { FromCoordinator, ToCoordinator } from './protocol.js';
 
@@ -29,15 +29,7 @@ let stepping = false;
 let clock = { ms: 0, since: 0 };
 let bestSoFar = -Infinity;
 
-/** @param {MessageEvent} event */
-self.onmessage = async (event) => {
-  try {
-    await ready;
-  } catch (error) {
-    fail(messageOf(error));
-    return;
-  }
-  const msg = event.data;
+onReadyMessage(ready, fail, (/** @type {any} */ msg) => {
   switch (msg.type) {
     case ToCoordinator.START: start(msg.settings, msg.workers, msg.source ?? null); break;
     case ToCoordinator.PAUSE: setPaused(true); break;
@@ -48,7 +40,7 @@ self.onmessage = async (event) => {
     case ToCoordinator.CRASH_WORKER: pool?.crash(Number(msg.index) || 0); break;
     default: fail(`unknown message type ${JSON.stringify(msg.type)}`);
   }
-};
+});
 
 /**
  * Starts the run; bad settings answer 'error' before any worker starts.

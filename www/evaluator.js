@@ -7,20 +7,13 @@
  * result. Messages: protocol.js (EvaluatorMessage).
  */
 import init, { evaluateJob, start as installPanicHook } from './pkg/vsr.js';
-import { loadWasm, messageOf } from './kit.js';
+import { loadWasm, messageOf, onReadyMessage } from './kit.js';
 import { EvaluatorMessage } from './protocol.js';
 
 const ready = loadWasm(init, installPanicHook);
 
-/** @param {MessageEvent<{type: string, slot: number, job: import('./protocol.js').EvolveJob, genome: Float32Array}>} event */
-self.onmessage = async (event) => {
-  try {
-    await ready;
-  } catch (error) {
-    reportError(messageOf(error));
-    return;
-  }
-  const { type, slot, job, genome } = event.data;
+onReadyMessage(ready, reportError, (/** @type {{type: string, slot: number, job: import('./protocol.js').EvolveJob, genome: Float32Array}} */ msg) => {
+  const { type, slot, job, genome } = msg;
   if (type === EvaluatorMessage.CRASH) {
     setTimeout(() => { throw new Error('evaluation worker crashed on request'); });
     return;
@@ -35,7 +28,7 @@ self.onmessage = async (event) => {
   } catch (error) {
     reportError(`evaluation ${job.index} of generation ${job.generation} failed: ${messageOf(error)}`);
   }
-};
+});
 
 /** @param {string} message */
 function reportError(message) {

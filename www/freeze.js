@@ -93,15 +93,23 @@ export const VERDICT_AFTER_S = 3;
 /** Below this speed before freezing (m/s) the robot was not walking, and freezing says little. */
 const WALKING = 0.2;
 
+/** Under this share of its speed before (a tenth), frozen, it nearly stops. */
+const NEARLY_STOPS = 0.1;
+
 /**
- * What the two speeds say, in words: whether the robot needed its attention to change.
+ * What the two speeds say, in words: whether the robot needed its attention to change. A robot
+ * that nearly stops rocks on the spot, its speed over the last seconds a little above or below
+ * zero: one wording for all of it (no percentage that changes sign, or “stops” that turns into
+ * “keeps 2%”), the words of the classroom's freeze task (“less than a tenth as fast”).
  * @param {number} before @param {number} after speeds (m/s) @param {number} seconds frozen for
  * @returns {string}
  */
 export function verdict(before, after, seconds) {
   if (!(seconds >= VERDICT_AFTER_S)) return 'Watch a few seconds more…';
   if (!(before >= WALKING)) return 'It was hardly walking before, so this says little: freeze a robot while it walks.';
-  if (!(after > 0)) return 'Frozen, it stops (or drifts back): its changing attention is what made it walk.';
+  if (!(after >= NEARLY_STOPS * before)) {
+    return 'Frozen, it nearly stops (less than a tenth of its speed before, rocking on the spot): its changing attention is what made it walk.';
+  }
   const kept = Math.round((100 * after) / before);
   if (kept < 34) return `Frozen, it keeps only ${kept}% of its speed: its changing attention is what made it walk.`;
   if (kept < 80) return `Frozen, it keeps ${kept}% of its speed: its changing attention helps, but it walks partly without it.`;

@@ -9,14 +9,17 @@ import { SENSOR_NAMES } from './protocol.js';
 /**
  * @param {HTMLElement} el @param {import('./core.js').ShapeCheck} check the drawing's
  * @param {string} kind the controller family @param {number} attentionGenes the attention block's size
+ * @param {string} walking what walks while the drawing is not a robot (its last whole body), in words
  */
-export function showGeneCount(el, check, kind, attentionGenes) {
+export function showGeneCount(el, check, kind, attentionGenes, walking = '') {
   const genes = check.params.find(([k]) => k === kind)?.[1] ?? 0;
   const n = check.voxels;
   const detail = kind === 'attention' && n > 0
     ? `: ${attentionGenes} for the attention block, shared by every voxel, ${genes - attentionGenes - 1} for the outputs, `
       + `one set of weights per voxel position (each voxel adds ${SENSOR_NAMES.length}, one per sensor), and 1 bias shared by every voxel` : '';
-  el.textContent = n > 0 ? `${genes} genes${detail}` : '';
+  // A drawing in pieces is counted as drawn, beside the robot that still walks (its last whole body).
+  const pending = !check.ok && n > 0 ? ` (for your drawing of ${n} voxels, once it is one piece; ${walking || 'the robot walking is your last whole drawing'})` : '';
+  el.textContent = n > 0 ? `${genes} genes${pending}${detail}` : '';
   el.title = 'Genes: the numbers evolution changes. Every voxel runs the same small network; '
     + 'what differs between voxels is only the output weights of its position.';
   el.dataset.value = String(genes);

@@ -54,6 +54,24 @@ export function loadWasm(init, installPanicHook) {
 }
 
 /**
+ * A worker's message handler that waits for its wasm module: each message goes to
+ * `handle` once `ready` resolved; if the module could not load, `fail` gets why, in words.
+ * @param {Promise<unknown>} ready @param {(message: string) => void} fail
+ * @param {(msg: any) => void} handle
+ */
+export function onReadyMessage(ready, fail, handle) {
+  self.onmessage = async (/** @type {MessageEvent} */ event) => {
+    try {
+      await ready;
+    } catch (error) {
+      fail(messageOf(error));
+      return;
+    }
+    handle(event.data);
+  };
+}
+
+/**
  * The page's side of a worker that answers requests ({@link answerRequests}): `ask(name, ...args)`
  * posts {id, name, args} and resolves with the answer's value, or rejects with its message as
  * an Error. The worker starts at the first request; when it dies (or its wasm module crashed),

@@ -94,7 +94,7 @@ const runs = new RunPanel(document, defaults, {
   message: showMessage,
   note: (text) => messages.show(text, 'note'),
 });
-new RunEstimate(/** @type {HTMLElement} */ (document.getElementById('run-estimate')), runs.form, () => runs.pace, () => drawing.rows());
+const estimate = new RunEstimate(/** @type {HTMLElement} */ (document.getElementById('run-estimate')), runs.form, () => runs.pace, () => drawing.rows(), defaults.quick);
 robot = new Robot(document, { defaults, drawing, editor, viewer, messages, speedNote, runs, keep: () => keeper.schedule() });
 follower = new RunFollower(robot, modules, () => runs.mode === 'finetune');
 const bodySearch = new CodesignPanel(document, {
@@ -143,6 +143,9 @@ async function start() {
     return robot.bodyChanged();
   });
   modules.listPretrained().then(() => { if (robot.brain?.module) modules.choose(robot.brain.module); });
+  // How long a run will take, before the first: this computer's speed on the quick settings' episodes, for the drawn body.
+  // (A second after the page opened: its own start-up, wasm compiled in every worker, is done by then.)
+  setTimeout(() => estimate.measure(drawing.rows(), robot.check, defaults.quick.seconds, defaults.trainingTerrain), 1000);
   window.addEventListener('hashchange', () => keeper.openLink());
   window.addEventListener('beforeunload', (event) => {
     if (robot.running) event.preventDefault(); // the browser asks: leaving ends the run (its best so far is kept)
@@ -187,6 +190,7 @@ race,
 };
 const lab = new Lab({ defaults, runBests: () => race.run.bests, raceSeconds: () => Number(race.seconds.value) });
 const study = new StudyPanel(document, playground);
+study.loaded.then(() => modules.setStudyRuns(study.runs));
 const tour = new Tour(document, playground, study, new Classroom(document, lab));
 fillResults(el('results-plain-body'), (id) => study.show(id));
 wireWords(document);

@@ -8,6 +8,7 @@
  */
 import { describeRun } from './core.js';
 import { messageOf } from './kit.js';
+import { lineageNote } from './tour/lineage.js';
 
 /** Where the served pretrained run files are (scripts/serve.mjs mounts pretrained/). */
 const PRETRAINED_DIR = 'pretrained/';
@@ -35,6 +36,10 @@ export class ModuleList {
     this.held = new Map();
     /** Descriptions asked: only the latest one's answer is shown. */
     this.described = 0;
+    /** The study run each pretrained module is (its name in the study's tables), by key. @type {Map<string, string>} */
+    this.studyRunOf = new Map();
+    /** The study's runs, once listed (study.js), to say beside a module where its run stopped at another budget. */
+    this.studyRuns = /** @type {import('./tour/study.js').StudyRun[]} */ ([]);
     /** Resolves once the pretrained modules are listed (or could not be). */
     this.listed = new Promise((resolve) => { this.doneListing = resolve; });
     el('module-load').addEventListener('click', () => this.withSelected(hooks.loadOnto));
@@ -55,12 +60,20 @@ export class ModuleList {
         const from = m.finetuned_from ? ` fine-tuned from ${m.finetuned_from}` : '';
         const label = `${m.controller} on ${m.shape}${from} (evolved for ${m.evaluations.toLocaleString('en')} evaluations${speed})`;
         this.select.append(new Option(label, PRETRAINED_DIR + m.file));
+        const run = /--out \S*?([^/\s]+)\.json/.exec(m.command ?? '')?.[1];
+        if (run) this.studyRunOf.set(PRETRAINED_DIR + m.file, run);
       }
       this.describe();
     } catch (error) {
       this.hooks.message(`could not list the pretrained modules: ${messageOf(error)}`);
     }
     this.doneListing?.(undefined);
+  }
+
+  /** The study's runs are listed: a module's note says where its run stopped at another budget. @param {import('./tour/study.js').StudyRun[]} runs */
+  setStudyRuns(runs) {
+    this.studyRuns = runs;
+    this.describe();
   }
 
   /**
@@ -119,6 +132,8 @@ export class ModuleList {
         + `${info.finetunedFrom ? ` from a module evolved on ${info.finetunedFrom}` : ''} (seed ${info.seed}, budget ${info.budget} evaluations${info.evaluations > info.budget
           ? ` (it took ${info.evaluations}: a run finishes its last generation)` : ''}, `
         + `${info.seconds}-s episodes on ${info.terrain}; in training ${Number.isFinite(info.fitness) ? info.fitness.toFixed(2) : '–'} m/s)`;
+      const lineage = lineageNote(this.studyRuns, this.studyRunOf.get(module?.key ?? '') ?? '');
+      if (lineage) this.details.textContent += `. ${lineage}`;
       this.loadButton.title = info.controller === 'attention'
         ? `Put it on your robot: it keeps its ${this.attentionGenes} attention genes (the block every voxel shares); `
           + 'the rest of its brain (each voxel position\'s output weights) is drawn new for your body'

@@ -76,6 +76,8 @@ export class Lane {
     this.start = NaN;
     /** Metres walked from the start line (NaN before the first frame). */
     this.walked = NaN;
+    /** Every frame's simulated time (s) and metres walked, since the start line. @type {{t: number, walked: number}[]} */
+    this.track = [];
     this.worker = spawn('worker.js', (msg) => this.onMessage(msg), (text) => hooks.failed(this, text));
     this.show(NaN, NaN, NaN);
   }
@@ -89,6 +91,7 @@ export class Lane {
     this.finished = false;
     this.phase = 'idle';
     this.start = NaN;
+    this.track = [];
     this.worker.postMessage({ type: ToWorker.PAUSE });
     this.worker.postMessage({ type: ToWorker.SPEED, speed });
     const brain = { controller: this.racer.controller, genome: this.racer.genome };
@@ -138,6 +141,11 @@ export class Lane {
     this.speed.textContent = Number.isFinite(velocity) && time > 0 ? `${velocity.toFixed(2)} m/s` : '– m/s';
     const walked = x - this.start;
     this.walked = walked;
+    if (Number.isFinite(walked) && Number.isFinite(time)) {
+      const last = this.track[this.track.length - 1];
+      if (last && time < last.t) this.track = []; // loaded again: a new race
+      if (!last || time > last.t) this.track.push({ t: time, walked });
+    }
     this.distance.textContent = Number.isFinite(walked) ? `${walked.toFixed(1)} m in ${time.toFixed(1)} s` : '';
   }
 
@@ -183,4 +191,18 @@ export function standings(walked) {
 /** 1st, 2nd, 3rd, 4th. @param {number} n */
 function ordinal(n) {
   return `${n}${({ 1: 'st', 2: 'nd', 3: 'rd' })[n] ?? 'th'}`;
+}
+
+/**
+ * Metres walked at simulated time `t` on a lane's track, between the two frames around it
+ * (NaN before its first frame or after its last: it is not there yet).
+ * @param {{t: number, walked: number}[]} track @param {number} t
+ */
+export function walkedAt(track, t) {
+  const after = track.findIndex((s) => s.t >= t);
+  if (after < 0) return NaN;
+  const b = track[after];
+  if (b.t === t || after === 0) return b.t === t ? b.walked : NaN;
+  const a = track[after - 1];
+  return a.walked + ((b.walked - a.walked) * (t - a.t)) / (b.t - a.t);
 }

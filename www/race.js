@@ -9,11 +9,15 @@
  * against 50 and see evolution at work). Adding or removing a robot restarts the race.
  */
 import { describeRun, runGenome } from './core.js';
+import { downloadCsv } from './export.js';
 import { messageOf } from './kit.js';
-import { Lane, standings } from './race-lane.js';
+import { Lane, standings, walkedAt } from './race-lane.js';
 
 /** Most robots in one race. */
 export const MAX_RACERS = 4;
+
+/** Simulated seconds between two rows of the race's table (CSV). */
+export const TABLE_STEP_S = 0.5;
 
 /** @typedef {import('./race-lane.js').Racer} Racer */
 /** @typedef {{generation: number, fitness: number, genome: Float32Array}} GenerationBest */
@@ -37,7 +41,7 @@ export class Race {
     this.speed = /** @type {HTMLSelectElement} */ (el('race-speed-select'));
     this.generation = /** @type {HTMLSelectElement} */ (el('race-generation'));
     this.buttons = { add: el('race-add'), best: el('race-best'), generation: el('race-add-generation'),
-      firstLast: el('race-first-last'), restart: el('race-restart'), clear: el('race-clear') };
+      firstLast: el('race-first-last'), restart: el('race-restart'), clear: el('race-clear'), csv: el('race-csv') };
     /** @type {Lane[]} */
     this.lanes = [];
     /** The current run's best evaluation of every generation, and what it evolved. */
@@ -61,6 +65,10 @@ export class Race {
     b.firstLast.addEventListener('click', () => this.firstMiddleLast());
     b.restart.addEventListener('click', () => this.restart());
     b.clear.addEventListener('click', () => this.clear());
+    b.csv.addEventListener('click', () => {
+      const { header, rows } = this.table();
+      downloadCsv(`race-${this.terrainName}-${this.seconds.value}s.csv`, header, rows);
+    });
     this.speed.addEventListener('change', () => this.restart());
   }
 
@@ -158,6 +166,20 @@ export class Race {
     this.update();
   }
 
+  /**
+   * The race as a table: every {@link TABLE_STEP_S} s of simulated time (and at the finish),
+   * each robot's distance from the start line in metres (empty where it has not got to yet).
+   * @returns {{header: string[], rows: (number | null)[][]}}
+   */
+  table() {
+    const header = ['time (s)', ...this.lanes.map((l, i) => `${i + 1}. ${l.racer.label}: distance (m)`)];
+    const end = Math.max(0, ...this.lanes.map((l) => l.track[l.track.length - 1]?.t ?? 0));
+    const times = [];
+    for (let k = 0; k * TABLE_STEP_S <= end + 1e-9; k++) times.push(k * TABLE_STEP_S);
+    if (end > 0 && end - times[times.length - 1] > 1e-9) times.push(end);
+    return { header, rows: times.map((t) => [t, ...this.lanes.map((l) => (t === 0 ? 0 : walkedAt(l.track, t)))]) };
+  }
+
   /** Every robot back to the start line, paused until all are built; then all start together. */
   restart() {
     const seconds = Number(this.seconds.value);
@@ -183,6 +205,7 @@ export class Race {
     this.generation.disabled = this.run.bests.length === 0;
     b.restart.disabled = n === 0;
     b.clear.disabled = n === 0;
+    b.csv.disabled = n === 0;
     const done = n > 0 && this.lanes.every((l) => l.finished);
     this.section.dataset.state = n === 0 ? 'empty' : done ? 'finished' : 'racing';
     this.status.textContent = n === 0

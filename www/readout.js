@@ -67,6 +67,11 @@ export class Readout {
     this.write(frame);
   }
 
+  /** Whether the episode walking now is over (its speed is the episode's). */
+  get ended() {
+    return Number.isFinite(this.latest?.episodeSpeed);
+  }
+
   /** Shows the latest frame now (the simulation stopped: its last state must be on screen). */
   flush() {
     if (this.latest) this.write(this.latest);
@@ -80,13 +85,15 @@ export class Readout {
     // A fresh walk's distance is the core's; an edited robot's runs on from the walk's start.
     if (!this.episode.edited) this.origin = frame.centreX - frame.distance;
     const x = this.episode.edited && Number.isFinite(this.origin) ? frame.centreX - this.origin : frame.distance;
-    show(this.fields.time, frame.time, `${frame.time.toFixed(2)} s`);
-    show(this.fields.x, x, `${x.toFixed(2)} m`);
     const ended = Number.isFinite(frame.episodeSpeed);
+    // Past the episode the clock runs on: said beside it, so "275 s" never stands against "10-s episode".
+    show(this.fields.time, frame.time, ended ? `${frame.time.toFixed(2)} s (its ${seconds}-s episode is over; it walks on)`
+      : `${frame.time.toFixed(2)} s`);
+    show(this.fields.x, x, `${x.toFixed(2)} m`);
     const speed = ended ? frame.episodeSpeed : frame.velocity;
     const over = edited ? `since the edit, ${seconds}-s episode` : `${seconds}-s episode`;
     show(this.fields.speed, speed, ended
-      ? `${speed.toFixed(2)} m/s over its ${over} on ${terrain}; walking on past it`
+      ? `${speed.toFixed(2)} m/s over its ${over} on ${terrain}`
       : `${speed.toFixed(2)} m/s so far (${over} on ${terrain})`);
     this.fields.speed.dataset.ended = String(ended);
     show(this.fields.velocity, velocity, `${velocity.toFixed(2)} m/s`);

@@ -55,6 +55,8 @@ export class Robot {
     this.shelved = null;
     /** A run uses the robot: its drawing is locked. */
     this.running = false;
+    /** The body the viewer walks (the last whole drawing; '' before the first). */
+    this.walkingRows = '';
   }
 
   /** @param {string} text an error for the person (it stays until closed) */
@@ -116,7 +118,26 @@ export class Robot {
 
   /** Says how many genes the chosen family has for this body, and what they are. */
   updateParams() {
-    showGeneCount(this.el('param-count'), this.check, this.controllerSelect.value, this.parts.defaults.attentionGenes);
+    showGeneCount(this.el('param-count'), this.check, this.controllerSelect.value, this.parts.defaults.attentionGenes, this.walkingWords());
+    this.sayDriver();
+  }
+
+  /** The robot that walks while the drawing is not one (its last whole body), in words. */
+  walkingWords() {
+    const walking = this.brain?.rows ?? this.walkingRows;
+    if (!walking) return '';
+    const voxels = [...walking].filter((c) => c === '1').length;
+    return `the robot walking is your last whole drawing: ${voxels} voxels${this.brain ? `, ${this.brain.genome.length} genes` : ''}`;
+  }
+
+  /** Says what drives the robot, and, while the drawing is not a robot, that it is the last whole one. */
+  sayDriver() {
+    const brain = this.brain;
+    const drives = brain ? `Driven by: ${brain.label} (${brain.controller}, ${brain.genome.length} genes).`
+      : 'Driven by: the phase gait (no brain yet: evolve one, or load a module).';
+    const drawn = this.check.voxels > 0 && !this.check.ok && this.walkingRows
+      ? ` Your drawing (${this.check.voxels} voxels) is not a robot yet, so ${this.walkingWords()}.` : '';
+    this.el('driver').textContent = drives + drawn;
   }
 
   updateButtons() {
@@ -185,12 +206,11 @@ export class Robot {
     this.updateParams();
     const seconds = this.episodeSeconds();
     viewer.show(rows, brain ? { controller: brain.controller, genome: brain.genome } : null, keepPlace, seconds);
+    this.walkingRows = rows;
     speedNote.show(brain, viewer.terrain.value.trim(), seconds, !this.running);
     runs.showWalking(brain?.run === true);
     this.el('gait').hidden = brain !== null; // its settings drive only a robot with no brain
-    this.el('driver').textContent = brain
-      ? `Driven by: ${brain.label} (${brain.controller}, ${brain.genome.length} genes).`
-      : 'Driven by: the phase gait (no brain yet: evolve one, or load a module).';
+    this.sayDriver();
     this.updateButtons();
   }
 

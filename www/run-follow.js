@@ -1,7 +1,8 @@
 // @ts-check
 /**
  * Following a run on the robot ("walk the best so far"): each new best seen during a run
- * drives the robot, at most every few seconds so that each one walks a while; when the run
+ * drives the robot, at most every few seconds and once the one walking finished its episode,
+ * so that each one walks a while and its speed is an episode's; when the run
  * ends, its run file becomes a module of the list (to watch, race, export, fine-tune further)
  * and its result drives the robot.
  */
@@ -41,10 +42,21 @@ export class RunFollower {
       robot.drive(bestSoFar(genome, fitness, settings, kind, this.finetuning(), robot.brain?.source ?? null, robot.origin()));
     };
     window.clearTimeout(this.timer);
-    const wait = this.last + FOLLOW_INTERVAL_MS - performance.now();
-    if (wait <= 0) { apply(); return; }
     this.pending = apply;
-    this.timer = window.setTimeout(() => this.pending?.(), wait);
+    this.applyWhenDue();
+  }
+
+  /**
+   * Applies the pending best once the last one walked a while and, if it is a best seen during
+   * the run, finished its episode: the speed under the robot is then an episode's speed, the
+   * measure of the training figure beside it, not the first seconds of a walk from standing.
+   */
+  applyWhenDue() {
+    if (!this.pending) return;
+    const wait = this.last + FOLLOW_INTERVAL_MS - performance.now();
+    const walking = this.robot.brain?.trained?.single === true && !this.robot.parts.viewer.readout.ended;
+    if (wait <= 0 && !walking) { this.pending(); return; }
+    this.timer = window.setTimeout(() => this.applyWhenDue(), Math.max(wait, 250));
   }
 
   /**

@@ -8,10 +8,10 @@
  * run can be followed by a from-scratch run with the same budget, drawn as a second line.
  */
 import { messageOf, spawn } from './kit.js';
-import { download, runFileName } from './export.js';
+import { download, downloadCsv, runFileName } from './export.js';
 import { planWords } from './run-plan.js';
 import { FromCoordinator, ToCoordinator } from './protocol.js';
-import { RunProgress } from './run-progress.js';
+import { RunProgress, TABLE_HEADER } from './run-progress.js';
 import { voxelCount } from './run-estimate.js';
 import { RunSettings } from './run-settings.js';
 
@@ -55,7 +55,7 @@ export class RunPanel {
     /** @type {Record<string, HTMLButtonElement>} */
     this.buttons = {
       evolve: el('run-evolve'), finetune: el('run-finetune'), pause: el('run-pause'), step: el('run-step'),
-      stop: el('run-stop'), export: el('run-export'),
+      stop: el('run-stop'), export: el('run-export'), csv: el('run-csv'),
     };
     this.compare = /** @type {HTMLInputElement} */ (el('run-compare'));
     this.follow = /** @type {HTMLInputElement} */ (el('run-follow'));
@@ -96,6 +96,16 @@ export class RunPanel {
     b.step.addEventListener('click', () => this.send(ToCoordinator.STEP));
     b.stop.addEventListener('click', () => { this.compareNext = false; this.send(ToCoordinator.STOP); });
     b.export.addEventListener('click', () => this.exportRunFile());
+    b.csv.addEventListener('click', () => this.exportCsv());
+  }
+
+  /** Downloads the latest run's generations (and its comparison's) as a CSV table, so far if it is running. */
+  exportCsv() {
+    const first = this.progress.table[0];
+    if (!first || !this.runSettings) return;
+    const { controller, seed } = this.runSettings;
+    const name = first[0] === 'evolve' ? `evolved-${controller}-seed${seed}` : `finetuned-attention-seed${seed}`;
+    downloadCsv(`${name}-generations.csv`, TABLE_HEADER, this.progress.table);
   }
 
   /**
@@ -213,6 +223,7 @@ export class RunPanel {
     const { record } = msg;
     if (record.best !== null && record.best > this.bestSoFar) this.bestSoFar = record.best;
     this.progress.generation(msg, this.generations, this.bestSoFar, /** @type {any} */ (this.mode));
+    this.buttons.csv.disabled = false;
     const pace = (msg.evalsPerSecond * settings.seconds * voxelCount(settings.shape)) / this.workers;
     if (pace > 0 && Number.isFinite(pace)) this.pace = pace;
     this.hooks.generation?.(msg.top, record.generation, settings, this.kind(settings), this.mode);
@@ -234,6 +245,7 @@ export class RunPanel {
       this.hooks.finished({ runFile: msg.runFile, settings, mode: /** @type {any} */ (this.mode), peak: this.bestSoFar,
         stopped: msg.stopped, follow: this.follow.checked });
     }
+    this.progress.ended();
     const how = msg.stopped ? 'stopped' : 'finished';
     this.end('', this.mode === 'scratch' ? `from scratch: ${how}` : how);
     if (compare) this.start('scratch');
@@ -283,5 +295,6 @@ export class RunPanel {
     b.stop.disabled = !running;
     b.pause.textContent = this.paused ? 'Resume' : 'Pause';
     b.export.disabled = !running && this.runFile === null;
+    b.csv.disabled = this.progress.table.length === 0;
   }
 }

@@ -3,7 +3,8 @@
  * A run's progress as the page shows it: the live figures (generation, evaluations, best so
  * far, the generation's best and median, evaluations per second; each raw number in
  * data-value for tests) and the chart against evaluations: best and median of an evolution,
- * or fine-tuning against the from-scratch run that follows it, drawn as a second line.
+ * or fine-tuning against the from-scratch run that follows it, drawn as a second line; and the
+ * same figures as a table, a row per generation, for the CSV download.
  */
 import { FitnessChart } from './fitness-chart.js';
 
@@ -16,6 +17,12 @@ const STYLE = {
 
 /** Which run of a fine-tune and its comparison the figures are, shown before them. @type {Record<string, string>} */
 const PHASE = { finetune: 'Fine-tuning:', scratch: 'From scratch, the comparison:' };
+
+/** What each run of a table is, in its CSV's first column. @type {Record<string, string>} */
+const RUN_WORDS = { evolve: 'evolve', finetune: 'fine-tune', scratch: 'from scratch' };
+
+/** The columns of the table (CSV): a row per generation. */
+export const TABLE_HEADER = ['run', 'generation', 'evaluations', 'best (m/s)', 'median (m/s)', 'best so far (m/s)'];
 
 /** The figures that start empty with every run. */
 const FIGURES = ['generation', 'evaluations', 'best', 'genBest', 'median'];
@@ -30,12 +37,15 @@ export class RunProgress {
       caption: el('run-caption'), progress: el('run-progress'), phase: el('run-phase'),
     };
     this.chart = new FitnessChart(el('run-chart'));
+    /** A row per generation of the latest run (and of its from-scratch comparison), as {@link TABLE_HEADER}. @type {(string | number)[][]} */
+    this.table = [];
   }
 
   /** A run is starting: its figures are empty until it reports. */
   reset() {
     for (const key of FIGURES) show(this.out[key], NaN, '–');
     show(this.out.rate, NaN, '');
+    this.out.rate.dataset.took = 'NaN';
   }
 
   /**
@@ -43,7 +53,7 @@ export class RunProgress {
    * fine-tuning before it. @param {number} planned @param {string} mode
    */
   started(planned, mode) {
-    if (mode !== 'scratch') this.chart.clear(planned); else this.chart.extend(planned);
+    if (mode !== 'scratch') { this.chart.clear(planned); this.table = []; } else this.chart.extend(planned);
     this.out.phase.textContent = PHASE[mode] ?? '';
     this.out.phase.hidden = !this.out.phase.textContent;
     show(this.out.evaluations, 0, `0 / ${planned}`);
@@ -58,6 +68,7 @@ export class RunProgress {
    */
   generation(msg, generations, bestSoFar, mode) {
     const { record } = msg;
+    this.table.push([RUN_WORDS[mode] ?? mode, record.generation, msg.evaluations, record.best ?? NaN, record.median ?? NaN, bestSoFar]);
     show(this.out.generation, record.generation, `${record.generation} of ${generations}`);
     show(this.out.evaluations, msg.evaluations, `${msg.evaluations} / ${msg.planned}`);
     show(this.out.best, bestSoFar, `${fixed(bestSoFar)} m/s`);
@@ -65,6 +76,7 @@ export class RunProgress {
     show(this.out.median, record.median ?? NaN, `${fixed(record.median)} m/s`);
     show(this.out.rate, msg.evalsPerSecond, `${fixed(msg.evalsPerSecond, 1)} evaluations/s`
       + timeLeft((msg.planned - msg.evaluations) / msg.evalsPerSecond));
+    this.out.rate.dataset.took = String(msg.evaluations / msg.evalsPerSecond); // seconds so far, pauses excluded
     if (mode === 'evolve') {
       this.chart.add('best', STYLE.best, msg.evaluations, record.best);
       this.chart.add('median', STYLE.median, msg.evaluations, record.median);
@@ -72,6 +84,14 @@ export class RunProgress {
       this.chart.add(mode, STYLE[mode], msg.evaluations, bestSoFar);
     }
     this.chart.draw();
+  }
+
+  /** The run ended: how long it took (pauses excluded) beside its pace, on screen. */
+  ended() {
+    const took = Number(this.out.rate.dataset.took);
+    if (took > 0 && Number.isFinite(took)) {
+      this.out.rate.textContent = `${fixed(Number(this.out.rate.dataset.value), 1)} evaluations/s · took ${durationWords(took)}`;
+    }
   }
 
   /**

@@ -37,16 +37,21 @@ export class RunSettings {
     this.plans = 0;
     /** Evaluations the settings in the form plan (NaN while they are not valid). */
     this.planned = NaN;
+    /** The quick settings for this computer (run-estimate.js may make them lighter); the core's until then. */
+    this.quick = (/** @type {import('./core.js').RunPreset} */ p) => p;
+    /** The form holds what the page opened with: nothing typed, chosen, restored or set up since. */
+    this.untouched = true;
     this.inputs.seed.value = '1';
     this.inputs.terrain.value = defaults.trainingTerrain;
     this.inputs.workers.value = String(Math.max(1, Math.min(MAX_EVALUATORS, navigator.hardwareConcurrency || 1)));
     this.inputs.workers.max = String(MAX_EVALUATORS);
     this.preset(defaults.quick); // after every input is filled: the plan checks them all
-    this.buttons.quick.addEventListener('click', () => this.preset(defaults.quick));
+    this.buttons.quick.addEventListener('click', () => this.preset(this.quick(defaults.quick)));
     this.buttons.paper.addEventListener('click', () => this.preset(defaults.paper));
+    for (const button of [this.buttons.quick, this.buttons.paper]) button.addEventListener('click', () => { this.untouched = false; });
     this.buttons.dice.addEventListener('click', () => freshSeed().then((seed) => { this.inputs.seed.value = String(seed); },
       (error) => message(`no fresh seed: ${messageOf(error)}`)));
-    for (const input of Object.values(this.inputs)) input.addEventListener('input', () => this.describePlan());
+    for (const input of Object.values(this.inputs)) input.addEventListener('input', () => { this.untouched = false; this.describePlan(); });
   }
 
   /** Says what the settings in the form make, or what is wrong with them. */
@@ -78,6 +83,7 @@ export class RunSettings {
 
   /** @param {Partial<Record<string, string>>} values settings to put in the form */
   setValues(values) {
+    this.untouched = false;
     for (const [k, value] of Object.entries(values)) if (this.inputs[k] && value !== undefined) this.inputs[k].value = String(value);
     this.describePlan();
   }

@@ -23,16 +23,21 @@ export class SpeedNote {
    * @param {number} seconds the viewer's episode length
    * @param {boolean} [now] measure it now (while a run uses the workers, the viewer's own measure is enough)
    */
-  show(brain, terrain, seconds, now = true) {
+  async show(brain, terrain, seconds, now = true) {
     const ticket = ++this.shown;
     this.set(NaN, '');
     if (!brain) {
       this.set(NaN, `The phase gait has no brain: each voxel squeezes and swells on a clock. Its speed is measured as it walks, over a ${seconds}-s episode.`);
       return;
     }
-    if (!now) {
-      const trained = brain.trained && Number.isFinite(brain.trained.speed) ? `In training: ${brain.trained.speed.toFixed(2)} m/s. ` : '';
-      this.set(NaN, `${trained}The viewer measures its speed as it walks, over a ${seconds}-s episode on ${terrain}; the run goes on.`);
+    if (!now) { // the workers are the run's: the viewer's own measure, under the robot, is the speed here
+      const here = `The viewer measures its speed as it walks, over a ${seconds}-s episode on ${terrain} (under the robot, once the episode is over)`;
+      const trained = brain.trained && Number.isFinite(brain.trained.speed) ? brain.trained : null;
+      if (!trained) { this.set(NaN, `${here}; the run goes on.`); return; }
+      const said = training(trained, brain.seconds ?? seconds).then(({ where, why }) => `In training: ${trained.speed.toFixed(2)} m/s `
+        + `(${trained.single ? 'its best single evaluation' : 'its latest evaluation'}, on ${where}). ${here}. ${why}`, () => `${here}; the run goes on.`);
+      const text = await said;
+      if (ticket === this.shown) this.set(NaN, text);
       return;
     }
     this.set(NaN, `Measuring its speed over a ${seconds}-s episode on ${terrain}…`);
@@ -59,11 +64,8 @@ export class SpeedNote {
     }
     const trained = brain.trained;
     if (!trained || !Number.isFinite(trained.speed)) return here;
-    const fresh = (await checkTerrain(trained.terrain)) !== ''; // a family (hilly-1-10), not one terrain
-    const where = fresh ? `a ${trained.terrain} terrain drawn fresh for that evaluation` : trained.terrain;
-    const why = fresh ? 'Training draws a fresh terrain for every evaluation, each generation; the viewer keeps one terrain, so the two differ.'
-      : 'Training used other sensor noise (or another terrain), so the two can differ.';
-    return `${here} In training: ${trained.speed.toFixed(2)} m/s (its latest evaluation, on ${where}, ${brain.seconds ?? seconds}-s episodes). ${why}`;
+    const { where, why } = await training(trained, brain.seconds ?? seconds);
+    return `${here} In training: ${trained.speed.toFixed(2)} m/s (its latest evaluation, on ${where}). ${why}`;
   }
 
   /** @param {number} value @param {string} text */
@@ -71,4 +73,18 @@ export class SpeedNote {
     this.el.dataset.value = String(value);
     this.el.textContent = text;
   }
+}
+
+/**
+ * Where training measured a brain (a terrain drawn fresh from a family, or one terrain) and
+ * why that figure differs from the speed on the viewer's terrain.
+ * @param {import('./brain.js').Trained} trained @param {number} seconds its episodes
+ * @returns {Promise<{where: string, why: string}>}
+ */
+async function training(trained, seconds) {
+  const fresh = (await checkTerrain(trained.terrain)) !== ''; // a family (hilly-1-10), not one terrain
+  return fresh
+    ? { where: `a ${trained.terrain} terrain drawn fresh for that evaluation, ${seconds}-s episodes`,
+      why: 'Training draws a fresh terrain for every evaluation, each generation, and keeps the fastest; the viewer keeps one terrain, so the two differ.' }
+    : { where: `${trained.terrain}, ${seconds}-s episodes`, why: 'Training used other sensor noise (or another terrain), so the two can differ.' };
 }

@@ -6,6 +6,7 @@
 
 mod args;
 mod bodies;
+mod codesign;
 mod controller;
 mod episode;
 mod errors;
@@ -22,6 +23,7 @@ fn _vsr(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(evaluate::param_count, m)?)?;
     m.add_function(wrap_pyfunction!(evaluate::evaluate, m)?)?;
     m.add_function(wrap_pyfunction!(bodies::evaluate_bodies, m)?)?;
+    m.add_function(wrap_pyfunction!(codesign::codesign, m)?)?;
     m.add_function(wrap_pyfunction!(simulate::simulate, m)?)?;
     m.add_function(wrap_pyfunction!(measures::validate, m)?)?;
     m.add_function(wrap_pyfunction!(measures::ablate, m)?)?;

@@ -8,6 +8,8 @@ simulator does (Pigozzi, Tang, Medvet, Ha, GECCO 2022), bit for bit as the `vsr`
   evaluate`` prints.
 - ``evaluate_bodies(shapes, genomes, controller, terrain, ...)``: one body per genome (a
   body search of your own), each what ``vsr evaluate`` prints for it.
+- ``codesign(brain, evals, seed, ...)``: ``vsr codesign``, bit for bit: a gallery of bodies
+  searched around a brain (a pretrained module frozen or fine-tuned, or one from scratch).
 - ``simulate(genome, ...)``: one episode, with its trajectory on request.
 - ``validate(genome, ...)``, ``ablate(genome, ...)``: ``vsr validate`` and ``vsr ablate``,
   bit for bit (validation uses each terrain's own noise seed, returned in ``noise_seeds``).
@@ -20,6 +22,9 @@ Bad input raises ``ValueError`` with the command line's message; an episode whos
 became non-finite raises ``UnstableError`` (``evaluate`` gives NaN for it instead).
 """
 
+import json
+import os
+
 import numpy as np
 
 from . import _vsr
@@ -31,6 +36,7 @@ __all__ = [
     "Episode",
     "UnstableError",
     "ablate",
+    "codesign",
     "evaluate",
     "evaluate_bodies",
     "load_run",
@@ -110,3 +116,33 @@ def simulate(genome, shape, controller, terrain, seconds=30.0, noise_seed=0, tra
     SW, SE, NE, NW after every step (m). Raises UnstableError if the simulation explodes."""
     genome = _genes(genome, 1, "the genome")
     return _vsr.simulate(genome, shape, controller, terrain, seconds, noise_seed, trajectory)
+
+
+def codesign(brain, evals, seed, module=None, controller="attention", start=None, seconds=30.0,
+             terrain="hilly-1-10", grid=None, voxels=None, batch=None, threads=None, out=None):
+    """``vsr codesign`` from Python, bit for bit: a body search around a brain, ``brain``
+    ``"frozen"`` (the attention block of `module`, a pretrained attention module's run file
+    path, held fixed; bodies and per-voxel genes evolve), ``"finetune"`` (the module as the
+    start, every gene evolves) or ``"scratch"`` (a `controller` from random). The search
+    starts from `start` (a preset or rows; default the module's own body, or a 3 x 3 box),
+    inside a `grid` of (width, height) cells, bodies of `voxels` (min, max); `batch` new
+    bodies per iteration; `evals` evaluations of `seconds` on `terrain`. Runs on `threads`
+    threads (all cores when None) with the GIL released: any count gives the same result.
+    Returns the co-design run file as a dict (``archive``: the gallery, each entry with
+    ``shape``, ``genome``, ``fitness``, ``cell``; ``best``; ``history``), genomes as float32
+    arrays; with `out`, also writes it there (``vsr evaluate --genome OUT --entry I``
+    replays entry I). Bad settings, or a module that cannot drive other bodies (not
+    attention), raise ValueError in words."""
+    text = None
+    if module is not None:
+        with open(os.fspath(module), encoding="utf-8") as f:
+            text = f.read()
+    run_text = _vsr.codesign(brain, int(evals), int(seed), text, controller, start,
+                             float(seconds), terrain, grid, voxels, batch, threads)
+    if out is not None:
+        with open(os.fspath(out), "w", encoding="utf-8") as f:
+            f.write(run_text)
+    run = json.loads(run_text)
+    for entry in [run["best"], *run["archive"]]:
+        entry["genome"] = np.asarray(entry["genome"], dtype=np.float32)
+    return run

@@ -4,7 +4,8 @@
  * on any {@link import('./tab.mjs').Tab}: the default robot walks; a tiny evolution in the
  * page's own workers gives `vsr evolve`'s run bit for bit (every generation's statistics but
  * its wall time, and the best genome); the viewer's speed over a pretrained module's episode
- * is `vsr evaluate`'s; the page said no error. Prints the figures and how long each took.
+ * is `vsr evaluate`'s; the quick evolution (quick.mjs) finishes, the page having said before
+ * how long it would take; the page said no error. Prints the figures and how long each took.
  * Needs `make wasm` (www/pkg) and target/release/vsr (VSR_BIN).
  */
 import assert from 'node:assert/strict';
@@ -16,6 +17,7 @@ import path from 'node:path';
 import { serve } from '../../scripts/serve.mjs';
 import { TINY, evolveInPage, evolveNative, statistics } from '../web/evolution.mjs';
 import { BIN, ROOT } from '../web/harness.mjs';
+import { quickEvolution } from './quick.mjs';
 import { waitFor } from './tab.mjs';
 
 const ATTENTION = 'pretrained/biped-4x3-attention.json';
@@ -41,6 +43,13 @@ export async function checkBrowser(launch) {
     say(`a tiny evolution (${TINY.budget} evaluations, 2 workers) is vsr evolve's bit for bit: best fitness ${evolved.best} in both, ${evolved.generations} generations, ${evolved.genes} genes`);
     const speed = await episodeSpeed(tab);
     say(`the viewer's speed over ${speed.seconds} s on ${TERRAIN} is vsr evaluate's: ${speed.viewed} m/s against ${speed.cli} m/s`);
+    await tab.run(() => localStorage.clear(), undefined);
+    await tab.goto(served.url); // afresh: a first visit's quick settings, fitted to this computer
+    await walks(tab);
+    const quick = await quickEvolution(tab);
+    assert.ok(quick.evaluations > 0, 'the quick evolution ran');
+    say(`the quick evolution: "${quick.estimate}" before it; it took ${quick.took.toFixed(1)} s for ${quick.evaluations} evaluations `
+      + `on ${quick.workers} workers (${quick.rate.toFixed(1)} evaluations/s; the page said "${quick.said}")`);
     const messages = await tab.run(() => [...document.querySelectorAll('.message[data-kind="error"]')].map((m) => m.textContent), undefined);
     assert.deepEqual(messages, [], 'the page said no error');
     assert.deepEqual(tab.problems ?? [], [], 'no console or page error');

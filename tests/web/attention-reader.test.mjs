@@ -24,7 +24,8 @@ after(async () => { await env?.close(); });
 test('the freeze report says in words what the two speeds mean, once it has seen enough', () => {
   assert.equal(verdict(2, 0.1, 1), 'Watch a few seconds more…');
   assert.match(verdict(0.05, 0.04, 6), /^It was hardly walking before/);
-  assert.match(verdict(2, -0.1, 6), /^Frozen, it stops \(or drifts back\)/);
+  assert.match(verdict(2, -0.1, 6), /^Frozen, it nearly stops \(less than a tenth/);
+  assert.equal(verdict(2, 0.05, 6), verdict(2, -0.05, 6), 'rocking on the spot, one wording whichever way it rocks');
   assert.match(verdict(2, 0.2, 6), /^Frozen, it keeps only 10% of its speed: its changing attention is what made it walk\.$/);
   assert.match(verdict(2, 1, 6), /^Frozen, it keeps 50% of its speed: its changing attention helps/);
   assert.match(verdict(2, 1.9, 6), /^Frozen, it keeps 95% of its speed: this robot walks about as well/);
@@ -100,7 +101,7 @@ test('a click on a voxel\'s map shows its matrix enlarged, named and live; freez
   console.log(`# frozen at ${frozenAt.toFixed(1)} s: ${beforeSpeed.toFixed(2)} m/s before, ${afterSpeed.toFixed(2)} m/s over the last 2 of the 6 s after`);
   assert.ok(beforeSpeed > 1, `it walked before: ${beforeSpeed}`);
   assert.ok(Math.abs(afterSpeed) < beforeSpeed / 3, `more than two thirds slower frozen: ${beforeSpeed} -> ${afterSpeed}`);
-  assert.match(String(await report.textContent()), /^Before freezing: \d+\.\d\d m\/s over the last \d+\.\d s\. Frozen for \d+\.\d s: -?\d+\.\d\d m\/s over the last [12]\.\d s\. Frozen, it (keeps only \d+% of its speed|stops \(or drifts back\)): its changing attention is what made it walk\.$/);
+  assert.match(String(await report.textContent()), /^Before freezing: \d+\.\d\d m\/s over the last \d+\.\d s\. Frozen for \d+\.\d s: -?\d+\.\d\d m\/s over the last [12]\.\d s\. Frozen, it (keeps only \d+% of its speed|nearly stops \(less than a tenth of its speed before, rocking on the spot\)): its changing attention is what made it walk\.$/);
   const held = await readMatrix(page);
   await page.waitForTimeout(500);
   assert.deepEqual((await readMatrix(page)).values, held.values, 'frozen, the matrix holds still');

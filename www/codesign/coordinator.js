@@ -7,13 +7,13 @@
  * fitness values are told in job order: the archive is the same for any number of workers, and
  * a dying worker is replaced and its job run again. After each iteration the page gets the
  * record and the gallery (every archive cell's best body); once the search ends, its archive
- * stays here to answer for any entry until the page ends this worker. Messages: protocol.js (ToCodesign,
+ * stays here to answer for any entry until the page ends this worker. Messages: protocol.js here (ToCodesign,
  * FromCodesign).
  */
 import init, { Codesign, start as installPanicHook } from '../pkg/vsr.js';
-import { loadWasm, messageOf } from '../kit.js';
+import { loadWasm, messageOf, onReadyMessage } from '../kit.js';
 import { EvaluatorPool, workerCount } from '../pool.js';
-import { FromCodesign, ToCodesign } from '../protocol.js';
+import { FromCodesign, ToCodesign } from './protocol.js';
 
 const ready = loadWasm(init, installPanicHook);
 
@@ -25,15 +25,7 @@ let started = 0;
 /** The search ended: its archive stays to answer 'entry' until the page ends this worker. */
 let over = false;
 
-/** @param {MessageEvent} event */
-self.onmessage = async (event) => {
-  try {
-    await ready;
-  } catch (error) {
-    fail(messageOf(error));
-    return;
-  }
-  const msg = event.data;
+onReadyMessage(ready, fail, (/** @type {any} */ msg) => {
   switch (msg.type) {
     case ToCodesign.START: start(msg.settings, msg.workers, msg.module ?? null); break;
     case ToCodesign.STOP: finish(true); break;
@@ -41,11 +33,11 @@ self.onmessage = async (event) => {
     case ToCodesign.CRASH_WORKER: pool?.crash(Number(msg.index) || 0); break;
     default: fail(`unknown message type ${JSON.stringify(msg.type)}`);
   }
-};
+});
 
 /**
  * Starts the search; bad settings or a wrong module answer 'error' before any worker starts.
- * @param {import('../protocol.js').CodesignSettings} settings @param {number} workers
+ * @param {import('./protocol.js').CodesignSettings} settings @param {number} workers
  * @param {string | null} module the module's run file (frozen, finetune)
  */
 function start(settings, workers, module) {

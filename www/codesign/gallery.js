@@ -6,7 +6,7 @@
  * iteration outlined. A click on a body hands its cell to the page, which loads it.
  */
 
-/** @typedef {import('../protocol.js').GalleryEntry} GalleryEntry */
+/** @typedef {import('./protocol.js').GalleryEntry} GalleryEntry */
 /** @typedef {{columns: number, rows: number, minVoxels: number, maxVoxels: number, sizeBin: number, maxFeet: number}} Layout */
 
 /** Canvas size of one body (CSS pixels). */

@@ -8,17 +8,13 @@
  * walks (and the page's Share link shares it); the first and the last best race side by side.
  * Problems (a wrong module, a drawing that is no body) are said in words that stay.
  */
-import { describeRun } from '../core.js';
 import { download } from '../export.js';
 import { messageOf, spawn } from '../kit.js';
 import { plain } from '../message.js';
-import { FromCodesign, ToCodesign } from '../protocol.js';
+import { FromCodesign, ToCodesign } from './protocol.js';
 import { Gallery } from './gallery.js';
+import { planSearch, QUICK } from './plan.js';
 
-/** The quick body search: finishes in about a minute in Chromium on 2 workers (docs/playground.md). */
-export const QUICK = Object.freeze({ budget: 1000, seconds: 10, batch: 20 });
-/** The seed body "a 3 x 3 box". */
-const BOX = '111-111-111';
 
 /**
  * @typedef {object} CodesignHooks
@@ -60,7 +56,7 @@ export class CodesignPanel {
     this.coordinator = null;
     this.running = false;
     this.starting = false;
-    /** The latest search's settings. @type {import('../protocol.js').CodesignSettings | null} */
+    /** The latest search's settings. @type {import('./protocol.js').CodesignSettings | null} */
     this.settings = null;
     /** The coordinator said the search started (errors before that: 'did not start'). */
     this.started = false;
@@ -117,7 +113,8 @@ export class CodesignPanel {
     this.update();
     let plan;
     try {
-      plan = await this.plan();
+      plan = await planSearch(
+        { brain: this.brain.value, from: this.from.value, budget: this.budget.value, seconds: this.seconds.value }, this.hooks);
     } catch (error) {
       plan = { error: `the body search could not be set up: ${messageOf(error)}` };
     } finally {
@@ -145,44 +142,6 @@ export class CodesignPanel {
     this.summary.dataset.updateMs = '0';
     coordinator.postMessage({ type: ToCodesign.START, settings, workers, module: module?.text ?? null });
     this.update();
-  }
-
-  /**
-   * The search the panel describes, or what is wrong, in words.
-   * @returns {Promise<{settings: import('../protocol.js').CodesignSettings, module: import('../modules.js').Module | null,
-   *   workers: number} | {error: string}>}
-   */
-  async plan() {
-    const brain = /** @type {'frozen' | 'finetune' | 'scratch'} */ (this.brain.value);
-    const from = this.from.value;
-    const budget = Number(this.budget.value);
-    const seconds = Number(this.seconds.value);
-    const run = this.hooks.run();
-    if (!Number.isInteger(budget) || budget < 1) return { error: `evaluations must be a whole number of at least 1, not "${this.budget.value}"` };
-    if (!(seconds > 0 && seconds <= 3600)) return { error: `the episode must last from a fraction of a second to 3600 s, not "${this.seconds.value}"` };
-    const seed = Number(run.seed);
-    if (!Number.isSafeInteger(seed) || seed < 0) return { error: `the seed (Run, under 3 · Give it a brain) must be a whole number from 0, not "${run.seed}"` };
-    let start;
-    if (from === 'drawing') {
-      const body = this.hooks.body();
-      if (!body.ok) {
-        return { error: `Your drawing is not a body the search can start from${body.message ? `: ${plain(body.message)}` : ''}. `
-          + 'Draw one piece of touching voxels, or start from the module\'s own body or a 3 x 3 box.' };
-      }
-      start = body.rows;
-    } else if (from === 'box') {
-      start = BOX;
-    }
-    const chosen = brain !== 'scratch' || from === 'module' ? await this.hooks.module() : null;
-    if (!chosen && brain !== 'scratch') return { error: 'choose a module first (Transplant a module, under 3 · Give it a brain): its brain is the one the bodies are searched for' };
-    if (!chosen && from === 'module') return { error: 'choose a module first (Transplant a module, under 3 · Give it a brain): the search starts from its body' };
-    if (chosen && brain === 'scratch' && from === 'module') start = (await describeRun(chosen.text)).shape; // a new brain on the module's body
-    const module = brain === 'scratch' ? null : chosen;
-    /** @type {import('../protocol.js').CodesignSettings} */
-    const settings = { brain, seed, seconds, terrain: run.terrain.trim(), budget, batch: QUICK.batch };
-    if (brain === 'scratch') settings.controller = this.hooks.controller();
-    if (start !== undefined) settings.start = start;
-    return { settings, module, workers: Number(run.workers) || 1 };
   }
 
   /** A search that cannot start: says why. @param {string} why */
@@ -219,7 +178,7 @@ export class CodesignPanel {
     }
   }
 
-  /** @param {{record: any, evaluations: number, planned: number, gallery: import('../protocol.js').GalleryEntry[], seconds: number}} msg */
+  /** @param {{record: any, evaluations: number, planned: number, gallery: import('./protocol.js').GalleryEntry[], seconds: number}} msg */
   onIteration(msg) {
     const t0 = performance.now();
     const { record, gallery } = msg;
@@ -325,7 +284,7 @@ export class CodesignPanel {
   }
 }
 
-/** The fastest entry of a gallery, or null. @param {import('../protocol.js').GalleryEntry[]} gallery */
+/** The fastest entry of a gallery, or null. @param {import('./protocol.js').GalleryEntry[]} gallery */
 function bestEntry(gallery) {
   let best = null;
   for (const e of gallery) if (e.fitness !== null && (best === null || e.fitness > /** @type {number} */ (best.fitness))) best = e;

@@ -27,7 +27,7 @@ export const TABLES = ['campaign.csv', 'comb-budget.csv'];
  *   every field given must match; source: how the fine-tuned module's run name starts
  */
 
-const BOXES = 'Each box holds the runs of one brain (one dot per run, each with its own seed): the line in it is the median run, the box the middle half. '
+const BOXES = 'Each box holds the runs of one brain (one dot per run, each with its own seed): the line in it is the median run, the box the middle half, the whiskers reach the slowest and the fastest run. '
   + 'The lines under the plot test each pair: "no difference detected" means the runs are too few to be sure the two brains differ (p and Holm: see the glossary).';
 
 /** @type {StudyFigure[]} */
@@ -48,7 +48,7 @@ export const FIGURES = [
     title: 'Three brains on the comb, each run\'s best walking on ten unseen terrains',
     paper: 'The paper\'s Fig. 4 found attention ahead on the comb too. This figure is our first five runs of each, where the tests detect no difference between the three brains; '
       + 'with ten runs of each (our results page), attention beats mlp (Holm p 0.034), while between attention and mlp-comm no difference is detected, '
-      + 'nor when five runs of each go on to twice the evaluations (60,000).',
+      + 'nor when five runs of each (seeds 1-5, on which mlp-comm had led) go on to twice the evaluations (60,000).',
     read: `${BOXES} A point is the mean speed of one run's best robot over ten hilly terrains it was not trained on.`,
     runs: [{ kind: 'scratch', shape: 'comb-7x2', evals: 30000, controllers: ['attention', 'mlp-comm', 'mlp'] }],
   },
@@ -74,9 +74,10 @@ export const FIGURES = [
     file: 'fig3-comb-budget-comb-7x2-60000.svg',
     title: 'Attention and mlp-comm on the comb, evolved for twice as long',
     paper: 'The paper stopped at 30,000 evaluations, saying every curve had levelled off by then. Ours were still rising, so five runs of each '
+      + '(seeds 1-5, the ones on which mlp-comm had led at 30,000) '
       + 'went on to 60,000: both brains got faster in every run, and still no difference is detected between their speeds on ten unseen terrains (p 0.55; p: see the glossary).',
     read: 'Speed of the best robot of each generation (the median run; shaded, the middle half) against evaluations, five runs of each brain; '
-      + 'the first 30,000 evaluations of each run are exactly the run the other comb figures show.',
+      + 'the first 30,000 evaluations of each run (up to the dashed line) are exactly the run the other comb figures show.',
     runs: [{ kind: 'scratch', shape: 'comb-7x2', evals: 60000, controllers: ['attention', 'mlp-comm'] }],
   },
   transfer('biped', ['biped-4x3', 'small'], ['biped-6x4', 'large'], 'The paper\'s Fig. 7: a transplanted attention, '

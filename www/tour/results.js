@@ -30,7 +30,7 @@ export const FINDINGS = [
     paper: 'Yes: attention walked faster, even though its voxels never talk.',
     ours: 'We cannot tell them apart. On the biped the middle attention robot was 0.70 m/s faster, but ten runs of each are too few to rule out '
       + 'anything from attention being 0.30 m/s slower to 1.40 m/s faster. On the comb they are closer still, and five runs of each evolved twice as long '
-      + '(60,000 evaluations) did not separate them either (3.28 against 3.62 m/s).',
+      + '(60,000 evaluations; seeds 1-5, on which mlp-comm had led) did not separate them either (3.28 against 3.62 m/s).',
     figure: 'validation-comb',
   },
   {

@@ -10,12 +10,14 @@ import { withStats } from '../classroom/simple-words.js';
 import { messageOf } from '../kit.js';
 import { unseenWords } from '../modules.js';
 import { FIGURES, STUDY_DIR, TABLES } from './figures.js';
+import { lineageNote } from './lineage.js';
 
 /**
  * @typedef {object} StudyRun  a row of the campaign table
  * @property {string} run  its name (its run file is study/runs/<run>.json)
  * @property {string} kind @property {string} shape @property {string} controller
- * @property {number} evals @property {number} seed @property {string} source
+ * @property {number} evals  its budget @property {number} evaluations  what it took (a run finishes its last generation)
+ * @property {number} seed @property {string} source
  * @property {number} unseen  mean speed of its best over the ten unseen test terrains (m/s)
  */
 
@@ -28,12 +30,12 @@ export function parseCampaign(text) {
   const names = head.split(',');
   const col = (/** @type {string} */ name) => names.indexOf(name);
   const at = { run: col('run'), kind: col('kind'), shape: col('shape'), controller: col('controller'), evals: col('evals'),
-    seed: col('seed'), source: col('source'), unseen: col('unseen_mean') };
+    evaluations: col('evaluations'), seed: col('seed'), source: col('source'), unseen: col('unseen_mean') };
   if (Object.values(at).some((i) => i < 0)) throw new Error('the study\'s table of runs lacks a column');
   return lines.map((line) => {
     const v = line.split(',');
     return { run: v[at.run], kind: v[at.kind], shape: v[at.shape], controller: v[at.controller], evals: Number(v[at.evals]),
-      seed: Number(v[at.seed]), source: v[at.source], unseen: Number(v[at.unseen]) };
+      evaluations: Number(v[at.evaluations]), seed: Number(v[at.seed]), source: v[at.source], unseen: Number(v[at.unseen]) };
   });
 }
 
@@ -73,11 +75,13 @@ export class StudyPanel {
     this.caption = /** @type {HTMLElement} */ (el('study-caption'));
     this.runPick = /** @type {HTMLSelectElement} */ (el('study-run'));
     this.watch = /** @type {HTMLButtonElement} */ (el('study-watch'));
+    this.runNote = /** @type {HTMLElement} */ (el('study-run-note'));
     /** @type {StudyRun[]} */
     this.runs = [];
     for (const f of FIGURES) this.pick.append(new Option(f.title, f.id));
     this.pick.addEventListener('change', () => this.showFigure());
     this.watch.addEventListener('click', () => this.watchRun());
+    this.runPick.addEventListener('change', () => this.noteRun());
     this.loaded = Promise.all(TABLES.map((name) => fetch(`${STUDY_DIR}${name}`)
       .then((r) => (r.ok ? r.text() : Promise.reject(new Error(`${name}: HTTP ${r.status}`))))
       .then(parseCampaign)))
@@ -104,6 +108,13 @@ export class StudyPanel {
     const runs = runsOf(fig, this.runs);
     this.runPick.replaceChildren(...runs.map((r) => new Option(describe(r), r.run)));
     this.watch.disabled = runs.length === 0;
+    this.noteRun();
+  }
+
+  /** Says beside the chosen run where the same run stopped at another budget, and why their bests differ. */
+  noteRun() {
+    this.runNote.textContent = lineageNote(this.runs, this.runPick.value);
+    this.runNote.hidden = !this.runNote.textContent;
   }
 
   /** Walks the chosen run's best robot in the viewer, on its own body. */

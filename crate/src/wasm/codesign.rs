@@ -9,11 +9,8 @@ use wasm_bindgen::prelude::{wasm_bindgen, JsError, JsValue};
 
 use super::page::{seed_from, to_js};
 use crate::controllers::ControllerKind;
-use crate::experiment::codesign::{
-    BrainMode, Codesign as CoreCodesign, CodesignConfig, DEFAULT_START,
-};
+use crate::experiment::codesign::{BrainMode, Codesign as CoreCodesign, CodesignConfig};
 use crate::experiment::{source_of, Job, RunFile, Timing, TrainingTerrain};
-use crate::simulation::Shape;
 
 /// A body search's settings as the page sends them: what `vsr codesign` takes as options.
 #[derive(Deserialize)]
@@ -85,27 +82,19 @@ impl Codesign {
             Some(text) => Some(source_of(&RunFile::from_json(&text)?)),
             None => None,
         };
-        let controller = match (&module, brain) {
-            (Some(m), BrainMode::Frozen | BrainMode::Finetune) => m.controller,
-            _ => s
-                .controller
-                .as_deref()
-                .unwrap_or("attention")
-                .parse::<ControllerKind>()?,
-        };
-        let start = match (&s.start, &module) {
-            (Some(rows), _) => Shape::parse(rows)?,
-            (None, Some(m)) if brain != BrainMode::Scratch => m.shape.clone(),
-            _ => Shape::parse(DEFAULT_START)?,
-        };
-        let mut config = CodesignConfig::new(
+        let controller = s
+            .controller
+            .as_deref()
+            .unwrap_or("attention")
+            .parse::<ControllerKind>()?;
+        let mut config = CodesignConfig::with_module(
             brain,
-            controller,
             module,
-            start,
+            controller,
+            s.start.as_deref(),
             s.budget,
             seed_from(s.seed)?,
-        );
+        )?;
         config.seconds = s.seconds;
         config.terrain = TrainingTerrain::parse(&s.terrain)?;
         if let Some(batch) = s.batch {

@@ -7,11 +7,10 @@ use std::time::Instant;
 
 use rayon::prelude::*;
 use vsr::controllers::ControllerKind;
-use vsr::experiment::codesign::{DEFAULT_GRID, DEFAULT_START, DEFAULT_VOXELS};
+use vsr::experiment::codesign::{DEFAULT_GRID, DEFAULT_VOXELS};
 use vsr::experiment::{
     source_of, BrainMode, Codesign, CodesignConfig, CodesignRun, Job, Timing, TrainingTerrain,
 };
-use vsr::simulation::Shape;
 use vsr::{Error, Result};
 
 use crate::evolution::thread_pool;
@@ -80,17 +79,14 @@ fn config_of(args: &Args) -> Result<CodesignConfig> {
         Some(path) => Some(source_of(&crate::runfile::load(path)?)),
         None => None,
     };
-    let controller = match &module {
-        Some(m) if args.brain != BrainMode::Scratch => m.controller,
-        _ => args.controller,
-    };
-    let start = match (&args.start, &module) {
-        (Some(s), _) => Shape::parse(s)?,
-        (None, Some(m)) if args.brain != BrainMode::Scratch => m.shape.clone(),
-        _ => Shape::parse(DEFAULT_START)?,
-    };
-    let mut config =
-        CodesignConfig::new(args.brain, controller, module, start, args.evals, args.seed);
+    let mut config = CodesignConfig::with_module(
+        args.brain,
+        module,
+        args.controller,
+        args.start.as_deref(),
+        args.evals,
+        args.seed,
+    )?;
     (config.grid_width, config.grid_height) = pair("--grid", &args.grid, 'x', "20x10")?;
     (config.min_voxels, config.max_voxels) = pair("--voxels", &args.voxels, '-', "4-20")?;
     config.batch = args.batch;

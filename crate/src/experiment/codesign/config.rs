@@ -143,6 +143,38 @@ impl CodesignConfig {
         }
     }
 
+    /// A search with the defaults, where what is not given follows the module: a `frozen` or
+    /// `finetune` brain is the module's family (else `controller`), and the start body is
+    /// `start` (a preset or rows) when given, else the module's own body for those brains,
+    /// else [`DEFAULT_START`]. The one rule `vsr codesign`, the page and Python follow.
+    pub fn with_module(
+        brain: BrainMode,
+        module: Option<SourceRun>,
+        controller: ControllerKind,
+        start: Option<&str>,
+        budget_evals: u64,
+        seed: u64,
+    ) -> Result<CodesignConfig> {
+        let follows_module = brain != BrainMode::Scratch;
+        let controller = match &module {
+            Some(m) if follows_module => m.controller,
+            _ => controller,
+        };
+        let start = match (start, &module) {
+            (Some(rows), _) => Shape::parse(rows)?,
+            (None, Some(m)) if follows_module => m.shape.clone(),
+            _ => Shape::parse(DEFAULT_START)?,
+        };
+        Ok(CodesignConfig::new(
+            brain,
+            controller,
+            module,
+            start,
+            budget_evals,
+            seed,
+        ))
+    }
+
     /// Genes `[0, frozen)` of the shared genes never change (the module's attention block).
     pub fn frozen_shared(&self) -> usize {
         match self.brain {

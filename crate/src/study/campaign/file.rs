@@ -37,6 +37,7 @@
 //! reference = "../tests/fixtures/gaits-comb-flat.json"   # relative to the campaign file
 //! ```
 
+pub use super::groups::{EvolveGroup, FidelityGroup, FinetuneGroup, NonInferiority};
 use crate::controllers::ControllerKind;
 use crate::error::{Error, Result};
 use crate::experiment::config::{check_seconds, PAPER_SECONDS, PAPER_TERRAIN};
@@ -105,93 +106,6 @@ impl Default for AblationSettings {
             sets: paper_only(),
         }
     }
-}
-
-/// A grid of runs from scratch: shapes x controllers x evals x seeds.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct EvolveGroup {
-    /// The group's name (titles of its figures and tables).
-    pub name: String,
-    /// Shapes: presets or rows.
-    pub shapes: Vec<String>,
-    /// Controller families.
-    pub controllers: Vec<ControllerKind>,
-    /// Evaluation budgets.
-    pub evals: Vec<u64>,
-    /// Seeds (default: the campaign's).
-    #[serde(default)]
-    pub seeds: Option<Vec<u64>>,
-    /// Ablate every best individual that has attention.
-    #[serde(default)]
-    pub ablate: bool,
-    /// Shorter budgets to read the same runs at (reported beside the group, not run): a run
-    /// from scratch with the same shape, controller and seed and a shorter budget is the
-    /// longer run's start, so its files say where the longer run stood then.
-    #[serde(default)]
-    pub earlier: Vec<u64>,
-    /// A planned non-inferiority test between two of the group's controllers (reported, not
-    /// run: it adds no job).
-    #[serde(default)]
-    pub noninferiority: Option<NonInferiority>,
-}
-
-/// A non-inferiority test (docs/ANALYSIS-PLAN.md, family 8): on every shape and budget of
-/// the group, is `treatment` not worse than `control` by `margin` m/s or more? One family of
-/// tests (Holm over the shapes) per validation set in `sets`, the first the primary.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct NonInferiority {
-    /// The largest loss (m/s) that still counts as "not worse".
-    pub margin: f64,
-    /// The controller the claim is about.
-    pub treatment: ControllerKind,
-    /// The controller it is compared with.
-    pub control: ControllerKind,
-    /// The measures: each set's validation mean, the first primary (default: unseen, then
-    /// paper).
-    #[serde(default = "unseen_then_paper")]
-    pub sets: Vec<ValidationSet>,
-    /// Seeds known before the test was planned (runs of the same grid that exist): shown
-    /// beside the test, never pooled with the group's seeds.
-    #[serde(default)]
-    pub known_seeds: Vec<u64>,
-}
-
-fn unseen_then_paper() -> Vec<ValidationSet> {
-    vec![ValidationSet::Unseen, ValidationSet::Paper]
-}
-
-/// Fine-tuning: for every pair and seed, a source run on the pair's first shape, its best
-/// fine-tuned on the second, and a from-scratch run on the second for comparison.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct FinetuneGroup {
-    /// The group's name.
-    pub name: String,
-    /// `[source shape, target shape]` pairs.
-    pub pairs: Vec<[String; 2]>,
-    /// Controller of the source runs (attention or slow-attention).
-    pub controller: ControllerKind,
-    /// Budget of each source run.
-    pub source_evals: u64,
-    /// Budget of each fine-tuning run.
-    pub evals: u64,
-    /// Budget of the from-scratch comparison runs on the target shapes (none when absent).
-    #[serde(default)]
-    pub scratch_evals: Option<u64>,
-    /// Seeds (default: the campaign's).
-    #[serde(default)]
-    pub seeds: Option<Vec<u64>>,
-}
-
-/// A reference file of gait ensembles (`study::fidelity`) to measure this simulator against.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct FidelityGroup {
-    /// The reference file, relative to the campaign file (after [`Campaign::relative_to`],
-    /// to the working folder).
-    pub reference: String,
 }
 
 fn paper_seconds() -> f64 {
@@ -329,64 +243,4 @@ impl Campaign {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn defaults_are_the_papers() {
-        let c = Campaign::parse("output = \"out\"\nseeds = [1]\n").unwrap();
-        assert_eq!((c.seconds, c.population), (30.0, 100));
-        assert_eq!(c.terrain, "hilly-1-10");
-        assert_eq!(c.validate, ValidationSet::ALL);
-        assert_eq!(c.ablation.last_second, 30);
-    }
-
-    #[test]
-    fn errors_name_the_problem() {
-        let unknown = Campaign::parse("output = \"o\"\nseeds = [1]\nseed = 3\n");
-        assert!(unknown.unwrap_err().to_string().contains("seed"));
-        let shape = "output = \"o\"\nseeds = [1]\n[[evolve]]\nname = \"a\"\nshapes = [\"blob\"]\ncontrollers = [\"mlp\"]\nevals = [10]\n";
-        assert!(Campaign::parse(shape)
-            .unwrap_err()
-            .to_string()
-            .contains("blob"));
-        let mlp = "output = \"o\"\nseeds = [1]\n[[finetune]]\nname = \"f\"\npairs = [[\"biped-4x3\", \"comb-7x2\"]]\ncontroller = \"mlp\"\nsource_evals = 10\nevals = 10\n";
-        assert!(Campaign::parse(mlp)
-            .unwrap_err()
-            .to_string()
-            .contains("attention"));
-        let later = "output = \"o\"\nseeds = [1]\n[[evolve]]\nname = \"a\"\nshapes = [\"comb-7x2\"]\ncontrollers = [\"mlp\"]\nevals = [10]\nearlier = [10]\n";
-        assert!(Campaign::parse(later)
-            .unwrap_err()
-            .to_string()
-            .contains("earlier budget 10"));
-    }
-
-    #[test]
-    fn noninferiority_is_checked() {
-        let group = "output = \"o\"\nseeds = [3, 4]\n[[evolve]]\nname = \"ni\"\nshapes = [\"comb-7x2\"]\ncontrollers = [\"attention\", \"mlp-comm\"]\nevals = [10]\n";
-        let with = |key: &str| Campaign::parse(&format!("{group}noninferiority = {{ {key} }}\n"));
-        let ok = with("margin = 0.5, treatment = \"attention\", control = \"mlp-comm\"").unwrap();
-        let n = ok.evolve[0].noninferiority.clone().unwrap();
-        assert_eq!((n.margin, n.treatment), (0.5, ControllerKind::Attention));
-        assert_eq!(n.sets, [ValidationSet::Unseen, ValidationSet::Paper]);
-        assert!(n.known_seeds.is_empty());
-        let error = |key: &str| with(key).unwrap_err().to_string();
-        assert!(
-            error("margin = 0.5, treatment = \"mlp\", control = \"mlp-comm\"")
-                .contains("mlp is not one of")
-        );
-        assert!(
-            error("margin = -1.0, treatment = \"attention\", control = \"mlp-comm\"")
-                .contains("margin")
-        );
-        assert!(error(
-            "margin = 0.5, treatment = \"attention\", control = \"mlp-comm\", known_seeds = [1, 4]"
-        )
-        .contains("known seed 4"));
-        assert!(error(
-            "margin = 0.5, treatment = \"attention\", control = \"mlp-comm\", alpha = 1"
-        )
-        .contains("alpha"));
-    }
-}
+mod tests;

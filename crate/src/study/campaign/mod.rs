@@ -7,10 +7,12 @@
 pub mod codesign;
 pub mod export;
 pub mod file;
+pub mod groups;
 pub mod job;
 pub mod merge;
 pub mod plan;
 pub mod results;
+pub mod run_spec;
 
 pub use codesign::CodesignGroup;
 pub use file::Campaign;

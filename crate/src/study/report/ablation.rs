@@ -44,7 +44,12 @@ pub(super) fn ablation_part(samples: &[Sample], id: &str, shape: &str, r: &mut R
         r.markdown.push('\n');
         let mut bands: Vec<_> = with
             .iter()
-            .filter_map(|s| band(&s.label, &ablation_series(&s.runs, set)))
+            .filter_map(|s| {
+                band(
+                    &format!("frozen {}", s.label),
+                    &ablation_series(&s.runs, set),
+                )
+            })
             .collect();
         bands.extend(with.iter().filter_map(|s| {
             band(

@@ -2,15 +2,51 @@
 //! plots, and points against the line y = x. The command line draws them (SVG); nothing here
 //! knows about pixels.
 
+use crate::controllers::ControllerKind;
 use crate::experiment::ValidationSet;
 use crate::study::campaign::RunData;
 use crate::study::statistics::{quantile, Summary};
+
+/// What a series is, which fixes its colour in every figure: a controller evolved from
+/// scratch, an attention module frozen, a module fine-tuned, or something that is no brain
+/// (alpha and eta, the reference physics).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Role {
+    /// A controller (from scratch, or walking unfrozen).
+    Controller(ControllerKind),
+    /// A controller with its attention frozen (the ablation, a frozen pretrained module).
+    Frozen(ControllerKind),
+    /// A transplanted module fine-tuned.
+    FineTuned,
+    /// No brain.
+    Other,
+}
+
+impl Role {
+    /// The role a label names by its first word (words end at a space, comma or
+    /// parenthesis): a controller's name (a `scratch-` prefix dropped); `frozen`, then the
+    /// controller's name (attention when none follows); `fine-tuned` or `finetune`; anything
+    /// else is `Other`. Every figure's series are labelled this way, so a series' colour
+    /// follows from its label alone.
+    pub fn of(label: &str) -> Role {
+        let mut words = label.split([' ', ',', '(']).filter(|w| !w.is_empty());
+        let kind = |w: Option<&str>| w?.parse::<ControllerKind>().ok();
+        let first = words.next().unwrap_or("");
+        match first.strip_prefix("scratch-").unwrap_or(first) {
+            "frozen" => Role::Frozen(kind(words.next()).unwrap_or(ControllerKind::Attention)),
+            "fine-tuned" | "finetune" => Role::FineTuned,
+            other => kind(Some(other)).map_or(Role::Other, Role::Controller),
+        }
+    }
+}
 
 /// A line over x: the median across seeds and the interquartile band.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Band {
     /// Legend entry.
     pub label: String,
+    /// What it is ([`Role::of`] its label).
+    pub role: Role,
     /// x of each point.
     pub x: Vec<f64>,
     /// Median across seeds at each x.
@@ -26,6 +62,8 @@ pub struct Band {
 pub struct BoxData {
     /// The box's label.
     pub label: String,
+    /// What it is ([`Role::of`] its label).
+    pub role: Role,
     /// The sample.
     pub values: Vec<f64>,
     /// Its summary.
@@ -35,12 +73,28 @@ pub struct BoxData {
 /// What a figure shows.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Plot {
-    /// Lines with bands (best fitness, ablation, alpha and eta against time or evaluations).
-    Lines(Vec<Band>),
+    /// Lines with bands (best fitness, ablation, alpha and eta against time or evaluations),
+    /// and vertical marks at some x.
+    Lines {
+        /// The lines.
+        bands: Vec<Band>,
+        /// The marks.
+        marks: Vec<Mark>,
+    },
     /// Box plots (validation velocities).
     Boxes(Vec<BoxData>),
     /// Points of y against x, with the line y = x (ours against the reference).
     Versus(Vec<Points>),
+}
+
+/// A vertical line at `x` with a short label beside it (e.g. a shorter budget in a longer
+/// run's curve).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Mark {
+    /// Where.
+    pub x: f64,
+    /// What.
+    pub label: String,
 }
 
 /// A series of points, optionally with a horizontal error bar on each.
@@ -77,6 +131,7 @@ pub fn band(label: &str, series: &[Vec<(f64, f64)>]) -> Option<Band> {
     let len = series.iter().map(Vec::len).min().filter(|&n| n > 0)?;
     let mut b = Band {
         label: label.to_string(),
+        role: Role::of(label),
         x: Vec::with_capacity(len),
         median: Vec::with_capacity(len),
         q1: Vec::with_capacity(len),
@@ -152,6 +207,7 @@ pub fn rate_series(runs: &[RunData], eta: bool) -> Vec<Vec<(f64, f64)>> {
 pub fn box_of(label: &str, values: Vec<f64>) -> BoxData {
     BoxData {
         label: label.to_string(),
+        role: Role::of(label),
         summary: Summary::of(&values),
         values,
     }
@@ -173,5 +229,33 @@ mod tests {
         assert_eq!(b.median, [2.0, 4.0]);
         assert_eq!((b.q1[0], b.q3[0]), (1.5, 2.5));
         assert!(band("none", &[]).is_none());
+    }
+
+    #[test]
+    fn a_label_names_its_role_by_its_first_word() {
+        let attention = Role::Controller(ControllerKind::Attention);
+        assert_eq!(Role::of("attention"), attention);
+        assert_eq!(Role::of("attention, not frozen"), attention);
+        assert_eq!(Role::of("scratch-attention (n=10)"), attention);
+        assert_eq!(Role::of("attention from scratch (30000)"), attention);
+        let comm = Role::Controller(ControllerKind::MlpComm);
+        assert_eq!(Role::of("mlp-comm"), comm);
+        assert_eq!(
+            Role::of("frozen attention"),
+            Role::Frozen(ControllerKind::Attention)
+        );
+        assert_eq!(
+            Role::of("frozen (n=3)"),
+            Role::Frozen(ControllerKind::Attention)
+        );
+        let slow = Role::Frozen(ControllerKind::SlowAttention);
+        assert_eq!(Role::of("frozen slow-attention"), slow);
+        assert_eq!(
+            Role::of("fine-tuned from comb-7x2 (20000 + 10000)"),
+            Role::FineTuned
+        );
+        assert_eq!(Role::of("finetune"), Role::FineTuned);
+        assert_eq!(Role::of("alpha"), Role::Other);
+        assert_eq!(Role::of("from scratch (30000)"), Role::Other);
     }
 }

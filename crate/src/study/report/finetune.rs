@@ -240,9 +240,11 @@ pub(super) fn finetune_section(
         ),
     ];
     for (suffix, offset, x_label) in views {
+        // From scratch named by its controller, so that it has the controller's colour.
         let mut bands: Vec<_> = samples[1..]
             .iter()
-            .filter_map(|s| band(&s.label, &best_series(&s.runs, 0.0)))
+            .map(|s| (format!("{} {}", g.controller, s.label), s))
+            .filter_map(|(label, s)| band(&label, &best_series(&s.runs, 0.0)))
             .collect();
         bands.extend(band(
             &samples[0].label,

@@ -131,7 +131,7 @@ fn evolve_section(
     let bands = samples
         .iter()
         .filter_map(|s| band(&s.label, &best_series(&s.runs, 0.0)));
-    push_lines(
+    let fig3 = push_lines(
         r,
         format!("fig3-{id}.svg"),
         format!("{shape}: best fitness"),
@@ -139,6 +139,16 @@ fn evolve_section(
         "best fitness (m/s)",
         bands.collect(),
     );
+    if let Some(fig3) = fig3 {
+        let seeds = g.seeds.as_ref().unwrap_or(&results.campaign.seeds);
+        fig3.notes = vec![runs_note(seeds, &samples)];
+        if let Plot::Lines { marks, .. } = &mut fig3.plot {
+            marks.extend(g.earlier.iter().map(|&e| figures::Mark {
+                x: e as f64,
+                label: format!("{e}: end of the {e}-evaluation runs"),
+            }));
+        }
+    }
     for &set in sets {
         let boxes = samples.iter().map(|s| {
             let means = s.runs.iter().filter_map(|d| d.validation_mean(set));
@@ -164,17 +174,31 @@ fn evolve_section(
     slow_part(&samples, &id, shape, r);
 }
 
-/// Pushes a line figure (and its link) when it has at least one band.
-fn push_lines(
-    r: &mut Report,
+/// The seeds a figure's curves are drawn from, and how many runs each curve has so far.
+fn runs_note(seeds: &[u64], samples: &[Sample]) -> String {
+    let runs: Vec<String> = samples
+        .iter()
+        .map(|s| s.runs.iter().filter(|d| d.run.is_some()).count())
+        .zip(samples)
+        .filter(|&(n, _)| n > 0)
+        .map(|(n, s)| format!("{} {n}", s.label))
+        .collect();
+    let seeds = noninferiority_section::seeds_text(seeds);
+    format!("seeds {seeds}; runs: {}", runs.join(", "))
+}
+
+/// Pushes a line figure (and its link) when it has at least one band; the figure, to add
+/// notes or marks to.
+fn push_lines<'r>(
+    r: &'r mut Report,
     file: String,
     title: String,
     x: &str,
     y: &str,
     bands: Vec<figures::Band>,
-) {
+) -> Option<&'r mut Figure> {
     if bands.is_empty() {
-        return;
+        return None;
     }
     let _ = writeln!(r.markdown, "![{title}]({file})\n");
     r.figures.push(Figure {
@@ -182,9 +206,13 @@ fn push_lines(
         title,
         x_label: x.into(),
         y_label: y.into(),
-        plot: Plot::Lines(bands),
+        plot: Plot::Lines {
+            bands,
+            marks: Vec::new(),
+        },
         notes: Vec::new(),
     });
+    r.figures.last_mut()
 }
 
 fn slow_part(samples: &[Sample], id: &str, shape: &str, r: &mut Report) {

@@ -151,7 +151,7 @@ fn known_part(results: &Results, g: &EvolveGroup, n: &NonInferiority, md: &mut S
 }
 
 /// Seeds as runs of consecutive numbers: "1-10", "1-3, 7".
-fn seeds_text(seeds: &[u64]) -> String {
+pub(super) fn seeds_text(seeds: &[u64]) -> String {
     let mut sorted = seeds.to_vec();
     sorted.sort_unstable();
     let mut parts: Vec<String> = Vec::new();

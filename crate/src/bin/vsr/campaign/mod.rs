@@ -7,6 +7,7 @@
 pub mod command;
 mod export;
 mod merge;
+mod palette;
 mod plan;
 pub mod report;
 mod run;

@@ -1,52 +1,53 @@
 //! Draws the report's figures as SVG with plotters' SVG backend. Text is written as SVG
 //! `<text>` (plotters without its `ttf` / `ab_glyph` features lays text out by estimate and
-//! needs no font file), so the viewer's sans-serif font renders it.
+//! needs no font file), so the viewer's sans-serif font renders it. Colours: `palette`.
 
+use super::palette::{looks, Look};
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
-use vsr::study::report::figures::{Band, BoxData, Figure, Plot, Points};
+use vsr::study::report::figures::{Band, BoxData, Figure, Mark, Plot, Points};
 use vsr::{Error, Result};
 
 const SIZE: (u32, u32) = (800, 500);
 
-/// The Okabe-Ito palette (Okabe and Ito 2008), safe for the common colour-vision
-/// deficiencies; black first, yellow last (faint on white).
-const OKABE_ITO: [RGBColor; 8] = [
-    RGBColor(0, 114, 178),   // blue
-    RGBColor(213, 94, 0),    // vermillion
-    RGBColor(0, 158, 115),   // bluish green
-    RGBColor(204, 121, 167), // reddish purple
-    RGBColor(86, 180, 233),  // sky blue
-    RGBColor(230, 159, 0),   // orange
-    RGBColor(0, 0, 0),       // black
-    RGBColor(240, 228, 66),  // yellow
-];
-
-/// The colour of series `i`.
-fn pick(i: usize) -> RGBAColor {
-    OKABE_ITO[i % OKABE_ITO.len()].to_rgba()
-}
-
 /// Height of one line of notes under the title (px).
 const NOTE_LINE: u32 = 16;
+
+/// The grid: major lines light, minor ones fainter, so that the data stand out.
+const GRID: RGBColor = RGBColor(225, 225, 225);
+const FINE_GRID: RGBColor = RGBColor(244, 244, 244);
+
+/// What the marks of a kind of plot are, written under it.
+fn key(plot: &Plot) -> Option<&'static str> {
+    match plot {
+        Plot::Lines { .. } => Some("line: median across runs; shaded: quartiles (25% to 75%)"),
+        Plot::Boxes(_) => Some(
+            "box: quartiles (25% to 75%); bar: median; whiskers: smallest to largest run \
+             (no outlier rule); dots: one run each",
+        ),
+        _ => None,
+    }
+}
 
 /// The SVG text of `figure`.
 pub fn draw(figure: &Figure) -> Result<String> {
     let mut svg = String::new();
     {
-        let height = SIZE.1 + NOTE_LINE * figure.notes.len() as u32;
+        let key = key(&figure.plot).map(str::to_string);
+        let notes: Vec<&String> = key.iter().chain(&figure.notes).collect();
+        let height = SIZE.1 + NOTE_LINE * notes.len() as u32;
         let root = SVGBackend::with_string(&mut svg, (SIZE.0, height)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_error)?;
         // The notes go under the chart.
-        let (root, notes) = root.split_vertically(SIZE.1);
-        for (i, line) in figure.notes.iter().enumerate() {
+        let (root, under) = root.split_vertically(SIZE.1);
+        for (i, line) in notes.into_iter().enumerate() {
             let at = (70, (i as u32 * NOTE_LINE) as i32);
-            notes
+            under
                 .draw_text(line, &("sans-serif", 13).into_font().color(&BLACK), at)
                 .map_err(plot_error)?;
         }
         match &figure.plot {
-            Plot::Lines(bands) => lines(&root, figure, bands)?,
+            Plot::Lines { bands, marks } => lines(&root, figure, bands, marks)?,
             Plot::Boxes(boxes) => boxes_plot(&root, figure, boxes)?,
             Plot::Versus(series) => versus(&root, figure, series)?,
         }
@@ -104,7 +105,7 @@ fn legend<'b: 'a, 'a>(chart: &mut Chart<'a, 'b>, position: SeriesLabelPosition) 
         .map_err(plot_error)
 }
 
-fn lines(root: &Area, figure: &Figure, bands: &[Band]) -> Result<()> {
+fn lines(root: &Area, figure: &Figure, bands: &[Band], marks: &[Mark]) -> Result<()> {
     let xs = range(bands.iter().flat_map(|b| b.x.iter().copied()));
     let ys = range(
         bands
@@ -113,33 +114,66 @@ fn lines(root: &Area, figure: &Figure, bands: &[Band]) -> Result<()> {
     );
     // Headroom above the data for the legend, so that it hides no curve.
     let rows = bands.len() as f64;
+    let data = ys.clone();
     let ys = ys.start..ys.end + (ys.end - ys.start) * (0.08 + 0.06 * rows);
     let mut chart = chart(root, figure, xs, ys)?;
     chart
         .configure_mesh()
+        .bold_line_style(GRID)
+        .light_line_style(FINE_GRID)
         .x_desc(&figure.x_label)
         .y_desc(&figure.y_label)
         // `5000`, not plotters' default `5000.0`.
         .x_label_formatter(&|x| format!("{x}"))
         .draw()
         .map_err(plot_error)?;
-    for (i, b) in bands.iter().enumerate() {
-        let color = pick(i);
+    for m in marks {
+        marked(&mut chart, m, &data)?;
+    }
+    let looks = looks(bands.iter().map(|b| b.role));
+    for (b, &Look { colour, dashed }) in bands.iter().zip(&looks) {
         let mut area: Vec<(f64, f64)> = b.x.iter().copied().zip(b.q3.iter().copied()).collect();
         area.extend(b.x.iter().copied().zip(b.q1.iter().copied()).rev());
         chart
-            .draw_series(std::iter::once(Polygon::new(area, color.mix(0.2).filled())))
+            .draw_series(std::iter::once(Polygon::new(
+                area,
+                colour.mix(0.2).filled(),
+            )))
             .map_err(plot_error)?;
-        let line = b.x.iter().copied().zip(b.median.iter().copied());
-        chart
-            .draw_series(LineSeries::new(line, color.stroke_width(2)))
+        let line: Vec<(f64, f64)> = b.x.iter().copied().zip(b.median.iter().copied()).collect();
+        let style = colour.stroke_width(2);
+        let drawn = if dashed {
+            chart.draw_series(DashedLineSeries::new(line, 8, 5, style))
+        } else {
+            chart.draw_series(LineSeries::new(line, style))
+        };
+        drawn
             .map_err(plot_error)?
-            .label(format!("{} (median, IQR)", b.label))
+            .label(&b.label)
             .legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+                let dash = if dashed { 8 } else { 20 };
+                let first = PathElement::new(vec![(x, y), (x + dash, y)], style);
+                let second = PathElement::new(vec![(x + 20 - dash, y), (x + 20, y)], style);
+                EmptyElement::at((0, 0)) + first + second
             });
     }
     legend(&mut chart, SeriesLabelPosition::UpperRight)
+}
+
+/// A vertical dashed grey line at the mark over the data's range `ys`, its label beside its
+/// foot.
+fn marked(chart: &mut Chart, m: &Mark, ys: &std::ops::Range<f64>) -> Result<()> {
+    let grey = RGBColor(110, 110, 110);
+    let line = [(m.x, ys.start), (m.x, ys.end)];
+    chart
+        .draw_series(DashedLineSeries::new(line, 6, 4, grey.stroke_width(1)))
+        .map_err(plot_error)?;
+    let font = ("sans-serif", 13).into_font().color(&grey);
+    let label = EmptyElement::at((m.x, ys.start)) + Text::new(m.label.clone(), (6, -18), font);
+    chart
+        .draw_series(std::iter::once(label))
+        .map_err(plot_error)?;
+    Ok(())
 }
 
 /// Box plots: box from q1 to q3, median line, whiskers to the smallest and largest value
@@ -162,10 +196,13 @@ fn boxes_plot(root: &Area, figure: &Figure, boxes: &[BoxData]) -> Result<()> {
         .x_labels(boxes.len().max(2) * 2 - 1)
         .x_label_formatter(&name)
         .disable_x_mesh()
+        .bold_line_style(GRID)
+        .light_line_style(FINE_GRID)
         .draw()
         .map_err(plot_error)?;
-    for (i, b) in boxes.iter().enumerate() {
-        let color = pick(i);
+    let looks = looks(boxes.iter().map(|b| b.role));
+    for (i, (b, look)) in boxes.iter().zip(&looks).enumerate() {
+        let color = look.colour;
         let (x, w, s) = (i as f64, 0.2, &b.summary);
         let style = color.stroke_width(2);
         let shapes: Vec<PathElement<(f64, f64)>> = vec![
@@ -216,6 +253,7 @@ fn versus(root: &Area, figure: &Figure, series: &[Points]) -> Result<()> {
         .configure_mesh()
         .x_desc(&figure.x_label)
         .y_desc(&figure.y_label)
+        .bold_line_style(GRID)
         .light_line_style(TRANSPARENT)
         .draw()
         .map_err(plot_error)?;
@@ -226,8 +264,13 @@ fn versus(root: &Area, figure: &Figure, series: &[Points]) -> Result<()> {
             RGBColor(150, 150, 150).stroke_width(1),
         )))
         .map_err(plot_error)?;
-    for (i, s) in series.iter().enumerate() {
-        let color = pick(i);
+    let looks = looks(
+        series
+            .iter()
+            .map(|_| vsr::study::report::figures::Role::Other),
+    );
+    for (i, (s, look)) in series.iter().zip(&looks).enumerate() {
+        let color = look.colour;
         let bars = s.points.iter().zip(&s.x_error).map(|(&(x, y), &e)| {
             PathElement::new(vec![(x - e, y), (x + e, y)], color.mix(0.6).stroke_width(1))
         });

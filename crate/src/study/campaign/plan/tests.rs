@@ -1,5 +1,6 @@
 //! The plan's unit tests: order, stages, continuation, fine-tuning chains.
 use super::*;
+use crate::controllers::ControllerKind;
 use crate::experiment::BrainMode;
 
 pub(crate) const CAMPAIGN: &str = r#"

@@ -1,0 +1,79 @@
+//! `codesign`: a body search around a brain, as `vsr codesign` runs it (the same settings
+//! rules, `CodesignConfig::with_module`, and the same bits for any number of threads), with
+//! the GIL released; gives the co-design run file's text, which `vsr evaluate --genome` and
+//! the page read.
+
+use pyo3::prelude::*;
+use rayon::prelude::*;
+use std::time::Instant;
+use vsr::controllers::ControllerKind;
+use vsr::experiment::{source_of, BrainMode, Codesign, CodesignConfig, Job, Timing};
+use vsr::experiment::{RunFile, TrainingTerrain};
+
+use crate::errors::to_py;
+use crate::evaluate::pool;
+
+/// The co-design run file (JSON text) of a body search; `module` is a pretrained module's run
+/// file text (for `frozen` and `finetune`).
+#[pyfunction]
+#[pyo3(signature = (brain, evals, seed, module=None, controller="attention", start=None,
+    seconds=30.0, terrain="hilly-1-10", grid=None, voxels=None, batch=None, threads=None))]
+#[allow(clippy::too_many_arguments)]
+pub fn codesign(
+    py: Python<'_>,
+    brain: &str,
+    evals: u64,
+    seed: u64,
+    module: Option<&str>,
+    controller: &str,
+    start: Option<&str>,
+    seconds: f64,
+    terrain: &str,
+    grid: Option<(usize, usize)>,
+    voxels: Option<(usize, usize)>,
+    batch: Option<usize>,
+    threads: Option<usize>,
+) -> PyResult<String> {
+    let brain: BrainMode = brain.parse().map_err(to_py)?;
+    let controller: ControllerKind = controller.parse().map_err(to_py)?;
+    let module = match module {
+        Some(text) => Some(source_of(&RunFile::from_json(text).map_err(to_py)?)),
+        None => None,
+    };
+    let mut config = CodesignConfig::with_module(brain, module, controller, start, evals, seed)
+        .map_err(to_py)?;
+    config.seconds = seconds;
+    config.terrain = TrainingTerrain::parse(terrain).map_err(to_py)?;
+    if let Some(g) = grid {
+        (config.grid_width, config.grid_height) = g;
+    }
+    if let Some(v) = voxels {
+        (config.min_voxels, config.max_voxels) = v;
+    }
+    if let Some(b) = batch {
+        config.batch = b;
+    }
+    config.validate().map_err(to_py)?;
+    let mut search = Codesign::new(config).map_err(to_py)?;
+    let pool = pool(threads)?;
+    let threads = pool
+        .as_ref()
+        .map_or_else(rayon::current_num_threads, |p| p.current_num_threads());
+    let started = Instant::now();
+    let clock = || started.elapsed().as_secs_f64();
+    let run = py.detach(|| {
+        let evaluate = |jobs: &[Job]| {
+            let all = || jobs.par_iter().map(Job::fitness).collect();
+            match &pool {
+                Some(pool) => pool.install(all),
+                None => all(),
+            }
+        };
+        search.run(evaluate, |_| Ok(()), clock)?;
+        search.run_file(Some(Timing {
+            threads,
+            wall_seconds: clock(),
+        }))
+    });
+    Ok(run.map_err(to_py)?.to_json())
+}

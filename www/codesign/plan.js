@@ -1,0 +1,52 @@
+// @ts-check
+/**
+ * The body search the panel's form describes (as `vsr codesign`'s options), or what is wrong
+ * with it, in words that name the fix.
+ */
+import { describeRun } from '../core.js';
+import { plain } from '../message.js';
+
+/** The quick body search: finishes in about a minute in Chromium on 2 workers (docs/playground.md). */
+export const QUICK = Object.freeze({ budget: 1000, seconds: 10, batch: 20 });
+/** The seed body "a 3 x 3 box". */
+const BOX = '111-111-111';
+
+/**
+ * The search the panel's form describes, or what is wrong, in words.
+ * @param {{brain: string, from: string, budget: string, seconds: string}} form  the panel's fields
+ * @param {import('./panel.js').CodesignHooks} hooks
+ * @returns {Promise<{settings: import('./protocol.js').CodesignSettings, module: import('../modules.js').Module | null,
+ *   workers: number} | {error: string}>}
+ */
+export async function planSearch(form, hooks) {
+  const brain = /** @type {'frozen' | 'finetune' | 'scratch'} */ (form.brain);
+  const from = form.from;
+  const budget = Number(form.budget);
+  const seconds = Number(form.seconds);
+  const run = hooks.run();
+  if (!Number.isInteger(budget) || budget < 1) return { error: `evaluations must be a whole number of at least 1, not "${form.budget}"` };
+  if (!(seconds > 0 && seconds <= 3600)) return { error: `the episode must last from a fraction of a second to 3600 s, not "${form.seconds}"` };
+  const seed = Number(run.seed);
+  if (!Number.isSafeInteger(seed) || seed < 0) return { error: `the seed (Run, under 3 · Give it a brain) must be a whole number from 0, not "${run.seed}"` };
+  let start;
+  if (from === 'drawing') {
+    const body = hooks.body();
+    if (!body.ok) {
+      return { error: `Your drawing is not a body the search can start from${body.message ? `: ${plain(body.message)}` : ''}. `
+        + 'Draw one piece of touching voxels, or start from the module\'s own body or a 3 x 3 box.' };
+    }
+    start = body.rows;
+  } else if (from === 'box') {
+    start = BOX;
+  }
+  const chosen = brain !== 'scratch' || from === 'module' ? await hooks.module() : null;
+  if (!chosen && brain !== 'scratch') return { error: 'choose a module first (Transplant a module, under 3 · Give it a brain): its brain is the one the bodies are searched for' };
+  if (!chosen && from === 'module') return { error: 'choose a module first (Transplant a module, under 3 · Give it a brain): the search starts from its body' };
+  if (chosen && brain === 'scratch' && from === 'module') start = (await describeRun(chosen.text)).shape; // a new brain on the module's body
+  const module = brain === 'scratch' ? null : chosen;
+  /** @type {import('./protocol.js').CodesignSettings} */
+  const settings = { brain, seed, seconds, terrain: run.terrain.trim(), budget, batch: QUICK.batch };
+  if (brain === 'scratch') settings.controller = hooks.controller();
+  if (start !== undefined) settings.start = start;
+  return { settings, module, workers: Number(run.workers) || 1 };
+}
