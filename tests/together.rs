@@ -3,7 +3,7 @@
 //! for each controller, with a last group smaller than the lanes.
 
 use vsr::controllers::ControllerKind;
-use vsr::experiment::{fitness_together, Evolution, EvolutionConfig, Job};
+use vsr::experiment::{fitness_together, Evolution, EvolutionConfig};
 use vsr::simulation::Shape;
 
 fn check(shape: &str, kind: ControllerKind, population: usize, seconds: f64) {
