@@ -2,7 +2,8 @@
 //! Every module in pretrained/ replays: the manifest (written by `vsr campaign export`)
 //! lists every run file of the folder, each loads, matches what its entry records, and its
 //! best individual re-validates on both validation sets to exactly the velocities recorded
-//! when the campaign validated it.
+//! when the campaign validated it. The same for the bodies of body searches (`bodies/`):
+//! each is its run file's best, the archive entry the manifest names.
 
 use vsr::experiment::run::RunFile;
 use vsr::experiment::validation::validate_on;
@@ -62,6 +63,58 @@ fn the_manifest_lists_every_module_file_of_the_folder() {
         if name.ends_with(".json") && name != "manifest.json" {
             assert!(listed.contains(&name), "{name} is not in the manifest");
         }
+    }
+}
+
+#[test]
+fn every_pretrained_body_replays_to_its_recorded_figures() {
+    use vsr::experiment::codesign::CodesignRun;
+    for b in &manifest().bodies {
+        let file = &b.file;
+        let run = CodesignRun::from_json(&pretrained(file)).expect("a co-design run file");
+        assert_eq!(run.config.seed, b.seed, "{file}: seed");
+        assert_eq!(run.best.shape.to_rows(), b.rows, "{file}: body");
+        assert_eq!(run.archive.len(), 1, "{file}: the archive cut to the best");
+        assert_eq!(run.archive[0].fitness, b.training_best, "{file}: fitness");
+        assert!(run.is_complete(), "{file}: a finished run");
+        assert!(b.command.contains(&format!("--seed {}", b.seed)), "{file}");
+        // The run file it came from holds the same body and brain at the entry named.
+        let source = format!("{}/{}", env!("CARGO_MANIFEST_DIR"), b.run_file);
+        if let Ok(text) = std::fs::read_to_string(&source) {
+            let whole = CodesignRun::from_json(&text).expect("its run file");
+            assert_eq!(
+                whole.archive[b.entry], run.archive[0],
+                "{file}: entry {}",
+                b.entry
+            );
+            assert_eq!(whole.best, run.best, "{file}: the run's best");
+        }
+        assert_eq!(b.validation.len(), 2, "{file}: both validation sets");
+        for (&set, recorded) in &b.validation {
+            let v = validate_on(&run.best, set, run.config.seconds).expect("validates");
+            let replayed: Vec<f64> = v.terrains.iter().map(|t| t.velocity).collect();
+            assert_eq!(replayed, recorded.velocities, "{file}: {set} velocities");
+            assert_eq!(
+                (v.median, v.mean),
+                (recorded.median, recorded.mean),
+                "{file}: {set}"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_manifest_lists_every_body_file() {
+    let listed: Vec<String> = manifest().bodies.into_iter().map(|b| b.file).collect();
+    let dir = format!("{}/pretrained/bodies", env!("CARGO_MANIFEST_DIR"));
+    for entry in std::fs::read_dir(dir).into_iter().flatten() {
+        let name = entry
+            .expect("entry")
+            .file_name()
+            .to_string_lossy()
+            .into_owned();
+        let file = format!("bodies/{name}");
+        assert!(listed.contains(&file), "{file} is not in the manifest");
     }
 }
 

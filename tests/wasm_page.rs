@@ -21,6 +21,7 @@ use wasm_common::json;
 
 const ATTENTION_RUN: &str = include_str!("../pretrained/biped-4x3-attention.json");
 const MLP_RUN: &str = include_str!("../pretrained/biped-4x3-mlp.json");
+const BODY_RUN: &str = include_str!("../pretrained/bodies/rq3-frozen.json");
 
 fn to_js(value: serde_json::Value) -> JsValue {
     let serializer = serde_wasm_bindgen::Serializer::json_compatible();
@@ -88,6 +89,26 @@ fn a_transplant_keeps_the_attention_block_and_redraws_the_rest() {
         info["evaluations"], 30100,
         "the budget of 30000 takes whole generations"
     );
+}
+
+#[wasm_bindgen_test]
+fn a_body_found_by_a_body_search_is_a_module_like_any_other() {
+    let best = vsr::experiment::best_in_file(BODY_RUN, None).expect("a co-design run file");
+    let info = json(describe_run(BODY_RUN).expect("described"));
+    assert_eq!(info["foundBySearch"], true);
+    assert_eq!(info["shape"], best.shape.to_rows());
+    assert_eq!(info["genes"], best.genome.len());
+    assert_eq!(
+        json(describe_run(ATTENTION_RUN).unwrap())["foundBySearch"],
+        false
+    );
+    // opened with its own body, it is its best; put on another body, it keeps its attention
+    let own = transplant(BODY_RUN, &best.shape.to_rows(), 1.0).expect("its own body");
+    assert_eq!(own, best.genome);
+    let biped = transplant(BODY_RUN, "biped-4x3", 1.0).expect("another body");
+    assert_eq!(biped[..32], best.genome[..32]);
+    let episode = Episode::from_run_file(BODY_RUN, "flat", "").expect("it walks");
+    drop(episode);
 }
 
 #[wasm_bindgen_test]

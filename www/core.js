@@ -50,7 +50,8 @@ export function checkShape(rows) { return ask('checkShape', rows); }
 /**
  * @param {string} runFile a run file's JSON text
  * @returns {Promise<{shape: string, controller: string, seed: number, budget: number, evaluations: number, fitness: number,
- *   genes: number, finetunedFrom: string | null, seconds: number, terrain: string}>} rejects with a
+ *   genes: number, finetunedFrom: string | null, seconds: number, terrain: string,
+ *   foundBySearch: boolean}>} rejects with a
  *   readable Error when malformed
  */
 export function describeRun(runFile) { return ask('describeRun', runFile); }

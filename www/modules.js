@@ -63,6 +63,13 @@ export class ModuleList {
         const run = /--out \S*?([^/\s]+)\.json/.exec(m.command ?? '')?.[1];
         if (run) this.studyRunOf.set(PRETRAINED_DIR + m.file, run);
       }
+      for (const b of manifest.bodies ?? []) {
+        // A body search's best body with its brain (`vsr campaign export` of a [[codesign]] group).
+        const mean = Number(b.validation?.unseen?.mean);
+        const speed = Number.isFinite(mean) ? `, ${unseenWords(mean)}` : '';
+        const label = `a body found by the body search: ${b.voxels} voxels, ${b.controller} ${b.condition === 'frozen' ? 'module frozen' : `brain (${b.condition})`}${speed}`;
+        this.select.append(new Option(label, PRETRAINED_DIR + b.file));
+      }
       this.describe();
     } catch (error) {
       this.hooks.message(`could not list the pretrained modules: ${messageOf(error)}`);
@@ -128,9 +135,10 @@ export class ModuleList {
       const info = module ? await describeRun(module.text) : null;
       if (ticket !== this.described) return; // another module was chosen meanwhile
       if (!info) { this.details.textContent = ''; return; }
-      this.details.textContent = `${info.controller}, ${info.genes} genes, ${info.finetunedFrom ? 'fine-tuned' : 'evolved'} on ${info.shape}`
+      const what = info.foundBySearch ? `body ${info.shape} found by a body search` : `${info.finetunedFrom ? 'fine-tuned' : 'evolved'} on ${info.shape}`;
+      this.details.textContent = `${info.controller}, ${info.genes} genes, ${what}`
         + `${info.finetunedFrom ? ` from a module evolved on ${info.finetunedFrom}` : ''} (seed ${info.seed}, budget ${info.budget} evaluations${info.evaluations > info.budget
-          ? ` (it took ${info.evaluations}: a run finishes its last generation)` : ''}, `
+          ? ` (it took ${info.evaluations}: a ${info.foundBySearch ? 'search finishes its last round' : 'run finishes its last generation'})` : ''}, `
         + `${info.seconds}-s episodes on ${info.terrain}; in training ${Number.isFinite(info.fitness) ? info.fitness.toFixed(2) : '–'} m/s)`;
       const lineage = lineageNote(this.studyRuns, this.studyRunOf.get(module?.key ?? '') ?? '');
       if (lineage) this.details.textContent += `. ${lineage}`;

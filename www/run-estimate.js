@@ -59,7 +59,7 @@ export class RunEstimate {
     /** The quick budget made lighter for this computer, and the core's (null: not lighter). @type {{budget: number, from: number} | null} */
     this.lighter = null;
     form.quick = (p) => this.fitQuick(p);
-    setInterval(() => this.refresh(), REFRESH_MS);
+    this.timer = setInterval(() => this.refresh(), REFRESH_MS);
   }
 
   /**
@@ -113,7 +113,7 @@ export class RunEstimate {
     const pace = Number.isFinite(last) ? 'At the pace of the last run here' : 'At this computer\'s speed, measured as the page opened';
     const lighter = this.lighter && this.form.number('budget') === this.lighter.budget
       ? ` The quick settings are lighter on this computer: ${this.lighter.budget.toLocaleString('en')} evaluations, not `
-        + `${this.lighter.from.toLocaleString('en')} (about ${durationWords(estimateSeconds({ ...run, evaluations: this.lighter.from }, this.currentPace()))} here).` : '';
+        + `${this.lighter.from.toLocaleString('en')} (about ${durationWords(estimateSeconds({ ...run, evaluations: this.lighter.from + this.form.number('population') }, this.currentPace()))} here).` : '';
     this.out.textContent = Number.isFinite(took)
       ? `${pace}, that is about ${durationWords(took)} on ${run.workers} worker${run.workers === 1 ? '' : 's'}.${lighter}`
       : '';

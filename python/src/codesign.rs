@@ -7,8 +7,8 @@ use pyo3::prelude::*;
 use rayon::prelude::*;
 use std::time::Instant;
 use vsr::controllers::ControllerKind;
-use vsr::experiment::{source_of, BrainMode, Codesign, CodesignConfig, Job, Timing};
-use vsr::experiment::{RunFile, TrainingTerrain};
+use vsr::experiment::codesign::source_in_file;
+use vsr::experiment::{BrainMode, Codesign, CodesignConfig, Job, Timing, TrainingTerrain};
 
 use crate::errors::to_py;
 use crate::evaluate::pool;
@@ -37,7 +37,7 @@ pub fn codesign(
     let brain: BrainMode = brain.parse().map_err(to_py)?;
     let controller: ControllerKind = controller.parse().map_err(to_py)?;
     let module = match module {
-        Some(text) => Some(source_of(&RunFile::from_json(text).map_err(to_py)?)),
+        Some(text) => Some(source_in_file(text).map_err(to_py)?),
         None => None,
     };
     let mut config = CodesignConfig::with_module(brain, module, controller, start, evals, seed)

@@ -228,3 +228,18 @@ test('benchmark: the quick body search on 2 workers (VSR_BENCH=1)', { skip: !pro
   await screenshot(page, 'codesign-quick.png');
   await page.context().close();
 });
+
+test('a body the study\'s body search found is listed with the modules, described as found by a search, and walks with its own body', async () => {
+  const manifest = JSON.parse(await readFile(path.join(ROOT, 'pretrained', 'manifest.json'), 'utf8'));
+  const body = manifest.bodies[0];
+  const key = `pretrained/${body.file}`;
+  const { page, problems } = await openPage(env.browser, env.url);
+  await page.locator(`#module option[value="${key}"]`).waitFor({ state: 'attached' });
+  assert.match(String(await page.locator(`#module option[value="${key}"]`).textContent()), new RegExp(`^a body found by the body search: ${body.voxels} voxels`));
+  await byTestId(page, 'pretrained').selectOption(key);
+  await waitForText(page, 'module-details', new RegExp(`body ${body.rows} found by a body search`));
+  await page.locator('#module-open').click();
+  await waitForText(page, 'status', new RegExp(`^${body.voxels} voxels, attention$`));
+  assert.deepEqual(problems, []);
+  await page.context().close();
+});

@@ -22,6 +22,7 @@ import { mkdtemp, readFile, rm } from 'node:fs/promises';
 import os from 'node:os';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
+import { RunEstimate } from '../../www/run-estimate.js';
 import { timeLeft } from '../../www/run-progress.js';
 import { TINY, evolveInPage, evolveNative, statistics } from './evolution.mjs';
 import { BIN, byTestId, figure, openPage, screenshot, start, waitForFigure, waitForText } from './harness.mjs';
@@ -158,6 +159,26 @@ test('the time a run has left is said in seconds, then minutes', () => {
   assert.equal(timeLeft(12.2), ' · about 13 s to go');
   assert.equal(timeLeft(125), ' · about 2 min 5 s to go');
   assert.equal(timeLeft(1500), ' · about 25 min to go');
+});
+
+test('the quick settings are lighter where this computer would take over 90 s, and the estimate says so', () => {
+  const QUICK = { population: 20, seconds: 10, budget: 2000 };
+  /** @type {Record<string, number>} */ const form = { workers: 2, seconds: 10, budget: 2000, population: 20 };
+  const fake = { quick: (/** @type {any} */ p) => p, number: (/** @type {string} */ k) => form[k], planned: 2020, untouched: true,
+    inputs: { budget: { disabled: false } }, preset: (/** @type {any} */ p) => { form.budget = p.budget; } };
+  const out = /** @type {any} */ ({ dataset: {}, textContent: '', hidden: true });
+  let pace = NaN; // voxel-seconds per second per worker: 2,020 evaluations of 10 voxels for 10 s on 2 workers take 101,000 / pace s
+  const estimate = new RunEstimate(out, /** @type {any} */ (fake), () => pace, () => '1111-1111-1001', QUICK);
+  clearInterval(estimate.timer);
+  assert.deepEqual(fake.quick(QUICK), QUICK, 'no speed known: the core\'s quick settings');
+  pace = 101_000 / 60; // 60 s
+  assert.deepEqual(fake.quick(QUICK), QUICK, 'about a minute: as they are');
+  pace = 101_000 / 300; // 5 min: 1,000 would take about 2.5 min, 500 about 76 s, 200 about 33 s
+  fake.preset(fake.quick(QUICK));
+  assert.equal(form.budget, 200, 'the largest lighter budget that takes at most 70 s');
+  fake.planned = 220;
+  estimate.refresh();
+  assert.match(out.textContent, /^At the pace of the last run here, that is about 33 s on 2 workers\. The quick settings are lighter on this computer: 200 evaluations, not 2,000 \(about 5 min 0 s here\)\.$/);
 });
 
 test('Pause holds, Step runs one generation, Stop ends the run and keeps its run file', async () => {

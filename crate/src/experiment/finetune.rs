@@ -24,8 +24,7 @@ use rand::Rng;
 /// (`initial_population`): its 32 attention genes kept, the downstream genes re-drawn for
 /// the new body (unchanged on its own body). An MLP or MLP-Comm module has no
 /// body-independent part: it keeps its own body and is refused on another.
-pub fn transplant(run: &RunFile, shape: Shape, seed: u64) -> Result<Vec<f32>> {
-    let source = source_of(run);
+pub fn transplant(source: SourceRun, shape: Shape, seed: u64) -> Result<Vec<f32>> {
     let attention = matches!(
         source.controller,
         ControllerKind::Attention | ControllerKind::SlowAttention

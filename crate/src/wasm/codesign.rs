@@ -9,8 +9,10 @@ use wasm_bindgen::prelude::{wasm_bindgen, JsError, JsValue};
 
 use super::page::{seed_from, to_js};
 use crate::controllers::ControllerKind;
-use crate::experiment::codesign::{BrainMode, Codesign as CoreCodesign, CodesignConfig};
-use crate::experiment::{source_of, Job, RunFile, Timing, TrainingTerrain};
+use crate::experiment::codesign::{
+    source_in_file, BrainMode, Codesign as CoreCodesign, CodesignConfig,
+};
+use crate::experiment::{Job, Timing, TrainingTerrain};
 
 /// A body search's settings as the page sends them: what `vsr codesign` takes as options.
 #[derive(Deserialize)]
@@ -79,7 +81,7 @@ impl Codesign {
             .map_err(|e| JsError::new(&format!("bad body-search settings: {e}")))?;
         let brain: BrainMode = s.brain.parse()?;
         let module = match module {
-            Some(text) => Some(source_of(&RunFile::from_json(&text)?)),
+            Some(text) => Some(source_in_file(&text)?),
             None => None,
         };
         let controller = s

@@ -9,8 +9,8 @@ use super::episode::GAIT_NAME;
 use super::Episode;
 use crate::controllers::ControllerKind;
 use crate::experiment::evaluate::replay;
+use crate::experiment::{best_in_file, Episode as CoreEpisode, Policy};
 use crate::experiment::{check_start_offset, freezable_policy, PhaseGait};
-use crate::experiment::{Episode as CoreEpisode, Policy, RunFile};
 use crate::simulation::constants::PLACEMENT_LEFT_X;
 use crate::simulation::{Shape, Terrain};
 
@@ -36,15 +36,15 @@ impl Episode {
     /// unknown terrain or another shape throws an `Error` whose message says what is wrong.
     #[wasm_bindgen(js_name = fromRunFile)]
     pub fn from_run_file(text: &str, terrain: &str, shape: &str) -> Result<Episode, JsError> {
-        let run = RunFile::from_json(text)?;
+        let best = best_in_file(text, None)?;
         let terrain = Terrain::parse(terrain)?;
         let wanted = match shape.trim() {
             "" => None,
             s => Some(Shape::parse(s)?),
         };
-        let inner = replay(&run.best, wanted.as_ref(), terrain, Some(NOISE_SEED))?;
-        let controller = run.best.controller.to_string();
-        Ok(Episode::wrap(inner, run.best.shape, controller))
+        let inner = replay(&best, wanted.as_ref(), terrain, Some(NOISE_SEED))?;
+        let controller = best.controller.to_string();
+        Ok(Episode::wrap(inner, best.shape, controller))
     }
 
     /// Builds the episode of a genome on a drawn body: a `controller` (`attention`, `mlp`,

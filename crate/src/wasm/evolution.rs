@@ -14,7 +14,8 @@ use wasm_bindgen::prelude::{wasm_bindgen, JsError, JsValue};
 use super::page::{seed_from, to_js};
 use crate::controllers::ControllerKind;
 use crate::experiment::{
-    source_of, Evolution as CoreEvolution, EvolutionConfig, Job, RunFile, Timing, TrainingTerrain,
+    codesign::source_in_file, Evolution as CoreEvolution, EvolutionConfig, Job, Timing,
+    TrainingTerrain,
 };
 use crate::simulation::Shape;
 
@@ -73,7 +74,7 @@ impl Evolution {
     /// `settings.shape` (the controller is the source's).
     pub fn finetune(run_file: &str, settings: JsValue) -> Result<Evolution, JsError> {
         let s = Settings::read(settings)?;
-        let source = source_of(&RunFile::from_json(run_file)?);
+        let source = source_in_file(run_file)?;
         let shape = Shape::parse(&s.shape)?;
         let config = EvolutionConfig::finetune(source, shape, s.budget, seed_from(s.seed)?);
         Evolution::start(s.apply(config)?)

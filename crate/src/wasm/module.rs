@@ -5,8 +5,9 @@ use serde::Serialize;
 use wasm_bindgen::prelude::{wasm_bindgen, JsError, JsValue};
 
 use super::page::to_js;
+use crate::experiment::codesign::is_codesign;
 use crate::experiment::evolution::planned_evaluations;
-use crate::experiment::RunFile;
+use crate::experiment::{best_in_file, CodesignRun, RunFile};
 
 #[derive(Serialize)]
 #[serde(rename_all = "camelCase")]
@@ -21,15 +22,20 @@ struct ModuleInfo {
     finetuned_from: Option<String>,
     seconds: f64,
     terrain: String,
+    found_by_search: bool,
 }
 
 /// Reads a run file (its JSON) and describes its best individual: `{shape (rows),
 /// controller, seed, budget, evaluations (what that budget took: whole generations),
 /// fitness, genes, finetunedFrom (source rows or null), seconds
 /// (its training episodes' length), terrain (its training terrain: a family such as
-/// hilly-1-10, or a name)}`. A malformed file throws an `Error` that says what is wrong.
+/// hilly-1-10, or a name), foundBySearch (a co-design run file: its best body, found by a
+/// body search)}`. A malformed file throws an `Error` that says what is wrong.
 #[wasm_bindgen(js_name = describeRun)]
 pub fn describe_run(run_file: &str) -> Result<JsValue, JsError> {
+    if is_codesign(run_file) {
+        return to_js(&describe_codesign(&CodesignRun::from_json(run_file)?));
+    }
     let run = RunFile::from_json(run_file)?;
     to_js(&ModuleInfo {
         shape: run.best.shape.to_rows(),
@@ -45,11 +51,30 @@ pub fn describe_run(run_file: &str) -> Result<JsValue, JsError> {
         finetuned_from: run.config.source.as_ref().map(|s| s.shape.to_rows()),
         seconds: run.config.seconds,
         terrain: run.config.terrain.clone().into(),
+        found_by_search: false,
     })
 }
 
-/// The best genome of `run_file` itself (its own body).
+/// A body search's best body with its brain, described as a module (the page's list says
+/// which search found it).
+fn describe_codesign(run: &CodesignRun) -> ModuleInfo {
+    ModuleInfo {
+        shape: run.best.shape.to_rows(),
+        controller: run.best.controller.to_string(),
+        seed: run.config.seed,
+        budget: run.config.budget_evals,
+        evaluations: run.evaluations,
+        fitness: run.best.fitness,
+        genes: run.best.genome.len(),
+        finetuned_from: None,
+        seconds: run.config.seconds,
+        terrain: run.config.terrain.clone().into(),
+        found_by_search: true,
+    }
+}
+
+/// The best genome of `run_file` itself (its own body; a co-design run file's best body).
 #[wasm_bindgen(js_name = runGenome)]
 pub fn run_genome(run_file: &str) -> Result<Vec<f32>, JsError> {
-    Ok(RunFile::from_json(run_file)?.best.genome)
+    Ok(best_in_file(run_file, None)?.genome)
 }

@@ -9,7 +9,7 @@ use wasm_bindgen::prelude::{wasm_bindgen, JsError, JsValue};
 use crate::controllers::{remap_genome, ControllerKind};
 use crate::experiment::playground::{self, PAGE_CONTROLLERS};
 use crate::experiment::seeds::{evaluation_seed, Purpose};
-use crate::experiment::{self, PhaseGait, RunFile, TrainingTerrain};
+use crate::experiment::{self, PhaseGait, TrainingTerrain};
 use crate::simulation::{Shape, Terrain};
 
 /// The page's defaults, from the core (`experiment::playground`): `{grid: {width, height},
@@ -65,9 +65,8 @@ pub fn check_shape(rows: &str) -> Result<JsValue, JsError> {
 /// the best individual of the run `run_file` put on the body `rows`.
 #[wasm_bindgen]
 pub fn transplant(run_file: &str, rows: &str, seed: f64) -> Result<Vec<f32>, JsError> {
-    let run = RunFile::from_json(run_file)?;
     Ok(experiment::transplant(
-        &run,
+        experiment::codesign::source_in_file(run_file)?,
         Shape::parse(rows)?,
         seed_from(seed)?,
     )?)

@@ -9,7 +9,7 @@ use rayon::prelude::*;
 use vsr::controllers::ControllerKind;
 use vsr::experiment::codesign::{DEFAULT_GRID, DEFAULT_VOXELS};
 use vsr::experiment::{
-    source_of, BrainMode, Codesign, CodesignConfig, CodesignRun, Job, Timing, TrainingTerrain,
+    BrainMode, Codesign, CodesignConfig, CodesignRun, Job, Timing, TrainingTerrain,
 };
 use vsr::{Error, Result};
 
@@ -76,7 +76,7 @@ fn pair(flag: &str, text: &str, sep: char, example: &str) -> Result<(usize, usiz
 
 fn config_of(args: &Args) -> Result<CodesignConfig> {
     let module = match &args.from {
-        Some(path) => Some(source_of(&crate::runfile::load(path)?)),
+        Some(path) => Some(crate::runfile::load_source(path)?),
         None => None,
     };
     let mut config = CodesignConfig::with_module(

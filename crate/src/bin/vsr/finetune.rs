@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use vsr::experiment::{source_of, EvolutionConfig};
+use vsr::experiment::EvolutionConfig;
 use vsr::simulation::Shape;
 
 use crate::args::RunOptions;
@@ -24,7 +24,7 @@ pub struct Args {
 
 /// Runs the command.
 pub fn run(args: Args) -> vsr::Result<()> {
-    let source = source_of(&crate::runfile::load(&args.from)?);
+    let source = crate::runfile::load_source(&args.from)?;
     let shape = Shape::parse(&args.shape)?;
     let o = &args.options;
     let config = EvolutionConfig::finetune(source, shape, o.evals, o.seed);

@@ -16,6 +16,14 @@ pub fn load(path: &Path) -> Result<RunFile> {
     RunFile::from_json(&text).map_err(|e| in_file(path, e))
 }
 
+/// The module in a run file or a co-design run file (its best body with its brain), to
+/// fine-tune or to search bodies around, naming the file in every error.
+pub fn load_source(path: &Path) -> Result<vsr::experiment::SourceRun> {
+    let text = fs::read_to_string(path)
+        .map_err(|e| Error::Io(format!("cannot read run file {}: {e}", path.display())))?;
+    vsr::experiment::codesign::source_in_file(&text).map_err(|e| in_file(path, e))
+}
+
 /// The body with its brain in a run file or a co-design run file (its best, or archive entry
 /// `entry` of a co-design file), naming the file in every error.
 pub fn load_best(path: &Path, entry: Option<usize>) -> Result<vsr::experiment::Best> {

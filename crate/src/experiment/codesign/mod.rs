@@ -21,16 +21,48 @@ pub use file::{CodesignRecord, CodesignRun, Entry, CODESIGN_FORMAT};
 pub use search::Codesign;
 
 use crate::error::Result;
+use crate::experiment::config::SourceRun;
+use crate::experiment::finetune::source_of;
 use crate::experiment::run::{Best, RunFile};
+
+/// The module a run file holds, to transplant or fine-tune: a run file's best, or a co-design
+/// run file's best body with its brain (its seed and budget the search's).
+pub fn source_in_file(text: &str) -> Result<SourceRun> {
+    if !is_codesign(text) {
+        return Ok(source_of(&RunFile::from_json(text)?));
+    }
+    let run = CodesignRun::from_json(text)?;
+    let Best {
+        controller,
+        shape,
+        genome,
+        fitness,
+        ..
+    } = run.best;
+    Ok(SourceRun {
+        shape,
+        controller,
+        seed: run.config.seed,
+        budget_evals: run.config.budget_evals,
+        fitness,
+        genome,
+    })
+}
+
+/// True when `text` says it is a co-design run file (its `format`), whatever else it holds.
+pub fn is_codesign(text: &str) -> bool {
+    serde_json::from_str::<serde_json::Value>(text)
+        .ok()
+        .and_then(|v| v.get("format").and_then(|f| f.as_str()).map(String::from))
+        .as_deref()
+        == Some(CODESIGN_FORMAT)
+}
 
 /// The body with its brain that a run file names: a run file's `best`, or a co-design run
 /// file's best (or archive entry `entry`, in cell order). `entry` on a plain run file is
 /// refused: it has one body.
 pub fn best_in_file(text: &str, entry: Option<usize>) -> Result<Best> {
-    let format = serde_json::from_str::<serde_json::Value>(text)
-        .ok()
-        .and_then(|v| v.get("format").and_then(|f| f.as_str()).map(String::from));
-    if format.as_deref() == Some(CODESIGN_FORMAT) {
+    if is_codesign(text) {
         let run = CodesignRun::from_json(text)?;
         return match entry {
             Some(i) => run.entry_best(i),

@@ -5,7 +5,10 @@
 //! Choice: among the finished runs of a category (every seed and budget), the one whose
 //! best has the highest median velocity on the `paper` validation set (ties: the first in
 //! plan order). The `unseen` set is not used to choose, so its figure stays an unbiased
-//! estimate of how the chosen module walks on terrains it has never met.
+//! estimate of how the chosen module walks on terrains it has never met. A body-search
+//! campaign's best bodies with their brains go beside them (`bodies`).
+
+pub mod bodies;
 
 use super::plan::RunSpec;
 use super::results::{Results, RunData};
@@ -89,6 +92,9 @@ pub struct Manifest {
     pub selection: String,
     /// The modules, in plan order of their categories.
     pub modules: Vec<Entry>,
+    /// The best bodies of body searches with their brains (`bodies/`), in campaign order.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub bodies: Vec<bodies::BodyEntry>,
 }
 
 /// A category of modules: shape, controller, fine-tuning source.
@@ -209,6 +215,7 @@ impl Manifest {
                         unseen set is not used to choose"
                 .to_string(),
             modules,
+            bodies: Vec::new(),
         }
     }
 

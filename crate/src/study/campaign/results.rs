@@ -1,13 +1,13 @@
 //! What a campaign has produced so far: for every planned run, its run file, validations
-//! and ablation when they exist. The command line reads the files; this module only holds
-//! them and says what is missing.
+//! and ablation when they exist, and the same for every planned body search. The command
+//! line reads the files; this module only holds them and says what is missing.
 
 use super::file::Campaign;
 use super::plan::{earlier_runs, known_runs, runs, RunSpec};
-use crate::experiment::{AblationPoint, RunFile, Validation, ValidationSet};
+use crate::experiment::{AblationPoint, CodesignRun, RunFile, Validation, ValidationSet};
 use crate::study::fidelity::Fidelity;
 use std::collections::BTreeMap;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// The outputs of one run found on disk.
 #[derive(Debug, Clone, Default)]
@@ -60,6 +60,56 @@ impl RunData {
     }
 }
 
+/// One planned body search: a `[[codesign]]` group's condition and seed.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CodesignSpec {
+    /// The group's name.
+    pub group: String,
+    /// The condition (`frozen`, `finetune`, `scratch-CONTROLLER`).
+    pub condition: String,
+    /// The budget.
+    pub evals: u64,
+    /// The seed.
+    pub seed: u64,
+}
+
+impl CodesignSpec {
+    /// `GROUP-CONDITION-EVALS-sSEED`, as `CodesignGroup::stem`.
+    pub fn stem(&self) -> String {
+        format!(
+            "{}-{}-{}-s{}",
+            self.group, self.condition, self.evals, self.seed
+        )
+    }
+
+    /// Its run file under the campaign's output folder `out`.
+    pub fn run_path(&self, out: &Path) -> PathBuf {
+        out.join("codesign").join(format!("{}.json", self.stem()))
+    }
+
+    /// Its best body's validation on `set` under `out`.
+    pub fn validation_path(&self, out: &Path, set: ValidationSet) -> PathBuf {
+        out.join("validation")
+            .join(format!("{}.{set}.json", self.stem()))
+    }
+}
+
+/// The outputs of one body search found on disk.
+#[derive(Debug, Clone, Default)]
+pub struct CodesignData {
+    /// The finished run file, if it exists (a run in flight has only its checkpoint).
+    pub run: Option<CodesignRun>,
+    /// Its best body's validations found, by set.
+    pub validation: BTreeMap<ValidationSet, Validation>,
+}
+
+impl CodesignData {
+    /// The best body's mean validation velocity on `set`, if known.
+    pub fn validation_mean(&self, set: ValidationSet) -> Option<f64> {
+        self.validation.get(&set).map(|v| v.mean)
+    }
+}
+
 /// Every run's data, and the expected files that do not exist.
 #[derive(Debug, Clone)]
 pub struct Results {
@@ -73,6 +123,8 @@ pub struct Results {
     /// Data of the runs of the non-inferiority tests' known seeds (not planned: never listed
     /// as missing, never pooled with the planned runs).
     pub known: Vec<(RunSpec, RunData)>,
+    /// Data of every planned body search, in campaign order (group, condition, seed).
+    pub codesign: Vec<(CodesignSpec, CodesignData)>,
     /// Planned output files not found.
     pub missing: Vec<PathBuf>,
     /// The fidelity measurements found, with their reference files, in campaign order.
@@ -105,11 +157,26 @@ impl Results {
             .into_iter()
             .map(|r| (r, RunData::default()))
             .collect();
+        let mut codesign = Vec::new();
+        for g in &campaign.codesign {
+            for condition in &g.conditions {
+                for &seed in g.seeds.as_deref().unwrap_or(&campaign.seeds) {
+                    let spec = CodesignSpec {
+                        group: g.name.clone(),
+                        condition: condition.clone(),
+                        evals: g.evals,
+                        seed,
+                    };
+                    codesign.push((spec, CodesignData::default()));
+                }
+            }
+        }
         Results {
             campaign,
             data,
             earlier,
             known,
+            codesign,
             missing: Vec::new(),
             fidelity: Vec::new(),
         }

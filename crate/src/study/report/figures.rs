@@ -85,6 +85,28 @@ pub enum Plot {
     Boxes(Vec<BoxData>),
     /// Points of y against x, with the line y = x (ours against the reference).
     Versus(Vec<Points>),
+    /// Bodies drawn as voxel grids, one row of pictures per label (the best bodies of each
+    /// condition of a body search).
+    Bodies(Vec<BodyRow>),
+}
+
+/// A row of body pictures.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BodyRow {
+    /// The row's label (e.g. a condition).
+    pub label: String,
+    /// Its pictures, left to right.
+    pub bodies: Vec<BodyPicture>,
+}
+
+/// One body to draw: its rows notation (top row first, `1` a voxel; empty: no body, only
+/// the caption) and a caption under it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BodyPicture {
+    /// The body in rows notation, e.g. `1111-1001`; empty when there is none yet.
+    pub rows: String,
+    /// The caption.
+    pub caption: String,
 }
 
 /// A vertical line at `x` with a short label beside it (e.g. a shorter budget in a longer

@@ -16,7 +16,8 @@
 //! ablation; `fig7-GROUP-SOURCE-to-TARGET.svg` fine-tuning against from scratch over the
 //! evaluations on the target shape (`...-total.svg`: after the source's evaluations);
 //! `fig8-GROUP-SHAPE-EVALS.svg` alpha and eta of slow attention; `fidelity-NAME.svg` our gait
-//! ensembles against the reference file NAME's.
+//! ensembles against the reference file NAME's; `codesign-GROUP-*.svg` a body search's
+//! curves, boxes and best bodies (`codesign`).
 
 use crate::controllers::ControllerKind;
 use crate::study::campaign::file::EvolveGroup;
@@ -25,6 +26,7 @@ use figures::{band, best_series, box_of, rate_series, Figure, Plot};
 use std::fmt::Write;
 
 mod ablation;
+mod codesign;
 mod earlier;
 mod families;
 mod fidelity;
@@ -82,6 +84,7 @@ pub fn report(results: &Results) -> Report {
             finetune_section(results, g, pair, &mine, &holm, &mut r);
         }
     }
+    codesign::codesign_sections(results, &mut r);
     fidelity::fidelity_section(results, &mut r);
     r
 }
@@ -93,7 +96,10 @@ fn missing_section(results: &Results, md: &mut String) {
         .map(|(_, d)| d)
         .filter(|d| d.run.is_some())
         .count();
-    let _ = writeln!(md, "Run files found: {found} of {}.", results.data.len());
+    let bodies = results.codesign.iter().filter(|(_, d)| d.run.is_some());
+    let found = found + bodies.count();
+    let planned = results.data.len() + results.codesign.len();
+    let _ = writeln!(md, "Run files found: {found} of {planned}.");
     if results.missing.is_empty() {
         md.push_str("Every planned output exists.\n\n");
         return;

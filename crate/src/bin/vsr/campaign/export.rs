@@ -3,11 +3,14 @@
 //! figures a replay must reproduce, and a README table). A category without a finished,
 //! validated run keeps what the previous export gave it (nothing is lost by exporting a
 //! campaign that has barely started); other files the previous manifest listed are removed.
+//! A campaign that plans body searches also exports their best bodies (`export_bodies`); one
+//! that plans no module run (only body searches) leaves the modules as they are.
 
 use std::fs;
 use std::path::{Path, PathBuf};
 
 use vsr::controllers::ControllerKind;
+use vsr::study::campaign::export::bodies::BodyEntry;
 use vsr::study::campaign::export::{choose, entry, file_name, Entry, Manifest};
 use vsr::study::campaign::plan;
 use vsr::{Error, Result};
@@ -46,9 +49,15 @@ pub fn run(args: Args) -> Result<()> {
     let Previous {
         listed,
         entries: previous,
+        bodies,
     } = previous_manifest(&args.to)?;
     let mut modules = Vec::new();
     let mut pending = Vec::new();
+    let plans_modules = !results.data.is_empty();
+    if !plans_modules {
+        let kept = previous.iter().filter(|e| args.to.join(&e.file).exists());
+        modules.extend(kept.cloned());
+    }
     for (category, choice) in choose(&results, &args.controllers) {
         let name = file_name(&category);
         let Some(choice) = choice else {
@@ -90,10 +99,21 @@ pub fn run(args: Args) -> Result<()> {
     // Modules of controllers this export was not asked about stay as they are.
     let others = previous
         .iter()
-        .filter(|e| !args.controllers.contains(&e.controller));
+        .filter(|e| plans_modules && !args.controllers.contains(&e.controller));
     modules.extend(others.filter(|e| args.to.join(&e.file).exists()).cloned());
-    let manifest = Manifest::new(modules);
-    remove_unlisted(&args.to, &listed, &manifest)?;
+    let exported = super::export_bodies::export(
+        &results,
+        (&jobs, &out),
+        &args.to,
+        &bodies,
+        (&campaign_file, &version),
+    )?;
+    pending.extend(exported.pending);
+    let mut manifest = Manifest::new(modules);
+    manifest.bodies = exported.bodies;
+    if plans_modules {
+        remove_unlisted(&args.to, &listed, &manifest)?;
+    }
     let json = serde_json::to_string_pretty(&manifest)
         .map_err(|e| Error::Io(format!("cannot encode the manifest: {e}")))?;
     crate::atomic::write(
@@ -104,8 +124,9 @@ pub fn run(args: Args) -> Result<()> {
     let readme = readme(&manifest, &pending, &campaign_file, &args.to);
     crate::atomic::write(&args.to.join("README.md"), readme.as_bytes(), "README")?;
     println!(
-        "{} modules in {}",
+        "{} modules and {} bodies in {}",
         manifest.modules.len(),
+        manifest.bodies.len(),
         args.to.join("manifest.json").display()
     );
     Ok(())
@@ -115,6 +136,7 @@ pub fn run(args: Args) -> Result<()> {
 struct Previous {
     listed: Vec<String>,
     entries: Vec<Entry>,
+    bodies: Vec<BodyEntry>,
 }
 
 /// The folder's previous manifest (nothing if there is none). One that is not JSON with a
@@ -127,6 +149,7 @@ fn previous_manifest(dir: &Path) -> Result<Previous> {
         return Ok(Previous {
             listed: Vec::new(),
             entries: Vec::new(),
+            bodies: Vec::new(),
         });
     }
     let bad = |why: String| {
@@ -150,18 +173,22 @@ fn previous_manifest(dir: &Path) -> Result<Previous> {
                 .ok_or_else(|| bad(format!("names no file for module {}", i + 1)))
         })
         .collect::<Result<Vec<String>>>()?;
-    let entries = match serde_json::from_value::<Manifest>(value) {
-        Ok(manifest) => manifest.modules,
+    let (entries, bodies) = match serde_json::from_value::<Manifest>(value) {
+        Ok(manifest) => (manifest.modules, manifest.bodies),
         Err(e) => {
             eprintln!(
                 "vsr: warning: {} is not a manifest of this format ({e}); \
                  its modules are not kept unless this campaign chooses them again",
                 path.display()
             );
-            Vec::new()
+            (Vec::new(), Vec::new())
         }
     };
-    Ok(Previous { listed, entries })
+    Ok(Previous {
+        listed,
+        entries,
+        bodies,
+    })
 }
 
 /// Removes the module files the folder's previous manifest listed and `manifest` does not;
@@ -208,22 +235,33 @@ fn readme(manifest: &Manifest, pending: &[String], campaign: &str, dir: &Path) -
     let not_yet = match pending {
         [] => String::new(),
         names => format!(
-            "\nNot yet (no run of the campaign finished and validated): {}.\n",
+            "\nNot yet (the campaign's runs of these not all finished and validated): {}.\n",
             names.join(", ")
         ),
     };
+    // Every campaign the folder's files came from, this one first (as the last run).
+    let mut campaigns = vec![campaign.to_string()];
+    let named = manifest.modules.iter().map(|m| &m.campaign);
+    for c in named.chain(manifest.bodies.iter().map(|b| &b.campaign)) {
+        if !campaigns.contains(c) {
+            campaigns.push(c.clone());
+        }
+    }
+    let campaign = campaigns.join(", ");
     format!(
         "# Pretrained controllers\n\n\
-         Written by `vsr campaign export {campaign} --to {dir}` (do not edit by hand). \
+         Written by `vsr campaign export CAMPAIGN --to {dir}` with CAMPAIGN = {campaign} (do not edit by \
+         hand). \
          Choice: {selection}. Each file is the run file `vsr evolve` or `vsr finetune` wrote; \
          `manifest.json` records the exact command, seed, budget, the campaign, the code \
          version, the training fitness and the velocities `vsr validate` gives on both \
          validation sets (`paper`: hilly-1-10-0..9, also in the training pool; `unseen`: \
          hilly-1-10-10000..10009). `tests/pretrained.rs` replays every module to exactly \
-         those velocities. The page lists them (Modules).\n\n{table}{not_yet}",
+         those velocities. The page lists them (Modules).\n\n{table}{bodies}{not_yet}",
         dir = dir.display(),
         selection = manifest.selection,
-        table = manifest.table()
+        table = manifest.table(),
+        bodies = super::export_bodies::readme_part(manifest)
     )
 }
 

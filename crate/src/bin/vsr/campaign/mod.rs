@@ -4,8 +4,10 @@
 //! resolved relative to the campaign file, or under `--out-dir` (`target.rs`). One file per
 //! subcommand; `command.rs` turns a planned job into a `vsr` command line.
 
+mod bodies_svg;
 pub mod command;
 mod export;
+mod export_bodies;
 mod merge;
 mod palette;
 mod plan;

@@ -31,6 +31,9 @@ fn key(plot: &Plot) -> Option<&'static str> {
 
 /// The SVG text of `figure`.
 pub fn draw(figure: &Figure) -> Result<String> {
+    if let Plot::Bodies(rows) = &figure.plot {
+        return Ok(super::bodies_svg::draw(figure, rows));
+    }
     let mut svg = String::new();
     {
         let key = key(&figure.plot).map(str::to_string);
@@ -50,6 +53,7 @@ pub fn draw(figure: &Figure) -> Result<String> {
             Plot::Lines { bands, marks } => lines(&root, figure, bands, marks)?,
             Plot::Boxes(boxes) => boxes_plot(&root, figure, boxes)?,
             Plot::Versus(series) => versus(&root, figure, series)?,
+            Plot::Bodies(_) => unreachable!("drawn above"),
         }
         root.present().map_err(plot_error)?;
     }

@@ -5,7 +5,8 @@
 use std::fs;
 use std::path::{Path, PathBuf};
 
-use vsr::experiment::{RunFile, ValidationSet};
+use vsr::experiment::{CodesignRun, RunFile, ValidationSet};
+use vsr::study::campaign::results::CodesignSpec;
 use vsr::study::campaign::{fidelity_path, plan, Campaign, Job, Results};
 use vsr::study::fidelity::Fidelity;
 use vsr::{Error, Result};
@@ -86,7 +87,7 @@ pub fn create_folders(out: &Path, jobs: &[Job]) -> Result<()> {
 }
 
 /// Reads every planned output that exists, the others listed as missing, and the files of
-/// the runs read at earlier budgets or known seeds that exist.
+/// the runs read at earlier budgets or known seeds that exist, and the body searches'.
 pub fn load_results(campaign: Campaign, out: &Path) -> Result<Results> {
     let jobs = plan(&campaign, out);
     let mut results = Results::new(campaign);
@@ -122,7 +123,47 @@ pub fn load_results(campaign: Campaign, out: &Path) -> Result<Results> {
             results.fidelity.push((reference, f));
         }
     }
+    for i in 0..results.codesign.len() {
+        let spec = results.codesign[i].0.clone();
+        let path = spec.run_path(out);
+        let run = read_json(&path, CodesignRun::from_json)?;
+        if let Some(run) = &run {
+            check_codesign(&spec, run)
+                .map_err(|why| Error::Input(format!("{}: {why}", path.display())))?;
+        }
+        let data = &mut results.codesign[i].1;
+        data.run = run;
+        for set in ValidationSet::ALL {
+            if let Some(v) = read_json(&spec.validation_path(out, set), json)? {
+                data.validation.insert(set, v);
+            }
+        }
+    }
     Ok(results)
+}
+
+/// Whether a body search's run file is the finished run its name plans: its brain,
+/// controller, seed and budget, and the budget reached.
+fn check_codesign(spec: &CodesignSpec, run: &CodesignRun) -> std::result::Result<(), String> {
+    let (brain, kind) =
+        vsr::study::campaign::codesign::condition(&spec.condition).map_err(|e| e.to_string())?;
+    let c = &run.config;
+    let kind = kind.unwrap_or(vsr::controllers::ControllerKind::Attention);
+    if (c.brain, c.controller, c.seed, c.budget_evals) != (brain, kind, spec.seed, spec.evals) {
+        return Err(format!(
+            "this is a {} {} search with seed {} and budget {}, not the planned {} with seed {} \
+             and budget {}",
+            c.brain, c.controller, c.seed, c.budget_evals, spec.condition, spec.seed, spec.evals
+        ));
+    }
+    if !run.is_complete() {
+        return Err(format!(
+            "the search stopped at {} of {} evaluations; a run in flight writes only its \
+             checkpoint, so this file is not a finished run",
+            run.evaluations, c.budget_evals
+        ));
+    }
+    Ok(())
 }
 
 fn json<T: serde::de::DeserializeOwned>(text: &str) -> Result<T> {
