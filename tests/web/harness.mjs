@@ -63,7 +63,11 @@ export async function openBare(browser, url, options = {}) {
   const problems = [];
   page.on('console', (msg) => { if (msg.type() === 'error') problems.push(`console: ${msg.text()}`); });
   page.on('pageerror', (error) => problems.push(`page error: ${error.message}`));
-  page.on('requestfailed', (req) => problems.push(`request failed: ${req.url()}`));
+  // A request the page itself cancelled (a reload, a worker it ended) is aborted, not failed.
+  page.on('requestfailed', (req) => {
+    const why = req.failure()?.errorText ?? '';
+    if (why !== 'net::ERR_ABORTED') problems.push(`request failed: ${req.url()} (${why})`);
+  });
   page.on('worker', (worker) => worker.on('console', (msg) => {
     if (msg.type() === 'error') problems.push(`worker console: ${msg.text()}`);
   }));
