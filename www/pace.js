@@ -2,7 +2,7 @@
 /**
  * This computer's speed at a run's work, measured in the first seconds the page is open: a
  * few evaluation workers of its own (evaluator.js, the very evaluation a run makes) evaluate
- * random brains one after the other for about two seconds, after a warm-up; run-estimate.js
+ * random brains one after the other for about a second, after a warm-up; run-estimate.js
  * turns the pace into how long a run will take before the first run here.
  */
 import { spawn } from './kit.js';
@@ -10,10 +10,10 @@ import { EvaluatorMessage } from './protocol.js';
 
 /** Evaluations, and wall time (s), before the measure starts: the wasm warms up (a browser compiles it better as it runs). */
 const WARM_UP = 4;
-const WARM_UP_S = 1.5;
+const WARM_UP_S = 0.75;
 /** The most evaluations measured, and the wall time (s) after which the measure stops. */
 const MEASURED = 40;
-const MEASURE_FOR_S = 2;
+const MEASURE_FOR_S = 1;
 
 /**
  * This computer's pace (simulated voxel-seconds per second per worker), measured as a run
