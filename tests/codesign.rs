@@ -219,3 +219,63 @@ fn vsr_codesign_is_the_same_on_one_and_two_threads_and_its_best_replays() {
     ]);
     assert!(text(&o).contains("takes no module"), "{}", text(&o));
 }
+
+/// A body found by a body search is a module: `vsr finetune --from` and `vsr codesign --from`
+/// start from its best body with its brain, whose attention block they keep.
+#[test]
+fn a_found_body_is_a_module_for_finetune_and_codesign() {
+    let dir = std::env::temp_dir().join(format!("vsr-found-body-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let body = Path::new(env!("CARGO_MANIFEST_DIR")).join("pretrained/bodies/rq3-frozen.json");
+    let block = best_in_file(&std::fs::read_to_string(&body).unwrap(), None)
+        .unwrap()
+        .genome[..vsr::controllers::ATTENTION_PARAMS]
+        .to_vec();
+    let out = dir.join("finetuned.json");
+    let o = vsr(&[
+        "finetune",
+        "--from",
+        body.to_str().unwrap(),
+        "--shape",
+        "biped-4x3",
+        "--evals",
+        "20",
+        "--population",
+        "10",
+        "--seconds",
+        "2",
+        "--seed",
+        "1",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", text(&o));
+    let run = RunFile::from_json(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    // fine-tuning never touches the attention block (SPEC 10)
+    assert_eq!(run.best.genome[..block.len()], block[..]);
+    let out = dir.join("bodies.json");
+    let o = vsr(&[
+        "codesign",
+        "--brain",
+        "frozen",
+        "--from",
+        body.to_str().unwrap(),
+        "--evals",
+        "20",
+        "--batch",
+        "10",
+        "--seconds",
+        "2",
+        "--seed",
+        "1",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", text(&o));
+    let run = CodesignRun::from_json(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    assert!(run
+        .archive
+        .iter()
+        .all(|e| e.genome[..block.len()] == block[..]));
+    std::fs::remove_dir_all(&dir).ok();
+}
