@@ -37,7 +37,7 @@ test('numbers that agree: a module stopped at 20,100 evaluations and the same ru
   assert.equal(module.validation.unseen.mean, stop20, 'the module is the 20,000-evaluation run of seed 1');
   await byTestId(page, 'pretrained').selectOption('pretrained/biped-6x4-attention.json');
   const label = String(await byTestId(page, 'pretrained').locator('option:checked').textContent());
-  assert.match(label, new RegExp(`evolved for 20,100 evaluations, on average ${Number(stop20).toFixed(2)} m/s`));
+  assert.match(label, new RegExp(`evolved with a budget of 20,000 evaluations, on average ${Number(stop20).toFixed(2)} m/s`));
   // Beside it: the same run's best at 30,100, the number the study panel lists, and why it is slower.
   const details = page.locator('#module-details');
   await waitForText(page, 'module-details', /The study ran this seed once/);
