@@ -141,7 +141,7 @@ export class ModuleList {
       if (ticket !== this.described) return; // another module was chosen meanwhile
       if (!info) { this.details.textContent = ''; return; }
       const body = (/** @type {string} */ rows) => bodyWords(rows, this.presets);
-      const what = info.foundBySearch ? `body ${body(info.shape)} found by a body search` : `${info.finetunedFrom ? 'fine-tuned' : 'evolved'} on ${body(info.shape)}`;
+      const what = info.foundBySearch ? `${body(info.shape)} found by a body search` : `${info.finetunedFrom ? 'fine-tuned' : 'evolved'} on ${body(info.shape)}`;
       this.details.textContent = `${info.controller}, ${info.genes} genes, ${what}`
         + `${info.finetunedFrom ? ` from a module evolved on ${body(info.finetunedFrom)}` : ''} (seed ${info.seed}, budget ${info.budget} evaluations${info.evaluations > info.budget
           ? ` (it took ${info.evaluations}: a ${info.foundBySearch ? 'search finishes its last round' : 'run finishes its last generation'})` : ''}, `
