@@ -7,7 +7,6 @@
 #   make test-python-install  pip install "./python[examples,gym]" in a fresh venv, then use it
 #   make bench-wasm  speed of the wasm build in Node (figures for the README)
 #   make web-package the npm-ready web package (wasm core + <vsr-robot>) in target/web-package
-#   make bench-native-v3  opt-in: native speed built for x86-64-v3 (AVX2) CPUs only
 #   make test-browsers    opt-in: the page in Firefox and WebKitGTK gives vsr's results (tests/browsers/)
 
 SHELL := /bin/bash
@@ -19,7 +18,7 @@ WASM_PACK_BUILD := wasm-pack build --release --target web --out-dir www/pkg --ou
 .NOTPARALLEL:
 
 .PHONY: run test setup setup-test wasm serve lint test-native test-wasm test-web test-cluster \
-	test-parallel test-slurm test-python test-python-install test-browsers bench-wasm bench-native-v3 bench-python web-package
+	test-parallel test-slurm test-python test-python-install test-browsers bench-wasm bench-python web-package
 
 run: setup wasm serve
 
@@ -112,11 +111,3 @@ web-package: setup wasm
 bench-wasm: setup wasm
 	node tests/bench/wasm_bench.mjs
 
-## Opt-in only, never the default build: the same code compiled for x86-64-v3 (AVX2; the
-## binary will not run on older CPUs), into its own target dir so the portable build is
-## untouched. `-C target-feature=-fma` keeps results bit-identical to the portable and
-## wasm builds (LLVM never contracts a * b + c without fast-math, but be explicit).
-bench-native-v3:
-	RUSTFLAGS="-C target-cpu=x86-64-v3 -C target-feature=-fma" \
-	  cargo build --release --target-dir target/x86-64-v3
-	target/x86-64-v3/release/vsr bench

@@ -2,8 +2,9 @@
 /**
  * The gene count under “3 · Give it a brain”: how many numbers evolution tunes for the chosen
  * controller family on the drawn body, and, for attention, which of them every voxel shares
- * and which belong to one voxel position. Its raw number is in `data-value`.
+ * and which belong to one voxel position (its glossary words linked). Its raw number is in `data-value`.
  */
+import { withTerms } from './classroom/simple-words.js';
 import { SENSOR_NAMES } from './protocol.js';
 
 /**
@@ -19,7 +20,7 @@ export function showGeneCount(el, check, kind, attentionGenes, walking = '') {
       + `one set of weights per voxel position (each voxel adds ${SENSOR_NAMES.length}, one per sensor), and 1 bias shared by every voxel` : '';
   // A drawing in pieces is counted as drawn, beside the robot that still walks (its last whole body).
   const pending = !check.ok && n > 0 ? ` (for your drawing of ${n} voxels, once it is one piece; ${walking || 'the robot walking is your last whole drawing'})` : '';
-  el.textContent = n > 0 ? `${genes} genes${pending}${detail}` : '';
+  el.replaceChildren(...(n > 0 ? withTerms(el.ownerDocument, `${genes} genes${pending}${detail}`) : []));
   el.title = 'Genes: the numbers evolution changes. Every voxel runs the same small network; '
     + 'what differs between voxels is only the output weights of its position.';
   el.dataset.value = String(genes);

@@ -76,7 +76,7 @@ const modules = new ModuleList(document, {
   loadOnto: (module) => robot.loadModule(module),
   openOwn: (module) => robot.openModule(module),
   message: showMessage,
-}, defaults.attentionGenes);
+}, defaults.attentionGenes, defaults.presets);
 const race = new Race(document, { module: () => modules.selected(), terrain: () => viewer.terrain.value.trim(), message: showMessage });
 const runs = new RunPanel(document, defaults, {
   body: () => ({ rows: drawing.rows(), ok: robot?.check.ok ?? false }), // the panel asks before the robot is made

@@ -23,9 +23,13 @@ const PRETRAINED_DIR = 'pretrained/';
  */
 
 export class ModuleList {
-  /** @param {Document} doc @param {ModuleHooks} hooks @param {number} attentionGenes the core's attention block size */
-  constructor(doc, hooks, attentionGenes) {
+  /**
+   * @param {Document} doc @param {ModuleHooks} hooks @param {number} attentionGenes the core's attention block size
+   * @param {{name: string, rows: string}[]} [presets] the core's named bodies, to name a module's body in words
+   */
+  constructor(doc, hooks, attentionGenes, presets = []) {
     this.attentionGenes = attentionGenes;
+    this.presets = presets;
     const el = (/** @type {string} */ id) => /** @type {any} */ (doc.getElementById(id));
     this.select = /** @type {HTMLSelectElement} */ (el('module'));
     this.fileInput = /** @type {HTMLInputElement} */ (el('run-import'));
@@ -58,7 +62,8 @@ export class ModuleList {
         const mean = Number(m.validation?.unseen?.mean);
         const speed = Number.isFinite(mean) ? `, ${unseenWords(mean)}` : '';
         const from = m.finetuned_from ? ` fine-tuned from ${m.finetuned_from}` : '';
-        const label = `${m.controller} on ${m.shape}${from} (evolved for ${m.evaluations.toLocaleString('en')} evaluations${speed})`;
+        // The budget, as the study's lists and the tour say it (a run passes it a little: the details say by how much).
+        const label = `${m.controller} on ${m.shape}${from} (evolved with a budget of ${(m.budget ?? m.evaluations).toLocaleString('en')} evaluations${speed})`;
         this.select.append(new Option(label, PRETRAINED_DIR + m.file));
         const run = /--out \S*?([^/\s]+)\.json/.exec(m.command ?? '')?.[1];
         if (run) this.studyRunOf.set(PRETRAINED_DIR + m.file, run);
@@ -135,9 +140,10 @@ export class ModuleList {
       const info = module ? await describeRun(module.text) : null;
       if (ticket !== this.described) return; // another module was chosen meanwhile
       if (!info) { this.details.textContent = ''; return; }
-      const what = info.foundBySearch ? `body ${info.shape} found by a body search` : `${info.finetunedFrom ? 'fine-tuned' : 'evolved'} on ${info.shape}`;
+      const body = (/** @type {string} */ rows) => bodyWords(rows, this.presets);
+      const what = info.foundBySearch ? `${body(info.shape)} found by a body search` : `${info.finetunedFrom ? 'fine-tuned' : 'evolved'} on ${body(info.shape)}`;
       this.details.textContent = `${info.controller}, ${info.genes} genes, ${what}`
-        + `${info.finetunedFrom ? ` from a module evolved on ${info.finetunedFrom}` : ''} (seed ${info.seed}, budget ${info.budget} evaluations${info.evaluations > info.budget
+        + `${info.finetunedFrom ? ` from a module evolved on ${body(info.finetunedFrom)}` : ''} (seed ${info.seed}, budget ${info.budget} evaluations${info.evaluations > info.budget
           ? ` (it took ${info.evaluations}: a ${info.foundBySearch ? 'search finishes its last round' : 'run finishes its last generation'})` : ''}, `
         + `${info.seconds}-s episodes on ${info.terrain}; in training ${Number.isFinite(info.fitness) ? info.fitness.toFixed(2) : '–'} m/s)`;
       const lineage = lineageNote(this.studyRuns, this.studyRunOf.get(module?.key ?? '') ?? '');
@@ -180,6 +186,16 @@ export class ModuleList {
       this.hooks.message(`${file.name} is not a run file this page can read: ${messageOf(error)}`, 'import');
     }
   }
+}
+
+/**
+ * A body in words: its preset's name with its rows (as “Rows” in “1 · Draw” writes them), else
+ * its voxels and rows.
+ * @param {string} rows @param {{name: string, rows: string}[]} presets
+ */
+export function bodyWords(rows, presets) {
+  const name = presets.find((p) => p.rows === rows)?.name;
+  return name ? `${name} (rows ${rows})` : `a body of ${rows.split('').filter((c) => c === '1').length} voxels (rows ${rows})`;
 }
 
 /**

@@ -85,7 +85,9 @@ export class RunFollower {
     const peak = Number.isFinite(run.peak) ? `; its best single evaluation on the way: ${run.peak.toFixed(2)} m/s` : '';
     const result = `the best of its last generation, ${best.fitness.toFixed(2)} m/s in training${peak}`;
     if (run.mode === 'scratch' || !run.follow || run.settings.shape !== robot.parts.drawing.rows()) {
-      robot.parts.messages.show(`The run ${run.stopped ? 'stopped' : 'finished'}: its result (${result}) is in the module list.`, 'note');
+      const which = run.mode === 'scratch' ? 'The from-scratch comparison' : 'The run';
+      robot.parts.messages.show(`${which} ${run.stopped ? 'stopped' : 'finished'}: its result (${result}) is in the module list`
+        + `${run.mode === 'scratch' && run.follow ? '; the robot walks on with the fine-tuned result' : ''}.`, 'note');
       return;
     }
     robot.drive(runResult(best, run.runFile, run.settings, robot.origin(), `the ${what} run's result: ${result}`));

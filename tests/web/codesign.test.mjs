@@ -237,7 +237,7 @@ test('a body the study\'s body search found is listed with the modules, describe
   await page.locator(`#module option[value="${key}"]`).waitFor({ state: 'attached' });
   assert.match(String(await page.locator(`#module option[value="${key}"]`).textContent()), new RegExp(`^a body found by the body search: ${body.voxels} voxels`));
   await byTestId(page, 'pretrained').selectOption(key);
-  await waitForText(page, 'module-details', new RegExp(`body ${body.rows} found by a body search`));
+  await waitForText(page, 'module-details', new RegExp(`a body of ${body.voxels} voxels \\(rows ${body.rows}\\) found by a body search`));
   await page.locator('#module-open').click();
   await waitForText(page, 'status', new RegExp(`^${body.voxels} voxels, attention$`));
   assert.deepEqual(problems, []);

@@ -10,6 +10,7 @@
 import { messageOf } from '../kit.js';
 import { CHAPTERS } from '../tour/chapters.js';
 import { exerciseOf } from './exercises.js';
+import { withTerms } from './simple-words.js';
 
 /** The address of chapter `index` (0-based), as text. @param {number} index */
 export function chapterLink(index) {
@@ -115,7 +116,8 @@ export class Classroom {
         result.replaceChildren(
           make(doc, 'p', right ? 'exercise-right' : 'exercise-wrong', `${right ? '✓ Right.' : '✗ Not this time.'} You said: ${yours}.`),
           make(doc, 'p', 'exercise-key', `The page's answer: ${key.shown}.`),
-          make(doc, 'p', 'exercise-why', key.why));
+          make(doc, 'p', 'exercise-why'));
+        result.lastElementChild?.append(...withTerms(doc, key.why));
         if (ex.try) result.append(make(doc, 'p', 'exercise-try', `Now try it: ${ex.try}`));
         result.hidden = false;
         box.dataset.state = 'revealed';
@@ -228,7 +230,7 @@ export class Classroom {
       if (!ex) continue;
       try {
         const key = await ex.key(this.lab);
-        row.replaceChildren(make(doc, 'b', '', `Answer: ${key.shown}. `), key.why);
+        row.replaceChildren(make(doc, 'b', '', `Answer: ${key.shown}. `), ...withTerms(doc, key.why));
         row.dataset.answer = String(key.answer);
       } catch (error) {
         row.textContent = `could not be computed: ${messageOf(error)}`;

@@ -130,7 +130,7 @@ export const TASKS = [
       const moved = /** @type {number[]} */ (walk.movedByRow).map((m, i) => `${['area', 'vx', 'vy', 'touch'][i]} ${Math.round(100 * m)}%`);
       return { answer: Math.round(n), shown: `about ${n.toFixed(1)} of 16`,
         why: `The page just walked this robot for ${seconds} s and read every voxel's matrix at every decision (three a second): on average `
-          + `${n.toFixed(1)} of the 16 values sat beyond ±${SATURATED}. Each value is a tanh of numbers evolution made large, so it sits at −1 or +1 `
+          + `${n.toFixed(1)} of the 16 values sat beyond ±${SATURATED}. Each value is a tanh (a squashing into −1 to +1) of numbers evolution made large, so it sits at −1 or +1 `
           + `unless they nearly cancel. Share of each row's values that swung by more than 0.5 during the walk: ${moved.join(', ')}.` };
     },
   },
@@ -188,7 +188,8 @@ export const TASKS = [
       const answer = freezeChoice(frozen / before);
       return { answer, shown: `${FREEZE_CHOICES[answer]}: ${ms(frozen)} against ${ms(before)}`,
         why: `The page just walked this robot ${at} s (${ms(before)}), froze its attention and walked on to ${seconds} s: ${ms(frozen)} frozen. `
-          + 'The changing attention is how each voxel re-weighs its readings as it moves; fixed, it can no longer, and the stride falls apart (the paper\'s Fig. 6 and our study found the same for every best robot).' };
+          + 'The changing attention is how each voxel re-weighs its readings as it moves; fixed, it can no longer, and the stride falls apart (the paper\'s Fig. 6 and our study found the same for every best robot). '
+          + 'Frozen in mid-stride it still stumbles on a little way; the study\'s figure starts each frozen walk from standing, hence its few centimetres per second.' };
     },
   },
   {

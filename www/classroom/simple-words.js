@@ -13,22 +13,60 @@ const KEY = 'vsr-playground/simple-words';
 const STATS = /\s*\([^()]*\bp\b[^()]*\)/g;
 
 /**
- * `text` as nodes, each parenthesis holding a p-value in a `span.stats` (hidden in simple words).
+ * Words of the glossary that text made by the page uses (captions, a task's answer, the gene
+ * count), each with its entry in index.html's glossary: {@link withTerms} links them.
+ */
+const TERMS = {
+  'see the glossary': 'g-p', Holm: 'g-p', 'mlp-comm': 'g-mlp', mlp: 'g-mlp', tanh: 'g-tanh', softmax: 'g-softmax',
+  saturates: 'g-saturate', bias: 'g-network', weights: 'g-network', network: 'g-network', median: 'g-iqr',
+};
+/** The terms as whole words, the longest first (mlp-comm before mlp). */
+const TERM_WORDS = new RegExp(`(?<![\\w-])(${Object.keys(TERMS).sort((a, b) => b.length - a.length).join('|')})(?![\\w-])`, 'g');
+
+/**
+ * `text` as nodes, the first use of each glossary word ({@link TERMS}) a link to its entry.
+ * @param {Document} doc @param {string} text @param {Set<string>} [done] words already linked (by an earlier part)
+ * @returns {(string | HTMLElement)[]}
+ */
+export function withTerms(doc, text, done = new Set()) {
+  /** @type {(string | HTMLElement)[]} */
+  const out = [];
+  let at = 0;
+  for (const m of text.matchAll(TERM_WORDS)) {
+    const id = TERMS[/** @type {keyof typeof TERMS} */ (m[1])];
+    if (done.has(m[1])) continue;
+    done.add(m[1]);
+    out.push(text.slice(at, m.index));
+    const a = doc.createElement('a');
+    a.className = 'term';
+    a.href = `#${id}`;
+    a.textContent = m[1];
+    out.push(a);
+    at = (m.index ?? 0) + m[1].length;
+  }
+  out.push(text.slice(at));
+  return out.filter((x) => x !== '');
+}
+
+/**
+ * `text` as nodes, each parenthesis holding a p-value in a `span.stats` (hidden in simple words),
+ * the glossary's words linked ({@link withTerms}).
  * @param {Document} doc @param {string} text @returns {(string | HTMLElement)[]}
  */
 export function withStats(doc, text) {
   /** @type {(string | HTMLElement)[]} */
   const out = [];
+  const done = new Set();
   let at = 0;
   for (const m of text.matchAll(STATS)) {
-    out.push(text.slice(at, m.index));
+    out.push(...withTerms(doc, text.slice(at, m.index), done));
     const span = doc.createElement('span');
     span.className = 'stats';
-    span.textContent = m[0];
+    span.append(...withTerms(doc, m[0], done));
     out.push(span);
     at = (m.index ?? 0) + m[0].length;
   }
-  out.push(text.slice(at));
+  out.push(...withTerms(doc, text.slice(at), done));
   return out.filter((x) => x !== '');
 }
 

@@ -188,8 +188,8 @@ export class CodesignPanel {
     const rate = msg.seconds > 0 ? `, ${(msg.evaluations / msg.seconds).toFixed(1)} evaluations a second` : '';
     const rounds = record.iteration + 1;
     this.summary.textContent = `Brain: ${this.what} · ${gallery.length} kind${gallery.length === 1 ? '' : 's'} of body found (cells filled) in ${rounds} round${rounds === 1 ? '' : 's'}`
-      + (best?.fitness != null ? ` · fastest: ${best.fitness.toFixed(2)} m/s, ${best.voxels} voxels with ${best.feet} ${best.feet === 1 ? 'foot' : 'feet'}` : '')
-      + ` · ${msg.seconds.toFixed(0)} s${rate}`;
+      + (best?.fitness != null ? ` · fastest: ${best.fitness.toFixed(2)} m/s in training, ${best.voxels} voxels with ${best.feet} ${best.feet === 1 ? 'foot' : 'feet'}` : '')
+      + ` · searching for ${msg.seconds.toFixed(0)} s${rate}`;
     this.summary.dataset.filled = String(gallery.length);
     this.summary.dataset.best = String(best?.fitness ?? '');
     if (best) {

@@ -151,7 +151,7 @@ export const CHAPTERS = [
     title: 'Your turn',
     text: [
       'Draw a robot of your own: a long worm, a table, a creature with three legs.',
-      'Give it a brain: evolve one, or choose a module under “3 · Give it a brain”, load it onto your robot and fine-tune it. Every figure of the study is under “The study” at the bottom of the page, each with its robots to watch.',
+      'Give it a brain: evolve one, or choose a module under “3 · Give it a brain”, load it onto your robot and fine-tune it. Every figure of the study is under “The study”, further down the page, each with its robots to watch.',
     ],
     task: 'When it walks, press “Share link” and send the link: it opens your robot, its brain and its settings.',
     notice: 'This tour has a link for every chapter too (the address bar shows it), to send one chapter to a class.',

@@ -57,7 +57,7 @@ export const FIGURES = [
     file: 'fig6-rq1-biped-4x3-30000.svg',
     title: 'Freeze the attention and the biped stops',
     paper: 'The paper\'s Fig. 6: with every voxel\'s attention frozen as it was at one moment, the robots barely move.',
-    read: 'Each run\'s best robot, its attention frozen at the second on the horizontal axis, then walked 30 s: its speed. Mind the scale: a few centimetres per second at most, where the same robots walk about 4 m/s unfrozen (the line: the middle of the runs, over a whole 30-s walk).',
+    read: 'Each run\'s best robot, its attention frozen as it was at the second on the horizontal axis of a walk, then walked 30 s afresh from standing, frozen from its first step: its speed. Mind the scale: a few centimetres per second at most, where the same robots walk about 4 m/s unfrozen (the line: the middle of the runs, over a whole 30-s walk).',
     runs: [{ kind: 'scratch', shape: 'biped-4x3', evals: 30000, controllers: ['attention'] }],
   },
   {
@@ -65,7 +65,7 @@ export const FIGURES = [
     file: 'fig6-rq1-comb-7x2-30000.svg',
     title: 'Freeze the attention and the comb stops',
     paper: 'The paper\'s Fig. 6, for the comb.',
-    read: 'Each run\'s best robot, its attention frozen at the second on the horizontal axis, then walked 30 s: its speed (mind the scale: centimetres per second).',
+    read: 'Each run\'s best robot, its attention frozen as it was at the second on the horizontal axis of a walk, then walked 30 s afresh from standing, frozen from its first step: its speed (mind the scale: centimetres per second).',
     runs: [{ kind: 'scratch', shape: 'comb-7x2', evals: 30000, controllers: ['attention'] }],
   },
   {

@@ -38,7 +38,10 @@ export function lineageNote(runs, name) {
   const at = stops.map((r) => r.evaluations.toLocaleString('en'));
   const speeds = stops.map((r) => `${r.unseen.toFixed(2)} m/s${r === run ? ' (this one)' : ''}`);
   const slower = stops.some((r, i) => i > 0 && r.unseen < stops[i - 1].unseen);
-  return `The study ran this seed once, its best kept at ${at.slice(0, -1).join(', ')} and ${at[at.length - 1]} evaluations: `
+  const budgets = stops.map((r) => r.evals.toLocaleString('en'));
+  const passed = stops.some((r) => r.evaluations !== r.evals)
+    ? ` (budgets of ${budgets.slice(0, -1).join(', ')} and ${budgets[budgets.length - 1]}: a run finishes its last generation)` : '';
+  return `The study ran this seed once, its best kept at ${at.slice(0, -1).join(', ')} and ${at[at.length - 1]} evaluations${passed}: `
     + `on ten terrains it never trained on, these bests average ${speeds.slice(0, -1).join(', ')} and ${speeds[speeds.length - 1]}.`
     + (slower ? ` ${LATER_NOT_FASTER}` : '');
 }

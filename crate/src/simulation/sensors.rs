@@ -35,6 +35,8 @@ struct Window {
     sums: Vec<f64>,
     filled: usize,
     next: usize,
+    /// Whether `sums` lags behind `samples` (a push since the last [`Window::sum`]).
+    stale: bool,
 }
 
 impl Window {
@@ -45,11 +47,11 @@ impl Window {
             sums: vec![0.0; channels],
             filled: 0,
             next: 0,
+            stale: false,
         }
     }
 
-    /// Pushes one sample per channel; the sums are recomputed from the samples so
-    /// rounding never accumulates.
+    /// Pushes one sample per channel.
     fn push(&mut self, values: impl Iterator<Item = f64>) {
         let channels = self.sums.len();
         let row = &mut self.samples[self.next * channels..(self.next + 1) * channels];
@@ -58,15 +60,29 @@ impl Window {
         }
         self.next = (self.next + 1) % self.size;
         self.filled = (self.filled + 1).min(self.size);
+        self.stale = true;
+    }
+
+    /// Brings the sums up to date: recomputed from the samples (slot order), so rounding
+    /// never accumulates. Only when read: controllers that act every 20 steps skip the
+    /// sums of the 19 steps between, with the same numbers.
+    fn sum(&mut self) {
+        if !self.stale {
+            return;
+        }
+        let channels = self.sums.len();
         self.sums.iter_mut().for_each(|s| *s = 0.0);
         for chunk in self.samples.chunks_exact(channels).take(self.filled) {
             for (s, v) in self.sums.iter_mut().zip(chunk) {
                 *s += v;
             }
         }
+        self.stale = false;
     }
 
+    /// The mean of a channel as of the last [`Window::sum`].
     fn mean(&self, channel: usize) -> f64 {
+        debug_assert!(!self.stale, "Window::sum before Window::mean");
         if self.filled == 0 {
             0.0
         } else {
@@ -111,6 +127,8 @@ impl Sensors {
     /// Computes the readings of the current state (normalized, with noise): call when
     /// a controller needs them. Returns 4 per voxel, voxel index order.
     pub fn read(&mut self, world: &World) -> &[f32] {
+        self.velocity.sum();
+        self.touch.sum();
         for v in 0..world.voxel_count() {
             let raw = [
                 0.5 + 0.5 * libm::tanh(4.0 * (world.area_ratio(v) - 1.0)),
