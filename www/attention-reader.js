@@ -8,6 +8,7 @@
  */
 import { attentionColour } from './attention.js';
 import { ATTENTION_FLOATS, SENSOR_NAMES } from './protocol.js';
+import { decimal, signed } from './format.js';
 
 const SIDE = SENSOR_NAMES.length;
 /** What each reading is, for the row and column titles. */
@@ -106,7 +107,7 @@ export class AttentionReader {
     if (this.choice && this.choice.voxel >= voxels) this.close();
     else if (this.choice) this.highlight(this.choice.voxel);
     this.terms.textContent = terms
-      ? `For this brain a = ${terms[0].toFixed(1)}, b = ${terms[1].toFixed(1)}, c = ${terms[2].toFixed(1)}, d = ${terms[3].toFixed(1)}.`
+      ? `For this brain a = ${decimal(terms[0], 1)}, b = ${decimal(terms[1], 1)}, c = ${decimal(terms[2], 1)}, d = ${decimal(terms[3], 1)}.`
       : '';
   }
 
@@ -117,7 +118,7 @@ export class AttentionReader {
     if (attention.length < at + ATTENTION_FLOATS) return;
     this.cells.forEach((td, i) => {
       const v = attention[at + i];
-      const text = (v >= 0 ? '+' : '') + v.toFixed(2);
+      const text = signed(v);
       td.style.background = attentionColour(v);
       td.style.color = Math.abs(v) > 0.6 ? '#fff' : '#1d2730';
       td.textContent = text;
@@ -127,7 +128,7 @@ export class AttentionReader {
     if (this.pointed) {
       const [r, c] = this.pointed;
       const v = attention[at + r * SIDE + c];
-      this.hover.textContent = `Row ${SENSOR_NAMES[r]} (query), column ${SENSOR_NAMES[c]} (key): ${(v >= 0 ? '+' : '') + v.toFixed(3)}`;
+      this.hover.textContent = `Row ${SENSOR_NAMES[r]} (query), column ${SENSOR_NAMES[c]} (key): ${signed(v, 3)}`;
     }
   }
 }

@@ -7,6 +7,7 @@
  * The page holds the current brain.
  */
 import { describeRun, ready, remapGenome, runGenome, transplant } from './core.js';
+import { decimal } from './format.js';
 
 /**
  * @typedef {object} Brain
@@ -86,7 +87,7 @@ export function bestSoFar(genome, fitness, settings, kind, finetuning, source, o
   return {
     controller: kind, genome, rows: settings.shape, origin, module: null, source: finetuning ? source : null,
     seconds: settings.seconds, trained: { speed: fitness, terrain: settings.terrain, single: true }, run: true,
-    label: `the best so far while ${finetuning ? 'fine-tuning' : 'evolving'}: ${fitness.toFixed(2)} m/s in one evaluation, seed ${settings.seed} `
+    label: `the best so far while ${finetuning ? 'fine-tuning' : 'evolving'}: ${decimal(fitness)} m/s in one evaluation, seed ${settings.seed} `
       + `(the best when it started walking: a newer best takes over once its ${settings.seconds}-s episode is over)`,
   };
 }

@@ -5,6 +5,7 @@
  * 1001`) are the cells' bounding box: where the drawing sits on the grid does not change
  * the robot. A new shape (a preset, typed rows, a shared link) is placed at the bottom-left.
  */
+import { size } from './format.js';
 
 /** Most steps kept for undo. */
 const MAX_HISTORY = 200;
@@ -84,7 +85,7 @@ export class Drawing {
     const ragged = lines.findIndex((r) => r.length !== lines[0].length);
     if (ragged > 0) return `every row needs the same number of cells: row ${ragged + 1} has ${lines[ragged].length}, row 1 has ${lines[0].length}`;
     if (width > this.width || height > this.height) {
-      return `that shape is ${width} x ${height} cells; the grid holds at most ${this.width} x ${this.height}`;
+      return `that shape is ${size(width, height)} cells; the grid holds at most ${size(this.width, this.height)}`;
     }
     const next = new Set();
     lines.forEach((line, r) => {

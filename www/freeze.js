@@ -7,6 +7,7 @@
  * are the same measure: the centre's forward distance over the time it took (as fitness,
  * over a window). Only an attention brain can be frozen.
  */
+import { decimal, NONE } from './format.js';
 /** Seconds of walking before the freeze that its "before" speed is measured over. */
 export const BEFORE_WINDOW_S = 5;
 
@@ -67,8 +68,8 @@ export class FreezeControl {
     // The pace frozen: over the last seconds, once the robot has coasted out of its last steps.
     const from = this.recent.find((s) => s.t >= Math.max(at.t, now.t - AFTER_WINDOW_S)) ?? at;
     const after = speedBetween(from, now);
-    this.report.textContent = `Before freezing: ${metres(before)} over the last ${window.toFixed(1)} s. `
-      + `Frozen for ${seconds.toFixed(1)} s: ${seconds > 0 ? `${metres(after)} over the last ${(now.t - from.t).toFixed(1)} s` : '…'}. `
+    this.report.textContent = `Before freezing: ${metres(before)} over the last ${decimal(window, 1)} s. `
+      + `Frozen for ${decimal(seconds, 1)} s: ${seconds > 0 ? `${metres(after)} over the last ${decimal(now.t - from.t, 1)} s` : '…'}. `
       + verdict(before, after, seconds);
     this.show(before, after);
   }
@@ -118,7 +119,7 @@ export function verdict(before, after, seconds) {
 
 /** @param {number} v a speed (m/s) @returns {string} */
 function metres(v) {
-  return Number.isFinite(v) ? `${v.toFixed(2)} m/s` : '–';
+  return Number.isFinite(v) ? `${decimal(v)} m/s` : NONE;
 }
 
 /**

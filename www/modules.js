@@ -9,6 +9,7 @@
 import { describeRun } from './core.js';
 import { messageOf } from './kit.js';
 import { lineageNote } from './tour/lineage.js';
+import { count, decimal } from './format.js';
 
 /** Where the served pretrained run files are (scripts/serve.mjs mounts pretrained/). */
 const PRETRAINED_DIR = 'pretrained/';
@@ -63,7 +64,7 @@ export class ModuleList {
         const speed = Number.isFinite(mean) ? `, ${unseenWords(mean)}` : '';
         const from = m.finetuned_from ? ` fine-tuned from ${m.finetuned_from}` : '';
         // The budget, as the study's lists and the tour say it (a run passes it a little: the details say by how much).
-        const label = `${m.controller} on ${m.shape}${from} (evolved with a budget of ${(m.budget ?? m.evaluations).toLocaleString('en')} evaluations${speed})`;
+        const label = `${m.controller} on ${m.shape}${from} (evolved with a budget of ${count(m.budget ?? m.evaluations)} evaluations${speed})`;
         this.select.append(new Option(label, PRETRAINED_DIR + m.file));
         const run = /--out \S*?([^/\s]+)\.json/.exec(m.command ?? '')?.[1];
         if (run) this.studyRunOf.set(PRETRAINED_DIR + m.file, run);
@@ -143,9 +144,9 @@ export class ModuleList {
       const body = (/** @type {string} */ rows) => bodyWords(rows, this.presets);
       const what = info.foundBySearch ? `${body(info.shape)} found by a body search` : `${info.finetunedFrom ? 'fine-tuned' : 'evolved'} on ${body(info.shape)}`;
       this.details.textContent = `${info.controller}, ${info.genes} genes, ${what}`
-        + `${info.finetunedFrom ? ` from a module evolved on ${body(info.finetunedFrom)}` : ''} (seed ${info.seed}, budget ${info.budget} evaluations${info.evaluations > info.budget
-          ? ` (it took ${info.evaluations}: a ${info.foundBySearch ? 'search finishes its last round' : 'run finishes its last generation'})` : ''}, `
-        + `${info.seconds}-s episodes on ${info.terrain}; in training ${Number.isFinite(info.fitness) ? info.fitness.toFixed(2) : '–'} m/s)`;
+        + `${info.finetunedFrom ? ` from a module evolved on ${body(info.finetunedFrom)}` : ''} (seed ${info.seed}, budget ${count(info.budget)} evaluations${info.evaluations > info.budget
+          ? ` (it took ${count(info.evaluations)}: a ${info.foundBySearch ? 'search finishes its last round' : 'run finishes its last generation'})` : ''}, `
+        + `${info.seconds}-s episodes on ${info.terrain}; in training ${decimal(info.fitness)} m/s)`;
       const lineage = lineageNote(this.studyRuns, this.studyRunOf.get(module?.key ?? '') ?? '');
       if (lineage) this.details.textContent += `. ${lineage}`;
       this.loadButton.title = info.controller === 'attention'
@@ -203,7 +204,7 @@ export function bodyWords(rows, presets) {
  * @param {number} mean m/s, the mean over the ten terrains
  */
 export function unseenWords(mean) {
-  return `on average ${mean.toFixed(2)} m/s on ten terrains it never trained on`;
+  return `on average ${decimal(mean)} m/s on ten terrains it never trained on`;
 }
 
 /** @param {string} url @returns {Promise<Response>} the response, or throws on an HTTP error */

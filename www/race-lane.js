@@ -8,6 +8,7 @@
 import { spawn } from './kit.js';
 import { FromWorker, ToWorker, frameIsConsistent } from './protocol.js';
 import { Renderer } from './renderer.js';
+import { decimal } from './format.js';
 
 /**
  * @typedef {object} Racer  what a lane runs
@@ -138,7 +139,7 @@ export class Lane {
     if (!Number.isFinite(this.start) || time === 0) this.start = x;
     this.speed.dataset.value = String(velocity);
     this.speed.dataset.time = String(time);
-    this.speed.textContent = Number.isFinite(velocity) && time > 0 ? `${velocity.toFixed(2)} m/s` : '– m/s';
+    this.speed.textContent = Number.isFinite(velocity) && time > 0 ? `${decimal(velocity)} m/s` : '– m/s';
     const walked = x - this.start;
     this.walked = walked;
     if (Number.isFinite(walked) && Number.isFinite(time)) {
@@ -146,7 +147,7 @@ export class Lane {
       if (last && time < last.t) this.track = []; // loaded again: a new race
       if (!last || time > last.t) this.track.push({ t: time, walked });
     }
-    this.distance.textContent = Number.isFinite(walked) ? `${walked.toFixed(1)} m in ${time.toFixed(1)} s` : '';
+    this.distance.textContent = Number.isFinite(walked) ? `${decimal(walked, 1)} m in ${decimal(time, 1)} s` : '';
   }
 
   /**

@@ -12,6 +12,7 @@ import { describeRun, runGenome } from './core.js';
 import { downloadCsv } from './export.js';
 import { messageOf } from './kit.js';
 import { Lane, standings, walkedAt } from './race-lane.js';
+import { decimal } from './format.js';
 
 /** Most robots in one race. */
 export const MAX_RACERS = 4;
@@ -162,7 +163,7 @@ export class Race {
     }
     if (!top || !Number.isFinite(top.fitness)) return;
     this.run.bests.push({ generation, fitness: top.fitness, genome: top.genome });
-    this.generation.append(new Option(`generation ${generation} (${top.fitness.toFixed(2)} m/s in training)`, String(generation)));
+    this.generation.append(new Option(`generation ${generation} (${decimal(top.fitness)} m/s in training)`, String(generation)));
     this.update();
   }
 

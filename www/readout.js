@@ -8,6 +8,7 @@
  * robot the distance runs on from where it was; the speed counts from the edit. Each <output>
  * also carries its raw number in `data-value` so that tests read numbers, not formatted text.
  */
+import { decimal } from './format.js';
 
 /** Window over which the velocity is measured (simulated s). */
 const VELOCITY_WINDOW_S = 1;
@@ -87,17 +88,17 @@ export class Readout {
     const x = this.episode.edited && Number.isFinite(this.origin) ? frame.centreX - this.origin : frame.distance;
     const ended = Number.isFinite(frame.episodeSpeed);
     // Past the episode the clock runs on: said beside it, so "275 s" never stands against "10-s episode".
-    show(this.fields.time, frame.time, ended ? `${frame.time.toFixed(2)} s (its ${seconds}-s episode is over; it walks on)`
-      : `${frame.time.toFixed(2)} s`);
-    show(this.fields.x, x, `${x.toFixed(2)} m`);
+    show(this.fields.time, frame.time, ended ? `${decimal(frame.time)} s (its ${seconds}-s episode is over; it walks on)`
+      : `${decimal(frame.time)} s`);
+    show(this.fields.x, x, `${decimal(x)} m`);
     const speed = ended ? frame.episodeSpeed : frame.velocity;
     const over = edited ? `since the edit, ${seconds}-s episode` : `${seconds}-s episode`;
     show(this.fields.speed, speed, ended
-      ? `${speed.toFixed(2)} m/s over its ${over} on ${terrain}`
-      : `${speed.toFixed(2)} m/s so far (${over} on ${terrain})`);
+      ? `${decimal(speed)} m/s over its ${over} on ${terrain}`
+      : `${decimal(speed)} m/s so far (${over} on ${terrain})`);
     this.fields.speed.dataset.ended = String(ended);
-    show(this.fields.velocity, velocity, `${velocity.toFixed(2)} m/s`);
-    show(this.fields.simPerWall, frame.simPerWall, `${frame.simPerWall.toFixed(2)}x`);
+    show(this.fields.velocity, velocity, `${decimal(velocity)} m/s`);
+    show(this.fields.simPerWall, frame.simPerWall, `${decimal(frame.simPerWall)}x`);
     show(this.fields.simPerCompute, frame.simPerCompute, `${Math.round(frame.simPerCompute)}x`);
   }
 }

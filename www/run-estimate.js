@@ -12,6 +12,7 @@
  */
 import { measurePace } from './pace.js';
 import { durationWords } from './run-progress.js';
+import { count } from './format.js';
 
 /** How often the estimate follows the form and the drawing (ms). */
 const REFRESH_MS = 1000;
@@ -112,8 +113,8 @@ export class RunEstimate {
     this.out.dataset.from = Number.isFinite(last) ? 'last-run' : 'measured';
     const pace = Number.isFinite(last) ? 'At the pace of the last run here' : 'At this computer\'s speed, measured as the page opened';
     const lighter = this.lighter && this.form.number('budget') === this.lighter.budget
-      ? ` The quick settings are lighter on this computer: ${this.lighter.budget.toLocaleString('en')} evaluations, not `
-        + `${this.lighter.from.toLocaleString('en')} (about ${durationWords(estimateSeconds({ ...run, evaluations: this.lighter.from + this.form.number('population') }, this.currentPace()))} here).` : '';
+      ? ` The quick settings are lighter on this computer: ${count(this.lighter.budget)} evaluations, not `
+        + `${count(this.lighter.from)} (about ${durationWords(estimateSeconds({ ...run, evaluations: this.lighter.from + this.form.number('population') }, this.currentPace()))} here).` : '';
     this.out.textContent = Number.isFinite(took)
       ? `${pace}, that is about ${durationWords(took)} on ${run.workers} worker${run.workers === 1 ? '' : 's'}.${lighter}`
       : '';

@@ -8,6 +8,7 @@
  */
 import { bestSoFar, runResult } from './brain.js';
 import { messageOf } from './kit.js';
+import { decimal } from './format.js';
 
 /** Least wall time between two switches of the viewer to a newer best (ms). */
 const FOLLOW_INTERVAL_MS = 3000;
@@ -78,12 +79,12 @@ export class RunFollower {
       return;
     }
     const what = { evolve: 'evolved', finetune: 'fine-tuned', scratch: 'from scratch' }[run.mode];
-    const label = `${what} ${best.controller}, seed ${run.settings.seed}: ${best.fitness.toFixed(2)} m/s`;
+    const label = `${what} ${best.controller}, seed ${run.settings.seed}: ${decimal(best.fitness)} m/s`;
     const module = { key: `run:${run.mode}:${run.settings.seed}:${best.controller}:${run.settings.shape}`, label: `${label} (this page)`, text: run.runFile };
     this.modules.add(module, run.mode !== 'scratch') // the comparison is listed; the fine-tuned module stays chosen
       .catch((error) => robot.error(`the finished run could not be listed: ${messageOf(error)}`));
-    const peak = Number.isFinite(run.peak) ? `; its best single evaluation on the way: ${run.peak.toFixed(2)} m/s` : '';
-    const result = `the best of its last generation, ${best.fitness.toFixed(2)} m/s in training${peak}`;
+    const peak = Number.isFinite(run.peak) ? `; its best single evaluation on the way: ${decimal(run.peak)} m/s` : '';
+    const result = `the best of its last generation, ${decimal(best.fitness)} m/s in training${peak}`;
     if (run.mode === 'scratch' || !run.follow || run.settings.shape !== robot.parts.drawing.rows()) {
       const which = run.mode === 'scratch' ? 'The from-scratch comparison' : 'The run';
       robot.parts.messages.show(`${which} ${run.stopped ? 'stopped' : 'finished'}: its result (${result}) is in the module list`

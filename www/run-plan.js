@@ -5,6 +5,7 @@
  * fresh terrains, and as many new children), so a run can pass its budget.
  */
 import { runPlan } from './core.js';
+import { count } from './format.js';
 
 /**
  * @param {number} population @param {number} budget
@@ -13,12 +14,12 @@ import { runPlan } from './core.js';
 export async function planWords(population, budget) {
   let plan;
   try { plan = await runPlan(population, budget); } catch { return null; }
-  const extra = plan.planned > budget ? `; the last generation is finished, so the run takes ${plan.planned}` : '';
+  const extra = plan.planned > budget ? `; the last generation is finished, so the run takes ${count(plan.planned)}` : '';
   return {
     generations: plan.generations,
     planned: plan.planned,
-    text: `A budget of ${budget} evaluations: generation 0 measures ${population} random brains, then each of `
-      + `${plan.generations} generations measures ${plan.perGeneration} (${population} new children, and the ${population} `
+    text: `A budget of ${count(budget)} evaluations: generation 0 measures ${count(population)} random brains, then each of `
+      + `${count(plan.generations)} generations measures ${count(plan.perGeneration)} (${count(population)} new children, and the ${count(population)} `
       + `parents again on fresh terrains, so that luck on one terrain does not last)${extra}.`,
   };
 }

@@ -7,6 +7,7 @@
  * same figures as a table, a row per generation, for the CSV download.
  */
 import { FitnessChart } from './fitness-chart.js';
+import { count, decimal as fixed } from './format.js';
 
 const STYLE = {
   best: { label: 'best of generation', colour: 'rgb(200, 45, 40)' },
@@ -56,7 +57,7 @@ export class RunProgress {
     if (mode !== 'scratch') { this.chart.clear(planned); this.table = []; } else this.chart.extend(planned);
     this.out.phase.textContent = PHASE[mode] ?? '';
     this.out.phase.hidden = !this.out.phase.textContent;
-    show(this.out.evaluations, 0, `0 / ${planned}`);
+    show(this.out.evaluations, 0, `0 / ${count(planned)}`);
   }
 
   /**
@@ -70,7 +71,7 @@ export class RunProgress {
     const { record } = msg;
     this.table.push([RUN_WORDS[mode] ?? mode, record.generation, msg.evaluations, record.best ?? NaN, record.median ?? NaN, bestSoFar]);
     show(this.out.generation, record.generation, `${record.generation} of ${generations}`);
-    show(this.out.evaluations, msg.evaluations, `${msg.evaluations} / ${msg.planned}`);
+    show(this.out.evaluations, msg.evaluations, `${count(msg.evaluations)} / ${count(msg.planned)}`);
     show(this.out.best, bestSoFar, `${fixed(bestSoFar)} m/s`);
     show(this.out.genBest, record.best ?? NaN, `${fixed(record.best)} m/s`);
     show(this.out.median, record.median ?? NaN, `${fixed(record.median)} m/s`);
@@ -102,11 +103,6 @@ export class RunProgress {
     this.out.progress.dataset.other = String(other);
     this.out.caption.textContent = other ? 'These figures are the last run\'s: the robot walking now has another brain.' : '';
   }
-}
-
-/** @param {number | null} v @param {number} [digits] */
-function fixed(v, digits = 2) {
-  return v === null || !Number.isFinite(v) ? '–' : v.toFixed(digits);
 }
 
 /**

@@ -12,6 +12,7 @@
 import { checkGait, checkGenome, checkShape, checkTerrain, checkTrainingTerrain } from './core.js';
 import { messageOf } from './kit.js';
 import { plain } from './message.js';
+import { size } from './format.js';
 
 /**
  * @typedef {object} PageState
@@ -80,7 +81,7 @@ export async function decodeState(text, controllers, grid, draft = false) {
     const lines = rows.split('-');
     if (!/^[01]+(-[01]+)*$/.test(rows)) return { error: `its robot "${rows.slice(0, 40)}" is not rows of 0 and 1` };
     if (lines.length > grid.height || lines.some((l) => l.length > grid.width)) {
-      return { error: `its robot does not fit the ${grid.width} x ${grid.height} drawing grid` };
+      return { error: `its robot does not fit the ${size(grid.width, grid.height)} drawing grid` };
     }
     const check = await checkShape(rows);
     if (!check.ok && !(draft && check.pieces.length > 0)) return { error: `its robot is not valid: ${check.message}` };

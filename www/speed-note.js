@@ -8,6 +8,7 @@
  */
 import { checkTerrain } from './core.js';
 import { messageOf } from './kit.js';
+import { decimal } from './format.js';
 
 export class SpeedNote {
   /** @param {HTMLElement} el @param {import('./measure.js').Measurer} measurer */
@@ -34,7 +35,7 @@ export class SpeedNote {
       const here = `The viewer measures its speed as it walks, over a ${seconds}-s episode on ${terrain} (under the robot, once the episode is over)`;
       const trained = brain.trained && Number.isFinite(brain.trained.speed) ? brain.trained : null;
       if (!trained) { this.set(NaN, `${here}; the run goes on.`); return; }
-      const said = training(trained, brain.seconds ?? seconds).then(({ where, why }) => `In training: ${trained.speed.toFixed(2)} m/s `
+      const said = training(trained, brain.seconds ?? seconds).then(({ where, why }) => `In training: ${decimal(trained.speed)} m/s `
         + `(${trained.single ? 'its best single evaluation' : 'its latest evaluation'}, on ${where}). ${here}. ${why}`, () => `${here}; the run goes on.`);
       const text = await said;
       if (ticket === this.shown) this.set(NaN, text);
@@ -55,7 +56,7 @@ export class SpeedNote {
    * @returns {Promise<string>}
    */
   async words(brain, speed, terrain, seconds) {
-    const here = `Speed here: ${speed.toFixed(2)} m/s over a ${seconds}-s episode on ${terrain}.`;
+    const here = `Speed here: ${decimal(speed)} m/s over a ${seconds}-s episode on ${terrain}.`;
     if (brain.oneShot) {
       return `${here} That is its one-shot speed, before any training for this body. Its attention fits any body, but the `
         + 'weights that turn each voxel\'s readings into a squeeze were made for the old body\'s voxels, so your robot\'s are '
@@ -65,7 +66,7 @@ export class SpeedNote {
     const trained = brain.trained;
     if (!trained || !Number.isFinite(trained.speed)) return here;
     const { where, why } = await training(trained, brain.seconds ?? seconds);
-    return `${here} In training: ${trained.speed.toFixed(2)} m/s (its latest evaluation, on ${where}). ${why}`;
+    return `${here} In training: ${decimal(trained.speed)} m/s (its latest evaluation, on ${where}). ${why}`;
   }
 
   /** @param {number} value @param {string} text */

@@ -50,7 +50,7 @@ test('numbers that agree: a module stopped at 20,100 evaluations and the same ru
   await page.locator('#study-run').selectOption('biped-6x4-attention-30000-s1');
   assert.ok(String(await byTestId(page, 'study-run-note').textContent()).includes(`${Number(stop20).toFixed(2)} m/s and ${Number(stop30).toFixed(2)} m/s (this one)`));
   // Every run from scratch in that list faster than the module on the unseen terrains would need no reason; none is.
-  const listed = (await page.locator('#study-run option').allTextContents()).filter((t) => /from scratch, 30000/.test(t));
+  const listed = (await page.locator('#study-run option').allTextContents()).filter((t) => /from scratch, 30,000/.test(t));
   assert.ok(listed.every((t) => Number(/on average (\d+\.\d\d)/.exec(t)?.[1]) < Number(stop20)), 'the module is faster than every 30,000 run: the reason is needed');
   assert.deepEqual(problems, []);
   await context.close();
@@ -71,7 +71,7 @@ test('numbers that agree: the same best biped\'s speeds, each beside what it mea
   // Its other stop in the study is another robot (the same run's earlier best), said as such; this one's number is the driver's.
   assert.ok(lineage.includes(`${module.validation.unseen.mean.toFixed(2)} m/s (this one)`), lineage);
   // Each speed on screen, and the words that say what it measures right after it.
-  const said = [...`${driver} ${note} ${details}`.matchAll(/(-?\d+\.\d\d) m\/s([^.;]*)/g)].map((m) => ({ speed: m[1], what: m[2] }));
+  const said = [...`${driver} ${note} ${details}`.matchAll(/([−-]?\d+\.\d\d) m\/s([^.;]*)/g)].map((m) => ({ speed: m[1].replace('−', '-'), what: m[2] }));
   const expected = [
     [module.validation.unseen.mean, /^ on ten terrains it never trained on/],
     [here, /^ over a 30-s episode on hilly-1-10-0/],
@@ -146,7 +146,7 @@ test('numbers that agree: during a fine-tune the walking best shows its own trai
   await waitForText(page, 'driver', /the best so far while fine-tuning/, 60_000);
   const driver = String(await page.locator('#driver').textContent());
   const note = String(await byTestId(page, 'speed-note').textContent());
-  const best = /fine-tuning: (-?\d+\.\d\d) m\/s in one evaluation/.exec(driver)?.[1];
+  const best = /fine-tuning: ([−-]?\d+\.\d\d) m\/s in one evaluation/.exec(driver)?.[1];
   assert.ok(best, driver);
   assert.match(note, new RegExp(`^In training: ${best} m/s \\(its best single evaluation, on a hilly-1-10 terrain drawn fresh for that evaluation, 2-s episodes\\)\\. `
     + 'The viewer measures its speed as it walks, over a 2-s episode on hilly-1-10-0 \\(under the robot, once the episode is over\\)\\. Training draws a fresh terrain'), note);

@@ -81,8 +81,8 @@ test('a click on a voxel\'s map shows its matrix enlarged, named and live; freez
   assert.equal(first.values.length, 16);
   assert.ok(first.values.every((v) => v >= -1 && v <= 1), `values in [-1, 1]: ${first.values}`);
   await page.locator('#attention-matrix tbody tr').nth(3).locator('td').nth(1).hover();
-  await waitForText(page, 'attention-hover', /^Row touch \(query\), column vx \(key\): [+-]\d\.\d{3}$/);
-  assert.match(String(await page.locator('#attention-terms').textContent()), /a = -?\d/);
+  await waitForText(page, 'attention-hover', /^Row touch \(query\), column vx \(key\): [+−]\d\.\d{3}$/);
+  assert.match(String(await page.locator('#attention-terms').textContent()), /a = −?\d/);
   await waitForFigure(page, 'sim-time', 'v >= 1', 30_000);
   const later = await readMatrix(page);
   assert.notDeepEqual(later.values, first.values, 'the enlarged matrix follows the walk');
@@ -101,7 +101,7 @@ test('a click on a voxel\'s map shows its matrix enlarged, named and live; freez
   console.log(`# frozen at ${frozenAt.toFixed(1)} s: ${beforeSpeed.toFixed(2)} m/s before, ${afterSpeed.toFixed(2)} m/s over the last 2 of the 6 s after`);
   assert.ok(beforeSpeed > 1, `it walked before: ${beforeSpeed}`);
   assert.ok(Math.abs(afterSpeed) < beforeSpeed / 3, `more than two thirds slower frozen: ${beforeSpeed} -> ${afterSpeed}`);
-  assert.match(String(await report.textContent()), /^Before freezing: \d+\.\d\d m\/s over the last \d+\.\d s\. Frozen for \d+\.\d s: -?\d+\.\d\d m\/s over the last [12]\.\d s\. Frozen, it (keeps only \d+% of its speed|nearly stops \(less than a tenth of its speed before, rocking on the spot\)): its changing attention is what made it walk\.$/);
+  assert.match(String(await report.textContent()), /^Before freezing: \d+\.\d\d m\/s over the last \d+\.\d s\. Frozen for \d+\.\d s: −?\d+\.\d\d m\/s over the last [12]\.\d s\. Frozen, it (keeps only \d+% of its speed|nearly stops \(less than a tenth of its speed before, rocking on the spot\)): its changing attention is what made it walk\.$/);
   const held = await readMatrix(page);
   await page.waitForTimeout(500);
   assert.deepEqual((await readMatrix(page)).values, held.values, 'frozen, the matrix holds still');

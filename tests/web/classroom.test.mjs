@@ -278,7 +278,7 @@ test('a class challenge: its link sets the rules; three entries ranked by the pa
   assert.deepEqual(rows.slice(0, 3).map((r) => r[0]), ['1', '2', '3'], 'three ranked');
   assert.equal(rows[0][1], 'Ana', 'the attention biped first');
   assert.equal(rows[0][3], 'attention');
-  const speeds = rows.slice(0, 3).map((r) => Number.parseFloat(String(r[4])));
+  const speeds = rows.slice(0, 3).map((r) => Number.parseFloat(String(r[4]).replace('−', '-')));
   assert.ok(speeds[0] >= speeds[1] && speeds[1] >= speeds[2], `ranked by speed: ${speeds}`);
   assert.match(String(rows.find((r) => r[1] === 'Cleo')?.[4]), /damaged/);
   assert.match(String(rows.find((r) => r[1] === 'Dan')?.[4]), /another page/);

@@ -102,7 +102,7 @@ test('a race\'s CSV: every half second each robot\'s distance, ending where the 
   assert.deepEqual(times.filter((t) => t !== finish || t === 4), [0, 0.5, 1, 1.5, 2, 2.5, 3, 3.5, 4], 'a row every half second');
   assert.deepEqual(rows[1].slice(1).map(Number), [0, 0], 'both at the start line at 0 s');
   const lanes = await race.locator('[data-testid="race-robot"]').evaluateAll((els) => els.map((el) => ({
-    distance: Number(/(-?\d+\.\d) m in/.exec(el.querySelector('.race-distance')?.textContent ?? '')?.[1]),
+    distance: Number(/(−?\d+\.\d) m in/.exec(el.querySelector('.race-distance')?.textContent ?? '')?.[1].replace('−', '-')),
     speed: Number(/** @type {HTMLElement} */ (el.querySelector('[data-testid="race-speed"]')).dataset.value),
   })));
   lanes.forEach((lane, i) => {

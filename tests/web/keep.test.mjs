@@ -84,7 +84,7 @@ test('a damaged link shows a readable message and changes nothing kept', async (
   for (const [hash, pattern] of /** @type {[string, RegExp][]} */ ([
     ['#shape=101-000-101&controller=attention', /pieces/],
     ['#shape=11&controller=transformer', /unknown controller/],
-    [`#shape=${'1'.repeat(25)}&controller=mlp`, /does not fit the 20 x 10 drawing grid/],
+    [`#shape=${'1'.repeat(25)}&controller=mlp`, /does not fit the 20 × 10 drawing grid/],
     ['#shape=11&population=-5', /population "-5" is not a whole number/],
     ['#shape=11&view=lava-9', /invalid terrain/],
     ['#shape=11&train=moon', /neither a terrain family/],

@@ -32,7 +32,7 @@ after(async () => { await env?.close(); });
 
 test('the viewer\'s speed over an episode is `vsr evaluate`\'s; the distance counts from the start', async () => {
   const { page, problems, context } = await openOwnBody(env);
-  await waitForText(page, 'module-details', /budget 30000 evaluations \(it took 30100: a run finishes its last generation\)/);
+  await waitForText(page, 'module-details', /budget 30,000 evaluations \(it took 30,100: a run finishes its last generation\)/);
   await page.waitForFunction(() => Number(document.getElementById('sim-time')?.dataset.value) < 1);
   const x = await figure(page, 'robot-x');
   assert.ok(Math.abs(x) < 0.5, `the distance from the start reads ${x} m in the first second`);
@@ -56,7 +56,7 @@ test('a pretrained brain kept across a reload, or shared as a link, is measured 
   const seconds = JSON.parse(await readFile(path.join(ROOT, ATTENTION), 'utf8')).config.seconds;
   assert.equal(seconds, 30);
   const before = await speedNote(page);
-  assert.match(before, /In training: -?\d+\.\d\d m\/s \(its latest evaluation, on a hilly-1-10 terrain drawn fresh/);
+  assert.match(before, /In training: −?\d+\.\d\d m\/s \(its latest evaluation, on a hilly-1-10 terrain drawn fresh/);
   await page.locator('#run-seconds').fill('12'); // the form's episodes for the next run (10 at first)
   await page.locator('#run-seconds').press('Enter');
   await page.waitForFunction(() => /(^|&)seconds=12&.*genome=/.test(localStorage.getItem('vsr-playground/state/v1') ?? ''), undefined, { timeout: 20_000 });
@@ -119,7 +119,7 @@ test('a transplant shows its one-shot speed at once and says to fine-tune; a bud
   assert.equal(viewed, oneShot, 'the viewer measures over the episode what was measured at once');
   // The core's quick budget (a slow computer's fresh page may have made it lighter: typed here).
   await page.locator('#run-budget').fill('2000');
-  await waitForText(page, 'run-plan', /budget of 2000 evaluations.*50 generations.*takes 2020/);
+  await waitForText(page, 'run-plan', /budget of 2,000 evaluations.*50 generations.*takes 2,020/);
   await screenshot(page, 'numbers.png');
   assert.deepEqual(problems, []);
   await context.close();

@@ -12,6 +12,7 @@
  */
 import { messageOf } from '../kit.js';
 import { decodeState } from '../share.js';
+import { count, decimal } from '../format.js';
 
 /** The challenge link's query parameters. */
 const KEYS = Object.freeze(['terrain', 'seconds', 'voxels', 'body', 'budget', 'seed']);
@@ -104,7 +105,7 @@ export class Challenge {
   /** The rules in words. @param {Rules} r */
   words(r) {
     const body = r.body ? `the body ${r.body}` : r.voxels ? `any body of at most ${r.voxels} voxels` : 'any body';
-    return `Challenge: ${body}; speed measured over ${r.seconds} s on ${r.terrain}; evolve with ${r.budget} evaluations, seed ${r.seed}. `
+    return `Challenge: ${body}; speed measured over ${r.seconds} s on ${r.terrain}; evolve with ${count(r.budget)} evaluations, seed ${r.seed}. `
       + 'When your robot walks, press “Share link” and send the link to your teacher.';
   }
 
@@ -199,7 +200,7 @@ export class Challenge {
       row.dataset.problem = String(e.problem !== '');
       const cells = e.problem
         ? ['–', e.name, e.rows || '–', e.brain || '–', e.problem]
-        : [String(++place), e.name, e.rows, e.brain, `${e.speed.toFixed(2)} m/s`];
+        : [String(++place), e.name, e.rows, e.brain, `${decimal(e.speed)} m/s`];
       for (const c of cells) row.insertCell().textContent = c;
       if (!e.problem) row.cells[4].dataset.value = String(e.speed);
     }

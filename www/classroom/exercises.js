@@ -8,6 +8,7 @@
  * every key (classroom.js).
  */
 import { CHAPTERS } from '../tour/chapters.js';
+import { count, decimal, size } from '../format.js';
 
 /** A value of an attention matrix beyond ±this counts as "at +1 or −1". */
 export const SATURATED = 0.9;
@@ -29,7 +30,7 @@ export const SATURATED = 0.9;
  */
 
 /** @param {number} v @param {number} [digits] */
-const ms = (v, digits = 2) => `${(Math.abs(v) < 0.5 * 10 ** -digits ? 0 : v).toFixed(digits)} m/s`;
+const ms = (v, digits = 2) => `${decimal(v, digits)} m/s`;
 /** @param {string} rows */
 const voxels = (rows) => rows.split('').filter((c) => c === '1').length;
 /** The chapters the tasks belong to, by title (a task follows its chapter wherever it moves). */
@@ -128,9 +129,9 @@ export const TASKS = [
       const walk = await lab.walk({ rows, terrain: setup(ATTENTION).terrain, seconds, brain: { controller, genome }, saturated: SATURATED });
       const n = /** @type {number} */ (walk.saturatedPer16);
       const moved = /** @type {number[]} */ (walk.movedByRow).map((m, i) => `${['area', 'vx', 'vy', 'touch'][i]} ${Math.round(100 * m)}%`);
-      return { answer: Math.round(n), shown: `about ${n.toFixed(1)} of 16`,
+      return { answer: Math.round(n), shown: `about ${decimal(n, 1)} of 16`,
         why: `The page just walked this robot for ${seconds} s and read every voxel's matrix at every decision (three a second): on average `
-          + `${n.toFixed(1)} of the 16 values sat beyond ±${SATURATED}. Each value is a tanh (a squashing into −1 to +1) of numbers evolution made large, so it sits at −1 or +1 `
+          + `${decimal(n, 1)} of the 16 values sat beyond ±${SATURATED}. Each value is a tanh (a squashing into −1 to +1) of numbers evolution made large, so it sits at −1 or +1 `
           + `unless they nearly cancel. Share of each row's values that swung by more than 0.5 during the walk: ${moved.join(', ')}.` };
     },
   },
@@ -143,12 +144,12 @@ export const TASKS = [
       const own = lab.runBests();
       const bests = own.length >= 2 ? own : await lab.history(moduleOf(BRAIN));
       const source = own.length >= 2 ? 'this page\'s latest run'
-        : `the study's best run of this brain on this body (${bests[bests.length - 1].evaluations?.toLocaleString('en')} evaluations)`;
+        : `the study's best run of this brain on this body (${count(bests[bests.length - 1].evaluations ?? NaN)} evaluations)`;
       const first = bests[0];
       const last = bests[bests.length - 1];
       const ratio = last.fitness / first.fitness;
       const answer = first.fitness <= 0 || ratio > 10 ? 2 : ratio >= 2 ? 1 : 0;
-      const times = first.fitness > 0 ? `${ratio.toFixed(1)} times` : 'beyond any ratio (generation 0 went nowhere)';
+      const times = first.fitness > 0 ? `${decimal(ratio, 1)} times` : 'beyond any ratio (generation 0 went nowhere)';
       return { answer, shown: `${['less than 2 times', '2 to 10 times', 'more than 10 times'][answer]} (${times})`,
         why: `From ${source}: generation 0's best walked ${ms(first.fitness)} in training, the last generation's best (generation ${last.generation}) ${ms(last.fitness)}. `
           + 'Random brains barely move; each generation keeps the fastest and tries changed copies of them, and small gains pile up.'
@@ -218,13 +219,13 @@ export const TASKS = [
     unit: 'genes',
     try: 'Press “Search bodies” and read the gene count of the bodies it finds.',
     async key(lab) {
-      const box = '111-111-111'; // the search's start, a 3 x 3 box
+      const box = '111-111-111'; // the search's start, a 3 × 3 box
       const biped = /** @type {string} */ (setup(GAIT).rows);
       const [a, b] = await Promise.all([lab.check(box), lab.check(biped)]);
       const genes = (/** @type {import('../core.js').ShapeCheck} */ c) => c.params.find(([k]) => k === 'attention')?.[1] ?? NaN;
       const shared = lab.defaults.attentionGenes;
       return { answer: shared, shown: `${shared} genes`,
-        why: `The page counts ${genes(a)} genes for the 3 × 3 box (${a.voxels} voxels) and ${genes(b)} for the biped (${b.voxels} voxels). `
+        why: `The page counts ${genes(a)} genes for the ${size(3, 3)} box (${a.voxels} voxels) and ${genes(b)} for the biped (${b.voxels} voxels). `
           + `${shared} of them are the attention block, the same for any body; the rest (four weights for each voxel's place, and one bias) depend on the body or may change with it.` };
     },
   },

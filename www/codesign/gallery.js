@@ -5,6 +5,7 @@
  * by its speed (red slow, green the fastest found so far), the bodies found in the latest
  * iteration outlined. A click on a body hands its cell to the page, which loads it.
  */
+import { decimal } from '../format.js';
 
 /** @typedef {import('./protocol.js').GalleryEntry} GalleryEntry */
 /** @typedef {{columns: number, rows: number, minVoxels: number, maxVoxels: number, sizeBin: number, maxFeet: number}} Layout */
@@ -102,13 +103,13 @@ export class Gallery {
       button.onclick = () => this.pick(entry.cell, entry);
       button.classList.toggle('newest', isNew);
       button.classList.toggle('chosen', this.chosen === key);
-      const speed = entry.fitness === null ? 'fell over (no speed)' : `${entry.fitness.toFixed(2)} m/s`;
+      const speed = entry.fitness === null ? 'fell over (no speed)' : `${decimal(entry.fitness)} m/s`;
       button.title = `${entry.voxels} voxels, ${entry.feet} ${entry.feet === 1 ? 'foot' : 'feet'}: ${speed}`
         + ` (measured ${entry.measurements} time${entry.measurements === 1 ? '' : 's'}; found in round ${entry.found})`
         + `${isNew ? ', new in the latest round' : ''}. Click to watch it walk.`;
       button.setAttribute('aria-label', button.title);
       const [canvas, label] = /** @type {[HTMLCanvasElement, HTMLElement]} */ ([button.children[0], button.children[1]]);
-      label.textContent = entry.fitness === null ? '–' : entry.fitness.toFixed(2);
+      label.textContent = decimal(entry.fitness);
       drawBody(canvas, entry.shape, speedColour(entry.fitness, best));
     }
   }

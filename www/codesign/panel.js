@@ -13,7 +13,8 @@ import { messageOf, spawn } from '../kit.js';
 import { plain } from '../message.js';
 import { FromCodesign, ToCodesign } from './protocol.js';
 import { Gallery } from './gallery.js';
-import { planSearch, QUICK } from './plan.js';
+import { BOX_WORDS, planSearch, QUICK } from './plan.js';
+import { count, decimal } from '../format.js';
 
 
 /**
@@ -41,6 +42,8 @@ export class CodesignPanel {
     this.hooks = hooks;
     this.brain = /** @type {HTMLSelectElement} */ (el('codesign-brain'));
     this.from = /** @type {HTMLSelectElement} */ (el('codesign-from'));
+    const box = this.from.querySelector('option[value="box"]');
+    if (box) box.textContent = BOX_WORDS;
     this.budget = /** @type {HTMLInputElement} */ (el('codesign-budget'));
     this.seconds = /** @type {HTMLInputElement} */ (el('codesign-seconds'));
     this.buttons = {
@@ -128,7 +131,7 @@ export class CodesignPanel {
     this.bests = { firstCell: null, lastCell: null, first: null, last: null };
     const { settings, module, workers } = plan;
     this.settings = settings;
-    const from = { box: 'from a 3 x 3 box', drawing: 'from your drawing', module: 'from the module\'s own body' }[this.from.value] ?? '';
+    const from = { box: `from ${BOX_WORDS}`, drawing: 'from your drawing', module: 'from the module\'s own body' }[this.from.value] ?? '';
     this.what = `${settings.brain === 'scratch' ? `${settings.controller} from scratch`
       : `${settings.brain === 'frozen' ? 'frozen' : 'fine-tuned'} ${module?.label.replace(/ \([^()]*\)$/, '')}`}, bodies ${from}`;
     const coordinator = spawn('codesign/coordinator.js', (msg) => this.onMessage(coordinator, msg),
@@ -137,7 +140,7 @@ export class CodesignPanel {
     this.running = true;
     this.started = false;
     this.setStatus('starting…');
-    this.progress.textContent = `0 of ${settings.budget.toLocaleString('en')} evaluations`;
+    this.progress.textContent = `0 of ${count(settings.budget)} evaluations`;
     this.summary.textContent = '';
     this.summary.dataset.updateMs = '0';
     coordinator.postMessage({ type: ToCodesign.START, settings, workers, module: module?.text ?? null });
@@ -183,13 +186,13 @@ export class CodesignPanel {
     const t0 = performance.now();
     const { record, gallery } = msg;
     this.gallery.show(gallery, record.iteration);
-    this.progress.textContent = `${msg.evaluations.toLocaleString('en')} of ${msg.planned.toLocaleString('en')} evaluations`;
+    this.progress.textContent = `${count(msg.evaluations)} of ${count(msg.planned)} evaluations`;
     const best = bestEntry(gallery);
-    const rate = msg.seconds > 0 ? `, ${(msg.evaluations / msg.seconds).toFixed(1)} evaluations a second` : '';
+    const rate = msg.seconds > 0 ? `, ${decimal(msg.evaluations / msg.seconds, 1)} evaluations a second` : '';
     const rounds = record.iteration + 1;
     this.summary.textContent = `Brain: ${this.what} · ${gallery.length} kind${gallery.length === 1 ? '' : 's'} of body found (cells filled) in ${rounds} round${rounds === 1 ? '' : 's'}`
-      + (best?.fitness != null ? ` · fastest: ${best.fitness.toFixed(2)} m/s in training, ${best.voxels} voxels with ${best.feet} ${best.feet === 1 ? 'foot' : 'feet'}` : '')
-      + ` · searching for ${msg.seconds.toFixed(0)} s${rate}`;
+      + (best?.fitness != null ? ` · fastest: ${decimal(best.fitness)} m/s in training, ${best.voxels} voxels with ${best.feet} ${best.feet === 1 ? 'foot' : 'feet'}` : '')
+      + ` · searching for ${decimal(msg.seconds, 0)} s${rate}`;
     this.summary.dataset.filled = String(gallery.length);
     this.summary.dataset.best = String(best?.fitness ?? '');
     if (best) {
@@ -252,7 +255,7 @@ export class CodesignPanel {
       controller: entry.controller, genome: new Float32Array(entry.genome), rows: entry.shape, origin: { left: 0, bottom: 0 },
       module: null, source: null, seconds: this.settings?.seconds ?? null,
       trained: Number.isFinite(entry.fitness) && this.settings ? { speed: entry.fitness, terrain: this.settings.terrain } : null,
-      label: `a body found by the body search (${this.what}): ${Number.isFinite(entry.fitness) ? `${entry.fitness.toFixed(2)} m/s in training` : 'no speed'}`,
+      label: `a body found by the body search (${this.what}): ${Number.isFinite(entry.fitness) ? `${decimal(entry.fitness)} m/s in training` : 'no speed'}`,
     };
   }
 

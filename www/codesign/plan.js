@@ -5,11 +5,13 @@
  */
 import { describeRun } from '../core.js';
 import { plain } from '../message.js';
+import { size } from '../format.js';
 
 /** The quick body search: finishes in about a minute in Chromium on 2 workers (docs/playground.md). */
 export const QUICK = Object.freeze({ budget: 1000, seconds: 10, batch: 20 });
-/** The seed body "a 3 x 3 box". */
+/** The seed body, a box of 3 × 3 voxels, and its name in words. */
 const BOX = '111-111-111';
+export const BOX_WORDS = `a ${size(3, 3)} box`;
 
 /**
  * The search the panel's form describes, or what is wrong, in words.
@@ -33,7 +35,7 @@ export async function planSearch(form, hooks) {
     const body = hooks.body();
     if (!body.ok) {
       return { error: `Your drawing is not a body the search can start from${body.message ? `: ${plain(body.message)}` : ''}. `
-        + 'Draw one piece of touching voxels, or start from the module\'s own body or a 3 x 3 box.' };
+        + `Draw one piece of touching voxels, or start from the module's own body or ${BOX_WORDS}.` };
     }
     start = body.rows;
   } else if (from === 'box') {

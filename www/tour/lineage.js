@@ -8,6 +8,7 @@
  * biped-6x4 module, stopped at 20,100 evaluations, walking faster than the 30,000-evaluation
  * runs of its body is explained where both numbers are.
  */
+import { count, decimal } from '../format.js';
 
 /** Why the same run's later best can walk slower on new terrains. */
 export const LATER_NOT_FASTER = 'A run keeps as its best the robot that walked fastest in training, each walk on one freshly '
@@ -35,10 +36,10 @@ export function lineageNote(runs, name) {
   const others = run ? otherStops(runs, run) : [];
   if (!run || others.length === 0) return '';
   const stops = [run, ...others].sort((a, b) => a.evals - b.evals);
-  const at = stops.map((r) => r.evaluations.toLocaleString('en'));
-  const speeds = stops.map((r) => `${r.unseen.toFixed(2)} m/s${r === run ? ' (this one)' : ''}`);
+  const at = stops.map((r) => count(r.evaluations));
+  const speeds = stops.map((r) => `${decimal(r.unseen)} m/s${r === run ? ' (this one)' : ''}`);
   const slower = stops.some((r, i) => i > 0 && r.unseen < stops[i - 1].unseen);
-  const budgets = stops.map((r) => r.evals.toLocaleString('en'));
+  const budgets = stops.map((r) => count(r.evals));
   const passed = stops.some((r) => r.evaluations !== r.evals)
     ? ` (budgets of ${budgets.slice(0, -1).join(', ')} and ${budgets[budgets.length - 1]}: a run finishes its last generation)` : '';
   return `The study ran this seed once, its best kept at ${at.slice(0, -1).join(', ')} and ${at[at.length - 1]} evaluations${passed}: `

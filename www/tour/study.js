@@ -11,6 +11,7 @@ import { messageOf } from '../kit.js';
 import { unseenWords } from '../modules.js';
 import { FIGURES, STUDY_DIR, TABLES } from './figures.js';
 import { lineageNote } from './lineage.js';
+import { count } from '../format.js';
 
 /**
  * @typedef {object} StudyRun  a row of the campaign table
@@ -54,7 +55,7 @@ export function runsOf(figure, runs) {
 export function describe(r) {
   const [, source = r.source, sourceSeed = String(r.seed)] = r.source.match(/^(.*)-\d+-s(\d+)$/) ?? [];
   const how = r.kind === 'finetune' ? `fine-tuned from ${source}${sourceSeed === String(r.seed) ? '' : ` (its seed ${sourceSeed})`}`
-    : `from scratch, ${r.evals} evaluations`;
+    : `from scratch, ${count(r.evals)} evaluations`;
   const speed = Number.isFinite(r.unseen) ? `: ${unseenWords(r.unseen)}` : '';
   return `${r.controller} on ${r.shape}, ${how}, seed ${r.seed}${speed}`;
 }
