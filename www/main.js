@@ -163,7 +163,7 @@ const playground = {
   }),
   /** @param {string} rows drawn, driven by the phase gait */
   setBody: (rows) => robot.setBody(rows),
-  module: (/** @type {string} */ key, /** @type {string | undefined} */ label) => modules.read(key, label),
+  module: (/** @type {string} */ key, /** @type {string | undefined} */ label, /** @type {string | undefined} */ short) => modules.read(key, label, short),
   openModule: (/** @type {import('./modules.js').Module} */ module) => robot.openModule(module),
   loadModule: (/** @type {import('./modules.js').Module} */ module) => robot.loadModule(module),
   /** @param {string} terrain @param {{frequency: number, phase: number}} gait */

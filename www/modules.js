@@ -14,7 +14,10 @@ import { count, decimal } from './format.js';
 /** Where the served pretrained run files are (scripts/serve.mjs mounts pretrained/). */
 const PRETRAINED_DIR = 'pretrained/';
 
-/** @typedef {{key: string, label: string, text: string}} Module  a run file and its name */
+/**
+ * @typedef {{key: string, label: string, text: string, short?: string}} Module  a run file and its name (`label`, in full:
+ *   the driver line and a share link say it; `short`, what the list shows when the full name would not fit)
+ */
 
 /**
  * @typedef {object} ModuleHooks
@@ -41,6 +44,8 @@ export class ModuleList {
     this.held = new Map();
     /** Descriptions asked: only the latest one's answer is shown. */
     this.described = 0;
+    /** Each module's full name, by key (the list shows a short one: see {@link shortLabel}). @type {Map<string, string>} */
+    this.labels = new Map();
     /** The study run each pretrained module is (its name in the study's tables), by key. @type {Map<string, string>} */
     this.studyRunOf = new Map();
     /** The study's runs, once listed (study.js), to say beside a module where its run stopped at another budget. */
@@ -64,8 +69,11 @@ export class ModuleList {
         const speed = Number.isFinite(mean) ? `, ${unseenWords(mean)}` : '';
         const from = m.finetuned_from ? ` fine-tuned from ${m.finetuned_from}` : '';
         // The budget, as the study's lists and the tour say it (a run passes it a little: the details say by how much).
-        const label = `${m.controller} on ${m.shape}${from} (evolved with a budget of ${count(m.budget ?? m.evaluations)} evaluations${speed})`;
-        this.select.append(new Option(label, PRETRAINED_DIR + m.file));
+        const budget = count(m.budget ?? m.evaluations);
+        const label = `${m.controller} on ${m.shape}${from} (evolved with a budget of ${budget} evaluations${speed})`;
+        const group = `${m.finetuned_from ? 'fine-tuned' : 'from scratch'}, ${budget} evaluations`;
+        const short = shortLabel(m.finetuned_from ? `${m.finetuned_from} → ${m.shape}` : `${m.controller} on ${m.shape}`, mean);
+        this.list(PRETRAINED_DIR + m.file, label, short, group);
         const run = /--out \S*?([^/\s]+)\.json/.exec(m.command ?? '')?.[1];
         if (run) this.studyRunOf.set(PRETRAINED_DIR + m.file, run);
       }
@@ -74,13 +82,35 @@ export class ModuleList {
         const mean = Number(b.validation?.unseen?.mean);
         const speed = Number.isFinite(mean) ? `, ${unseenWords(mean)}` : '';
         const label = `a body found by the body search: ${b.voxels} voxels, ${b.controller} ${b.condition === 'frozen' ? 'module frozen' : `brain (${b.condition})`}${speed}`;
-        this.select.append(new Option(label, PRETRAINED_DIR + b.file));
+        const short = shortLabel(`${b.voxels} voxels, ${b.controller} ${b.condition === 'frozen' ? 'frozen' : b.condition}`, mean);
+        this.list(PRETRAINED_DIR + b.file, label, short, 'found by a body search');
       }
       this.describe();
     } catch (error) {
       this.hooks.message(`could not list the pretrained modules: ${messageOf(error)}`);
     }
     this.doneListing?.(undefined);
+  }
+
+  /**
+   * Lists a module under `group` (made when first used), its `short` name shown and its full
+   * `label` on hover (and in {@link labels}).
+   * @param {string} key @param {string} label @param {string} short @param {string} group
+   */
+  list(key, label, short, group) {
+    const groups = /** @type {HTMLOptGroupElement[]} */ ([...this.select.querySelectorAll('optgroup')]);
+    let into = groups.find((g) => g.label === group);
+    if (!into) {
+      into = this.select.ownerDocument.createElement('optgroup');
+      into.label = group;
+      this.select.append(into);
+    }
+    const existing = [...this.select.options].find((o) => o.value === key);
+    const option = existing ?? new Option(short, key);
+    option.text = short;
+    option.title = label;
+    this.labels.set(key, label);
+    if (!existing) into.append(option);
   }
 
   /** The study's runs are listed: a module's note says where its run stopped at another budget. @param {import('./tour/study.js').StudyRun[]} runs */
@@ -97,8 +127,7 @@ export class ModuleList {
   async add(module, choose = true) {
     await describeRun(module.text);
     this.held.set(module.key, module);
-    const existing = [...this.select.options].find((o) => o.value === module.key);
-    if (existing) existing.text = module.label; else this.select.append(new Option(module.label, module.key));
+    this.list(module.key, module.label, module.short ?? module.label, 'opened, imported or run here');
     if (!choose) return;
     this.select.value = module.key;
     this.describe();
@@ -118,7 +147,7 @@ export class ModuleList {
     const held = this.held.get(key);
     if (held) return held;
     const text = await fetchOk(key).then((r) => r.text());
-    const module = { key, label: this.select.selectedOptions[0]?.text ?? key, text };
+    const module = { key, label: this.labels.get(key) ?? this.select.selectedOptions[0]?.text ?? key, text };
     this.held.set(key, module);
     return module;
   }
@@ -160,10 +189,10 @@ export class ModuleList {
 
   /**
    * The module `key` (a served run file: pretrained/ or the study's runs), read and chosen in
-   * the list; one not listed yet is added under `label`.
-   * @param {string} key @param {string} [label] @returns {Promise<Module>}
+   * the list; one not listed yet is added under `label` (the list shows `short`, if given).
+   * @param {string} key @param {string} [label] @param {string} [short] @returns {Promise<Module>}
    */
-  async read(key, label = key) {
+  async read(key, label = key, short = undefined) {
     await this.listed;
     if ([...this.select.options].some((o) => o.value === key)) {
       this.choose(key);
@@ -171,7 +200,7 @@ export class ModuleList {
       if (module) return module;
     }
     const text = await fetchOk(key).then((r) => r.text());
-    await this.add({ key, label, text });
+    await this.add({ key, label, text, short });
     return /** @type {Module} */ (this.held.get(key));
   }
 
@@ -197,6 +226,15 @@ export class ModuleList {
 export function bodyWords(rows, presets) {
   const name = presets.find((p) => p.rows === rows)?.name;
   return name ? `${name} (rows ${rows})` : `a body of ${rows.split('').filter((c) => c === '1').length} voxels (rows ${rows})`;
+}
+
+/**
+ * A module's name as the list shows it, short enough for a phone's width: what it is, then its
+ * mean speed on the unseen terrains (the list's title and the details say what that speed is).
+ * @param {string} what @param {number} mean m/s (NaN: not known)
+ */
+export function shortLabel(what, mean) {
+  return Number.isFinite(mean) ? `${what} · ${decimal(mean)} m/s` : what;
 }
 
 /**

@@ -36,7 +36,10 @@ test('numbers that agree: a module stopped at 20,100 evaluations and the same ru
   const stop30 = unseen.get('biped-6x4-attention-30000-s1');
   assert.equal(module.validation.unseen.mean, stop20, 'the module is the 20,000-evaluation run of seed 1');
   await byTestId(page, 'pretrained').selectOption('pretrained/biped-6x4-attention.json');
-  const label = String(await byTestId(page, 'pretrained').locator('option:checked').textContent());
+  const chosen = byTestId(page, 'pretrained').locator('option:checked');
+  assert.equal(await chosen.textContent(), `attention on biped-6x4 · ${Number(stop20).toFixed(2)} m/s`, 'the list shows what it is and its speed');
+  assert.equal(await chosen.evaluate((o) => /** @type {HTMLOptGroupElement} */ (o.parentElement).label), 'from scratch, 20,000 evaluations');
+  const label = String(await chosen.getAttribute('title'));
   assert.match(label, new RegExp(`evolved with a budget of 20,000 evaluations, on average ${Number(stop20).toFixed(2)} m/s`));
   // Beside it: the same run's best at 30,100, the number the study panel lists, and why it is slower.
   const details = page.locator('#module-details');

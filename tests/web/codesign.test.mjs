@@ -235,7 +235,10 @@ test('a body the study\'s body search found is listed with the modules, describe
   const key = `pretrained/${body.file}`;
   const { page, problems } = await openPage(env.browser, env.url);
   await page.locator(`#module option[value="${key}"]`).waitFor({ state: 'attached' });
-  assert.match(String(await page.locator(`#module option[value="${key}"]`).textContent()), new RegExp(`^a body found by the body search: ${body.voxels} voxels`));
+  const option = page.locator(`#module option[value="${key}"]`);
+  assert.match(String(await option.getAttribute('title')), new RegExp(`^a body found by the body search: ${body.voxels} voxels`));
+  assert.match(String(await option.textContent()), new RegExp(`^${body.voxels} voxels, attention frozen · \\d\\.\\d\\d m/s$`));
+  assert.equal(await option.evaluate((o) => /** @type {HTMLOptGroupElement} */ (o.parentElement).label), 'found by a body search');
   await byTestId(page, 'pretrained').selectOption(key);
   await waitForText(page, 'module-details', new RegExp(`a body of ${body.voxels} voxels \\(rows ${body.rows}\\) found by a body search`));
   await page.locator('#module-open').click();

@@ -8,7 +8,7 @@
  */
 import { withStats } from '../classroom/simple-words.js';
 import { messageOf } from '../kit.js';
-import { unseenWords } from '../modules.js';
+import { shortLabel, unseenWords } from '../modules.js';
 import { FIGURES, STUDY_DIR, TABLES } from './figures.js';
 import { lineageNote } from './lineage.js';
 import { count } from '../format.js';
@@ -63,7 +63,7 @@ export function describe(r) {
 export class StudyPanel {
   /**
    * @param {Document} doc
-   * @param {{module: (key: string, label?: string) => Promise<import('../modules.js').Module>,
+   * @param {{module: (key: string, label?: string, short?: string) => Promise<import('../modules.js').Module>,
    *   openModule: (module: import('../modules.js').Module) => void, message: (text: string) => void}} page
    */
   constructor(doc, page) {
@@ -123,7 +123,8 @@ export class StudyPanel {
     const run = this.runs.find((r) => r.run === this.runPick.value);
     if (!run) return;
     try {
-      const module = await this.page.module(`${STUDY_DIR}runs/${run.run}.json`, `study: ${describe(run)}`);
+      const module = await this.page.module(`${STUDY_DIR}runs/${run.run}.json`, `study: ${describe(run)}`,
+        shortLabel(`${run.controller} on ${run.shape}, seed ${run.seed}`, run.unseen));
       await this.page.openModule(module);
       this.section.ownerDocument.getElementById('watch-panel')?.scrollIntoView({ block: 'start', behavior: 'instant' });
     } catch (error) {
