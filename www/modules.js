@@ -46,6 +46,8 @@ export class ModuleList {
     this.described = 0;
     /** Each module's full name, by key (the list shows a short one: see {@link shortLabel}). @type {Map<string, string>} */
     this.labels = new Map();
+    /** Each pretrained module's mean speed on the study's unseen terrains (m/s), by key: the list's number. @type {Map<string, number>} */
+    this.unseen = new Map();
     /** The study run each pretrained module is (its name in the study's tables), by key. @type {Map<string, string>} */
     this.studyRunOf = new Map();
     /** The study's runs, once listed (study.js), to say beside a module where its run stopped at another budget. */
@@ -73,7 +75,7 @@ export class ModuleList {
         const label = `${m.controller} on ${m.shape}${from} (evolved with a budget of ${budget} evaluations${speed})`;
         const group = `${m.finetuned_from ? 'fine-tuned' : 'from scratch'}, ${budget} evaluations`;
         const short = shortLabel(m.finetuned_from ? `${m.finetuned_from} → ${m.shape}` : `${m.controller} on ${m.shape}`, mean);
-        this.list(PRETRAINED_DIR + m.file, label, short, group);
+        this.list(PRETRAINED_DIR + m.file, label, short, group, mean);
         const run = /--out \S*?([^/\s]+)\.json/.exec(m.command ?? '')?.[1];
         if (run) this.studyRunOf.set(PRETRAINED_DIR + m.file, run);
       }
@@ -83,7 +85,7 @@ export class ModuleList {
         const speed = Number.isFinite(mean) ? `, ${unseenWords(mean)}` : '';
         const label = `a body found by the body search: ${b.voxels} voxels, ${b.controller} ${b.condition === 'frozen' ? 'module frozen' : `brain (${b.condition})`}${speed}`;
         const short = shortLabel(`${b.voxels} voxels, ${b.controller} ${b.condition === 'frozen' ? 'frozen' : b.condition}`, mean);
-        this.list(PRETRAINED_DIR + b.file, label, short, 'found by a body search');
+        this.list(PRETRAINED_DIR + b.file, label, short, 'found by a body search', mean);
       }
       this.describe();
     } catch (error) {
@@ -96,8 +98,9 @@ export class ModuleList {
    * Lists a module under `group` (made when first used), its `short` name shown and its full
    * `label` on hover (and in {@link labels}).
    * @param {string} key @param {string} label @param {string} short @param {string} group
+   * @param {number} [mean] its mean speed on the unseen terrains (m/s), the number in `short`
    */
-  list(key, label, short, group) {
+  list(key, label, short, group, mean = NaN) {
     const groups = /** @type {HTMLOptGroupElement[]} */ ([...this.select.querySelectorAll('optgroup')]);
     let into = groups.find((g) => g.label === group);
     if (!into) {
@@ -110,6 +113,7 @@ export class ModuleList {
     option.text = short;
     option.title = label;
     this.labels.set(key, label);
+    if (Number.isFinite(mean)) this.unseen.set(key, mean);
     if (!existing) into.append(option);
   }
 
@@ -171,13 +175,17 @@ export class ModuleList {
       if (ticket !== this.described) return; // another module was chosen meanwhile
       if (!info) { this.details.textContent = ''; return; }
       const body = (/** @type {string} */ rows) => bodyWords(rows, this.presets);
-      const what = info.foundBySearch ? `${body(info.shape)} found by a body search` : `${info.finetunedFrom ? 'fine-tuned' : 'evolved'} on ${body(info.shape)}`;
-      this.details.textContent = `${info.controller}, ${info.genes} genes, ${what}`
-        + `${info.finetunedFrom ? ` from a module evolved on ${body(info.finetunedFrom)}` : ''} (seed ${info.seed}, budget ${count(info.budget)} evaluations${info.evaluations > info.budget
-          ? ` (it took ${count(info.evaluations)}: a ${info.foundBySearch ? 'search finishes its last round' : 'run finishes its last generation'})` : ''}, `
-        + `${info.seconds}-s episodes on ${info.terrain}; in training ${decimal(info.fitness)} m/s)`;
+      const rows = info.foundBySearch ? `drives ${body(info.shape)} found by a body search`
+        : `was ${info.finetunedFrom ? 'fine-tuned' : 'evolved'} on ${body(info.shape)}`
+          + `${info.finetunedFrom ? ` from a module evolved on ${body(info.finetunedFrom)},` : ''}`;
+      const took = info.evaluations > info.budget
+        ? ` (it took ${count(info.evaluations)}: a ${info.foundBySearch ? 'search finishes its last round' : 'run finishes its last generation'})` : '';
+      this.details.textContent = `This ${info.controller} brain of ${count(info.genes)} genes ${rows} with seed ${info.seed} and a budget of `
+        + `${count(info.budget)} evaluations${took}, in ${info.seconds}-s episodes on ${info.terrain}; in training it walked ${decimal(info.fitness)} m/s.`;
       const lineage = lineageNote(this.studyRuns, this.studyRunOf.get(module?.key ?? '') ?? '');
-      if (lineage) this.details.textContent += `. ${lineage}`;
+      const unseen = this.unseen.get(module?.key ?? '');
+      if (lineage) this.details.textContent += ` ${lineage}`;
+      else if (unseen !== undefined) this.details.textContent += ` On ten terrains it never trained on, it averages ${decimal(unseen)} m/s, the speed beside it in the list.`;
       this.loadButton.title = info.controller === 'attention'
         ? `Put it on your robot: it keeps its ${this.attentionGenes} attention genes (the block every voxel shares); `
           + 'the rest of its brain (each voxel position\'s output weights) is drawn new for your body'

@@ -141,7 +141,7 @@ test('Evolve runs live on the chosen workers, the best walks, Export and Import 
   await byTestId(page, 'preset').selectOption({ label: 'comb-7x2' });
   await waitForText(page, 'status', /^11 voxels/);
   await byTestId(page, 'import').setInputFiles(file);
-  await waitForText(page, 'module-details', /attention, 73 genes, evolved on biped-4x3 \(rows 1111-1111-1001\)/);
+  await waitForText(page, 'module-details', /This attention brain of 73 genes was evolved on biped-4x3 \(rows 1111-1111-1001\) with seed/);
   await page.locator('#module-open').click();
   await waitForText(page, 'status', /^10 voxels, attention$/);
   assert.equal(await page.locator('#rows').inputValue(), '1111-1111-1001');

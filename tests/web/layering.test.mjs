@@ -46,7 +46,7 @@ test('the page\'s main thread loads no wasm: drawing, a transplant and a link ar
   assert.match(String(await page.locator('#param-count').textContent()), /^85 genes: 32 for the attention block, shared by every voxel, 52 for the outputs, .*each voxel adds 4.*and 1 bias shared by every voxel$/);
   await waitForText(page, 'shape-status', /^13 voxels · 11111-11111-10101$/);
   await byTestId(page, 'pretrained').selectOption('pretrained/biped-4x3-attention.json');
-  await waitForText(page, 'module-details', /^attention, 73 genes, evolved on biped-4x3 \(rows 1111-1111-1001\)/);
+  await waitForText(page, 'module-details', /^This attention brain of 73 genes was evolved on biped-4x3 \(rows 1111-1111-1001\) with seed/);
   await byTestId(page, 'load-pretrained').click();
   await waitForText(page, 'driver', /a module transplanted from biped-4x3:/);
   await waitForText(page, 'status', /^13 voxels, attention$/);

@@ -32,7 +32,7 @@ after(async () => { await env?.close(); });
 
 test('the viewer\'s speed over an episode is `vsr evaluate`\'s; the distance counts from the start', async () => {
   const { page, problems, context } = await openOwnBody(env);
-  await waitForText(page, 'module-details', /budget 30,000 evaluations \(it took 30,100: a run finishes its last generation\)/);
+  await waitForText(page, 'module-details', /a budget of 30,000 evaluations \(it took 30,100: a run finishes its last generation\)/);
   await page.waitForFunction(() => Number(document.getElementById('sim-time')?.dataset.value) < 1);
   const x = await figure(page, 'robot-x');
   assert.ok(Math.abs(x) < 0.5, `the distance from the start reads ${x} m in the first second`);
