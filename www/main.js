@@ -94,7 +94,9 @@ const runs = new RunPanel(document, defaults, {
   message: showMessage,
   note: (text) => messages.show(text, 'note'),
 });
-const estimate = new RunEstimate(/** @type {HTMLElement} */ (document.getElementById('run-estimate')), runs.form, () => runs.pace, () => drawing.rows(), defaults.quick);
+const estimate = new RunEstimate(/** @type {HTMLElement} */ (document.getElementById('run-estimate')), runs.form, () => runs.pace, () => drawing.rows(), defaults.quick,
+  () => runs.compare.checked);
+runs.compare.addEventListener('change', () => estimate.refresh());
 robot = new Robot(document, { defaults, drawing, editor, viewer, messages, speedNote, runs, keep: () => keeper.schedule() });
 follower = new RunFollower(robot, modules, () => runs.mode === 'finetune');
 const bodySearch = new CodesignPanel(document, {

@@ -7,6 +7,8 @@
  * pauses excluded), or, before any run, the page's own measure as it opens (pace.js: a few
  * seconds of evaluations of random brains in evaluation workers of its own, the very evaluation
  * a run makes). The quick settings are made lighter where they would take well over a minute.
+ * With the from-scratch comparison switched on, a fine-tune is two runs of the same budget on
+ * the same body, one after the other: the estimate says both.
  * The viewer's simulation pace was tried first and missed by 1.5 to 6 times (it
  * warms up, and it steps a few frames at a time).
  */
@@ -48,13 +50,15 @@ export class RunEstimate {
    * @param {() => number} pace the latest run's pace (NaN: none yet)
    * @param {() => string} rows the body drawn now
    * @param {import('./core.js').RunPreset} quick the core's quick settings
+   * @param {() => boolean} [compare] whether a fine-tune is followed by a run from scratch (the form's box)
    */
-  constructor(out, form, pace, rows, quick) {
+  constructor(out, form, pace, rows, quick, compare = () => false) {
     this.out = out;
     this.form = form;
     this.pace = pace;
     this.rows = rows;
     this.quick = quick;
+    this.compare = compare;
     /** This computer's pace as measured when the page opened (NaN until then, or if it failed). */
     this.measured = NaN;
     /** The quick budget made lighter for this computer, and the core's (null: not lighter). @type {{budget: number, from: number} | null} */
@@ -109,14 +113,17 @@ export class RunEstimate {
       workers: this.form.number('workers') };
     const last = this.pace();
     const took = locked ? NaN : estimateSeconds(run, this.currentPace());
-    this.out.dataset.value = String(took);
+    this.out.dataset.value = String(took); // one run
+    const two = this.compare() ? 2 * took : NaN; // a fine-tune and its comparison
+    this.out.dataset.total = String(Number.isFinite(two) ? two : took);
     this.out.dataset.from = Number.isFinite(last) ? 'last-run' : 'measured';
     const pace = Number.isFinite(last) ? 'At the pace of the last run here' : 'At this computer\'s speed, measured as the page opened';
     const lighter = this.lighter && this.form.number('budget') === this.lighter.budget
       ? ` The quick settings are lighter on this computer: ${count(this.lighter.budget)} evaluations, not `
         + `${count(this.lighter.from)} (about ${durationWords(estimateSeconds({ ...run, evaluations: this.lighter.from + this.form.number('population') }, this.currentPace()))} here).` : '';
     this.out.textContent = Number.isFinite(took)
-      ? `${pace}, that is about ${durationWords(took)} on ${run.workers} worker${run.workers === 1 ? '' : 's'}.${lighter}`
+      ? `${pace}, that is about ${durationWords(took)}${Number.isFinite(two) ? ' a run' : ''} on ${run.workers} worker${run.workers === 1 ? '' : 's'}`
+        + `${Number.isFinite(two) ? `; Fine-tune with the from-scratch comparison makes two runs, about ${durationWords(two)} in all` : ''}.${lighter}`
       : '';
     this.out.hidden = !this.out.textContent;
   }

@@ -181,6 +181,23 @@ test('the quick settings are lighter where this computer would take over 90 s, a
   assert.match(out.textContent, /^At the pace of the last run here, that is about 33 s on 2 workers\. The quick settings are lighter on this computer: 200 evaluations, not 2,000 \(about 5 min 0 s here\)\.$/);
 });
 
+test('with the from-scratch comparison switched on, the estimate covers the fine-tune and the run after it', () => {
+  /** @type {Record<string, number>} */ const form = { workers: 2, seconds: 10, budget: 2000, population: 20 };
+  const fake = { quick: (/** @type {any} */ p) => p, number: (/** @type {string} */ k) => form[k], planned: 2020, untouched: false,
+    inputs: { budget: { disabled: false } }, preset: () => {} };
+  const out = /** @type {any} */ ({ dataset: {}, textContent: '', hidden: true });
+  let compare = false;
+  const estimate = new RunEstimate(out, /** @type {any} */ (fake), () => 101_000 / 60, () => '1111-1111-1001', form, () => compare);
+  clearInterval(estimate.timer);
+  estimate.refresh();
+  assert.equal(out.textContent, 'At the pace of the last run here, that is about 1 min 0 s on 2 workers.');
+  compare = true;
+  estimate.refresh();
+  assert.equal(out.textContent, 'At the pace of the last run here, that is about 1 min 0 s a run on 2 workers; '
+    + 'Fine-tune with the from-scratch comparison makes two runs, about 2 min 0 s in all.');
+  assert.equal(Number(out.dataset.total), 2 * Number(out.dataset.value), 'the two runs\' time, beside one run\'s');
+});
+
 test('Pause holds, Step runs one generation, Stop ends the run and keeps its run file', async () => {
   await fillRun({ population: '4', seconds: '1', budget: '30000', seed: '2', workers: '2' });
   await byTestId(page, 'evolve').click();
