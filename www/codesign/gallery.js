@@ -2,8 +2,9 @@
 /**
  * The body-search gallery: the archive as a grid, body size (voxels) across and number of feet
  * up, each filled cell its best body drawn small on a canvas (no element per voxel), coloured
- * by its speed (red slow, green the fastest found so far), the bodies found in the latest
- * iteration outlined. A click on a body hands its cell to the page, which loads it.
+ * by its speed on one scale (red 0 m/s, yellow half the fastest, green the fastest found so far;
+ * the legend's strip is painted from the same scale), the bodies found in the latest iteration
+ * outlined. A click on a body hands its cell to the page, which loads it.
  */
 import { decimal } from '../format.js';
 
@@ -14,11 +15,36 @@ import { decimal } from '../format.js';
 const BODY_W = 72;
 const BODY_H = 44;
 
-/** A speed as a colour: red (0 m/s or less) through yellow to green (`best`). @param {number | null} speed @param {number} best */
+/**
+ * The speed scale, the one place its colours are: red at 0 m/s (or less), yellow at half the
+ * fastest, green at the fastest found so far (mixed in between: orange, yellow-green).
+ */
+const SCALE = [[205, 45, 40], [235, 185, 30], [40, 160, 70]];
+/** A body that fell over (no speed). */
+export const NO_SPEED = 'rgb(150, 150, 150)';
+
+/** The scale's colour at `t` (0: 0 m/s, 1: the fastest). @param {number} t */
+function scaleAt(t) {
+  const x = Math.max(0, Math.min(1, t)) * (SCALE.length - 1);
+  const i = Math.min(SCALE.length - 2, Math.floor(x));
+  const f = x - i;
+  const [r, g, b] = SCALE[i].map((v, k) => Math.round(v + f * (SCALE[i + 1][k] - v)));
+  return `rgb(${r}, ${g}, ${b})`;
+}
+
+/** A speed as a colour on the scale: `best` is green. @param {number | null} speed @param {number} best */
 export function speedColour(speed, best) {
-  if (speed === null || !Number.isFinite(speed)) return 'hsl(0 0% 60%)';
-  const t = best > 0 ? Math.max(0, Math.min(1, speed / best)) : 0;
-  return `hsl(${Math.round(120 * t)} 70% 42%)`;
+  if (speed === null || !Number.isFinite(speed)) return NO_SPEED;
+  return scaleAt(best > 0 ? speed / best : 0);
+}
+
+/**
+ * Paints the legend from the scale: `strip` as the scale from 0 m/s to the fastest, `none` as
+ * a body with no speed. @param {HTMLElement | null} strip @param {HTMLElement | null} none
+ */
+export function paintLegend(strip, none) {
+  if (strip) strip.style.background = `linear-gradient(to right, ${[0, 0.25, 0.5, 0.75, 1].map(scaleAt).join(', ')})`;
+  if (none) none.style.background = NO_SPEED;
 }
 
 /** The voxel counts of size column `c`, in words. @param {Layout} layout @param {number} c */

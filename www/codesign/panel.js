@@ -12,7 +12,7 @@ import { download } from '../export.js';
 import { messageOf, spawn } from '../kit.js';
 import { plain } from '../message.js';
 import { FromCodesign, ToCodesign } from './protocol.js';
-import { Gallery } from './gallery.js';
+import { Gallery, paintLegend } from './gallery.js';
 import { BOX_WORDS, planSearch, QUICK } from './plan.js';
 import { count, decimal } from '../format.js';
 
@@ -55,6 +55,7 @@ export class CodesignPanel {
     this.summary = /** @type {HTMLElement} */ (el('codesign-summary'));
     this.status = /** @type {HTMLElement} */ (el('codesign-status'));
     this.gallery = new Gallery(el('codesign-gallery'), (cell) => this.load(cell));
+    paintLegend(el('codesign-scale'), el('codesign-no-speed'));
     /** @type {Worker | null} */
     this.coordinator = null;
     this.running = false;
