@@ -179,7 +179,8 @@ test('a wrong module and a drawing that is no body are refused in words that sta
   await byTestId(page, 'codesign-brain').selectOption('frozen');
   await byTestId(page, 'codesign').click();
   await waitForText(page, 'message', /The body search did not start: this module is mlp-comm, not attention: only an attention module can be reassembled into other bodies/);
-  await waitForText(page, 'codesign-status', /^not started$/);
+  await waitForText(page, 'codesign-status', /^The search did not start: the message at the top of the page says why\.$/);
+  assert.equal(await page.evaluate(() => document.body.dataset.codesign), 'not');
   assert.equal(await byTestId(page, 'codesign-body').count(), 0);
   await page.waitForTimeout(2000);
   assert.match(String(await page.locator('#message').textContent()), /only an attention module/, 'the words stay');

@@ -16,6 +16,8 @@ import { Gallery, paintLegend } from './gallery.js';
 import { BOX_WORDS, planSearch, QUICK } from './plan.js';
 import { count, decimal } from '../format.js';
 
+/** The status of a search that could not start (the message at the top says why). */
+const NOT_STARTED = 'The search did not start: the message at the top of the page says why.';
 
 /**
  * @typedef {object} CodesignHooks
@@ -52,6 +54,8 @@ export class CodesignPanel {
       export: /** @type {HTMLButtonElement} */ (el('codesign-export')),
     };
     this.progress = /** @type {HTMLElement} */ (el('codesign-progress'));
+    /** The dot between the progress and the status, shown once there is a progress to say. */
+    this.sep = /** @type {HTMLElement} */ (el('codesign-sep'));
     this.summary = /** @type {HTMLElement} */ (el('codesign-summary'));
     this.status = /** @type {HTMLElement} */ (el('codesign-status'));
     this.gallery = new Gallery(el('codesign-gallery'), (cell) => this.load(cell));
@@ -140,8 +144,8 @@ export class CodesignPanel {
     this.coordinator = coordinator;
     this.running = true;
     this.started = false;
-    this.setStatus('starting…');
     this.progress.textContent = `0 of ${count(settings.budget)} evaluations`;
+    this.setStatus('starting…');
     this.summary.textContent = '';
     this.summary.dataset.updateMs = '0';
     coordinator.postMessage({ type: ToCodesign.START, settings, workers, module: module?.text ?? null });
@@ -151,7 +155,7 @@ export class CodesignPanel {
   /** A search that cannot start: says why. @param {string} why */
   refuse(why) {
     this.hooks.message(`The body search did not start: ${why}`);
-    this.setStatus('not started');
+    this.setStatus(NOT_STARTED, 'not');
     this.update();
   }
 
@@ -176,7 +180,7 @@ export class CodesignPanel {
       case FromCodesign.DONE: this.onDone(msg); break;
       case FromCodesign.ERROR:
         this.end(from, this.started ? `The body search failed: ${plain(msg.message)}` : `The body search did not start: ${plain(msg.message)}`,
-          this.started ? 'failed' : 'not started');
+          this.started ? 'failed' : NOT_STARTED);
         break;
       default: console.warn('unknown message from the body-search coordinator', msg);
     }
@@ -270,10 +274,15 @@ export class CodesignPanel {
     this.hooks.race([racer(first, 'best after the first round'), racer(last, 'best at the end')]);
   }
 
-  /** @param {string} text */
-  setStatus(text) {
+  /**
+   * Says where the search is, after its progress (the dot between them only once there is a
+   * progress). @param {string} text @param {string} [state] body's data-codesign (default: the first word)
+   */
+  setStatus(text, state = text === NOT_STARTED ? 'not' : text.split(' ')[0].replace('…', '')) {
     this.status.textContent = text;
-    document.body.dataset.codesign = text.split(' ')[0].replace('…', '');
+    if (text === NOT_STARTED) this.progress.textContent = ''; // no evaluations to count
+    this.sep.hidden = !this.progress.textContent;
+    document.body.dataset.codesign = state;
   }
 
   /** Enables what applies now. */
