@@ -105,7 +105,7 @@ export class Challenge {
   /** The rules in words. @param {Rules} r */
   words(r) {
     const body = r.body ? `the body ${r.body}` : r.voxels ? `any body of at most ${r.voxels} voxels` : 'any body';
-    return `Challenge: ${body}; speed measured over ${r.seconds} s on ${r.terrain}; evolve with ${count(r.budget)} evaluations, seed ${r.seed}. `
+    return `Challenge: ${body}; speed measured over ${r.seconds} s on ${r.terrain}; evolve with ${Number.isFinite(Number(r.budget)) ? count(Number(r.budget)) : r.budget} evaluations, seed ${r.seed}. `
       + 'When your robot walks, press “Share link” and send the link to your teacher.';
   }
 
