@@ -289,7 +289,7 @@ test('a class challenge: its link sets the rules; three entries ranked by the pa
   await page.context().close();
 
   const student = await openPage(env.browser, `${challengeUrl.replace(/^https?:\/\/[^/]+\//, env.url)}`, { width: 1400, height: 900 });
-  await waitForText(student.page, 'challenge-rules', /speed measured over 30 s on hilly-1-10-0; evolve with 2000 evaluations, seed 1/);
+  await waitForText(student.page, 'challenge-rules', /speed measured over 30 s on hilly-1-10-0; evolve with 2,000 evaluations, seed 1/);
   assert.equal(await student.page.locator('#terrain').inputValue(), 'hilly-1-10-0');
   assert.equal(await student.page.locator('#run-budget').inputValue(), '2000');
   assert.deepEqual(student.problems, []);
