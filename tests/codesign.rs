@@ -231,46 +231,23 @@ fn a_found_body_is_a_module_for_finetune_and_codesign() {
         .unwrap()
         .genome[..vsr::controllers::ATTENTION_PARAMS]
         .to_vec();
+    // a short run of `command` from the found body, written to `out`
+    let from_body = |command: &[&str], out: &Path| {
+        let (body, out) = (body.to_str().unwrap(), out.to_str().unwrap());
+        let small = ["--evals", "20", "--seconds", "2", "--seed", "1"];
+        vsr(&[command, &["--from", body, "--out", out], &small[..]].concat())
+    };
     let out = dir.join("finetuned.json");
-    let o = vsr(&[
-        "finetune",
-        "--from",
-        body.to_str().unwrap(),
-        "--shape",
-        "biped-4x3",
-        "--evals",
-        "20",
-        "--population",
-        "10",
-        "--seconds",
-        "2",
-        "--seed",
-        "1",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let o = from_body(
+        &["finetune", "--shape", "biped-4x3", "--population", "10"],
+        &out,
+    );
     assert!(o.status.success(), "{}", text(&o));
     let run = RunFile::from_json(&std::fs::read_to_string(&out).unwrap()).unwrap();
     // fine-tuning never touches the attention block (SPEC 10)
     assert_eq!(run.best.genome[..block.len()], block[..]);
     let out = dir.join("bodies.json");
-    let o = vsr(&[
-        "codesign",
-        "--brain",
-        "frozen",
-        "--from",
-        body.to_str().unwrap(),
-        "--evals",
-        "20",
-        "--batch",
-        "10",
-        "--seconds",
-        "2",
-        "--seed",
-        "1",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let o = from_body(&["codesign", "--brain", "frozen", "--batch", "10"], &out);
     assert!(o.status.success(), "{}", text(&o));
     let run = CodesignRun::from_json(&std::fs::read_to_string(&out).unwrap()).unwrap();
     assert!(run

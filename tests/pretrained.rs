@@ -5,9 +5,9 @@
 //! when the campaign validated it. The same for the bodies of body searches (`bodies/`):
 //! each is its run file's best, the archive entry the manifest names.
 
-use vsr::experiment::run::RunFile;
+use vsr::experiment::run::{Best, RunFile};
 use vsr::experiment::validation::validate_on;
-use vsr::study::campaign::export::{Manifest, FORMAT, VERSION};
+use vsr::study::campaign::export::{Manifest, Provenance, FORMAT, VERSION};
 
 fn pretrained(path: &str) -> String {
     let full = format!("{}/pretrained/{path}", env!("CARGO_MANIFEST_DIR"));
@@ -16,6 +16,23 @@ fn pretrained(path: &str) -> String {
 
 fn manifest() -> Manifest {
     serde_json::from_str(&pretrained("manifest.json")).expect("a manifest")
+}
+
+/// The record's seed and command agree, and `best` re-validates on both sets to exactly the
+/// velocities, median and mean the record holds.
+fn replays_to(p: &Provenance, best: &Best, seconds: f64, file: &str) {
+    assert!(p.command.contains(&format!("--seed {}", p.seed)), "{file}");
+    assert_eq!(p.validation.len(), 2, "{file}: both validation sets");
+    for (&set, recorded) in &p.validation {
+        let v = validate_on(best, set, seconds).expect("validates");
+        let replayed: Vec<f64> = v.terrains.iter().map(|t| t.velocity).collect();
+        assert_eq!(replayed, recorded.velocities, "{file}: {set} velocities");
+        assert_eq!(
+            (v.median, v.mean),
+            (recorded.median, recorded.mean),
+            "{file}: {set}"
+        );
+    }
 }
 
 #[test]
@@ -29,24 +46,16 @@ fn every_pretrained_module_replays_to_its_recorded_figures() {
     for m in &manifest.modules {
         let file = &m.file;
         let run = RunFile::from_json(&pretrained(file)).expect("a valid run file");
-        assert_eq!(run.config.seed, m.seed, "{file}: seed");
+        assert_eq!(run.config.seed, m.provenance.seed, "{file}: seed");
         assert_eq!(run.best.controller, m.controller, "{file}: controller");
         assert_eq!(run.best.shape.to_rows(), m.rows, "{file}: shape");
-        assert_eq!(run.best.fitness, m.training_best, "{file}: best fitness");
+        assert_eq!(
+            run.best.fitness, m.provenance.training_best,
+            "{file}: best fitness"
+        );
         let last = run.generations.last().map(|g| g.evaluations);
-        assert_eq!(last, Some(m.evaluations), "{file}: evaluations");
-        assert!(m.command.contains(&format!("--seed {}", m.seed)), "{file}");
-        assert_eq!(m.validation.len(), 2, "{file}: both validation sets");
-        for (&set, recorded) in &m.validation {
-            let v = validate_on(&run.best, set, run.config.seconds).expect("validates");
-            let replayed: Vec<f64> = v.terrains.iter().map(|t| t.velocity).collect();
-            assert_eq!(replayed, recorded.velocities, "{file}: {set} velocities");
-            assert_eq!(
-                (v.median, v.mean),
-                (recorded.median, recorded.mean),
-                "{file}: {set}"
-            );
-        }
+        assert_eq!(last, Some(m.provenance.evaluations), "{file}: evaluations");
+        replays_to(&m.provenance, &run.best, run.config.seconds, file);
     }
 }
 
@@ -72,12 +81,14 @@ fn every_pretrained_body_replays_to_its_recorded_figures() {
     for b in &manifest().bodies {
         let file = &b.file;
         let run = CodesignRun::from_json(&pretrained(file)).expect("a co-design run file");
-        assert_eq!(run.config.seed, b.seed, "{file}: seed");
+        assert_eq!(run.config.seed, b.provenance.seed, "{file}: seed");
         assert_eq!(run.best.shape.to_rows(), b.rows, "{file}: body");
         assert_eq!(run.archive.len(), 1, "{file}: the archive cut to the best");
-        assert_eq!(run.archive[0].fitness, b.training_best, "{file}: fitness");
+        assert_eq!(
+            run.archive[0].fitness, b.provenance.training_best,
+            "{file}: fitness"
+        );
         assert!(run.is_complete(), "{file}: a finished run");
-        assert!(b.command.contains(&format!("--seed {}", b.seed)), "{file}");
         // The run file it came from holds the same body and brain at the entry named.
         let source = format!("{}/{}", env!("CARGO_MANIFEST_DIR"), b.run_file);
         if let Ok(text) = std::fs::read_to_string(&source) {
@@ -89,17 +100,7 @@ fn every_pretrained_body_replays_to_its_recorded_figures() {
             );
             assert_eq!(whole.best, run.best, "{file}: the run's best");
         }
-        assert_eq!(b.validation.len(), 2, "{file}: both validation sets");
-        for (&set, recorded) in &b.validation {
-            let v = validate_on(&run.best, set, run.config.seconds).expect("validates");
-            let replayed: Vec<f64> = v.terrains.iter().map(|t| t.velocity).collect();
-            assert_eq!(replayed, recorded.velocities, "{file}: {set} velocities");
-            assert_eq!(
-                (v.median, v.mean),
-                (recorded.median, recorded.mean),
-                "{file}: {set}"
-            );
-        }
+        replays_to(&b.provenance, &run.best, run.config.seconds, file);
     }
 }
 

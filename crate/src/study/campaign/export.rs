@@ -58,13 +58,22 @@ pub struct Entry {
     /// For a fine-tuned module: the shape its attention module was evolved on.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub finetuned_from: Option<String>,
+    /// Where it came from, and the figures a replay must reproduce.
+    #[serde(flatten)]
+    pub provenance: Provenance,
+}
+
+/// What every record of the manifest (a module, a body) says of the run it was taken from:
+/// where it came from and the figures a replay must reproduce.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Provenance {
     /// Run seed.
     pub seed: u64,
     /// The run's evaluation budget (`--evals`).
     pub budget: u64,
-    /// Evaluations the run made (its last generation's count).
+    /// Evaluations the run made.
     pub evaluations: u64,
-    /// The best individual's training fitness (m/s).
+    /// The exported best's training fitness (m/s).
     pub training_best: f64,
     /// Its validation figures, by set.
     pub validation: BTreeMap<ValidationSet, SetFigures>,
@@ -79,6 +88,59 @@ pub struct Entry {
     /// The run's wall time, if it recorded it (s).
     #[serde(default)]
     pub wall_seconds: Option<f64>,
+}
+
+/// Who exported a record: the command that made its run, the campaign, the code version.
+#[derive(Debug, Clone, Copy)]
+pub struct Origin<'a> {
+    /// The command that made the run file.
+    pub command: &'a str,
+    /// The campaign file.
+    pub campaign: &'a str,
+    /// The exporting code's version.
+    pub code_version: &'a str,
+}
+
+/// What a run says of itself for its provenance.
+#[derive(Debug, Clone, Copy)]
+pub struct RunFigures {
+    /// Run seed.
+    pub seed: u64,
+    /// Evaluation budget.
+    pub budget: u64,
+    /// Evaluations made.
+    pub evaluations: u64,
+    /// The exported best's training fitness (m/s).
+    pub training_best: f64,
+    /// Wall time, if recorded (s).
+    pub wall_seconds: Option<f64>,
+}
+
+impl Provenance {
+    /// The provenance of a run's best (`run`), validated as `validation`, chosen from
+    /// `chosen_from` runs, exported by `origin`.
+    pub fn new(
+        run: RunFigures,
+        validation: &BTreeMap<ValidationSet, Validation>,
+        chosen_from: usize,
+        origin: Origin,
+    ) -> Self {
+        Provenance {
+            seed: run.seed,
+            budget: run.budget,
+            evaluations: run.evaluations,
+            training_best: run.training_best,
+            validation: validation
+                .iter()
+                .map(|(set, v)| (*set, SetFigures::from(v)))
+                .collect(),
+            chosen_from,
+            command: origin.command.to_string(),
+            campaign: origin.campaign.to_string(),
+            code_version: origin.code_version.to_string(),
+            wall_seconds: run.wall_seconds,
+        }
+    }
 }
 
 /// The pretrained folder's `manifest.json`.
@@ -177,30 +239,23 @@ pub fn choose(
     out
 }
 
-/// The manifest entry of `choice`, whose run `command` made; `None` if its run file is absent.
-pub fn entry(choice: &Choice, command: &str, campaign: &str, code_version: &str) -> Option<Entry> {
+/// The manifest entry of `choice`, exported by `origin`; `None` if its run file is absent.
+pub fn entry(choice: &Choice, origin: Origin) -> Option<Entry> {
     let run = choice.data.run.as_ref()?;
+    let figures = RunFigures {
+        seed: choice.spec.seed,
+        budget: choice.spec.evals,
+        evaluations: run.generations.last().map_or(0, |g| g.evaluations),
+        training_best: run.best.fitness,
+        wall_seconds: run.timing.as_ref().map(|t| t.wall_seconds),
+    };
     Some(Entry {
         file: file_name(&category(&choice.spec)),
         shape: choice.spec.shape.clone(),
         rows: run.best.shape.to_rows(),
         controller: choice.spec.controller,
         finetuned_from: choice.spec.source.as_ref().map(|s| s.shape.clone()),
-        seed: choice.spec.seed,
-        budget: choice.spec.evals,
-        evaluations: run.generations.last().map_or(0, |g| g.evaluations),
-        training_best: run.best.fitness,
-        validation: choice
-            .data
-            .validation
-            .iter()
-            .map(|(set, v)| (*set, SetFigures::from(v)))
-            .collect(),
-        chosen_from: choice.candidates,
-        command: command.to_string(),
-        campaign: campaign.to_string(),
-        code_version: code_version.to_string(),
-        wall_seconds: run.timing.as_ref().map(|t| t.wall_seconds),
+        provenance: Provenance::new(figures, &choice.data.validation, choice.candidates, origin),
     })
 }
 
@@ -226,7 +281,12 @@ impl Manifest {
              unseen median | chosen from (validated runs) |\n|---|---|---|---|---|---|---|---|---|\n",
         );
         for m in &self.modules {
-            let median = |set| m.validation.get(&set).map_or(f64::NAN, |f| f.median);
+            let median = |set| {
+                m.provenance
+                    .validation
+                    .get(&set)
+                    .map_or(f64::NAN, |f| f.median)
+            };
             let controller = match &m.finetuned_from {
                 None => m.controller.to_string(),
                 Some(from) => format!("{} fine-tuned from {from}", m.controller),
@@ -236,12 +296,12 @@ impl Manifest {
                 m.file,
                 m.shape,
                 controller,
-                m.seed,
-                m.evaluations,
-                m.training_best,
+                m.provenance.seed,
+                m.provenance.evaluations,
+                m.provenance.training_best,
                 median(ValidationSet::Paper),
                 median(ValidationSet::Unseen),
-                match m.chosen_from {
+                match m.provenance.chosen_from {
                     1 => "1 run".to_string(),
                     n => format!("{n} runs"),
                 }

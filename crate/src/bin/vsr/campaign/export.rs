@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 
 use vsr::controllers::ControllerKind;
 use vsr::study::campaign::export::bodies::BodyEntry;
-use vsr::study::campaign::export::{choose, entry, file_name, Entry, Manifest};
+use vsr::study::campaign::export::{choose, entry, file_name, Entry, Manifest, Origin};
 use vsr::study::campaign::plan;
 use vsr::{Error, Result};
 
@@ -79,7 +79,14 @@ pub fn run(args: Args) -> Result<()> {
         let run_path = choice.spec.run_path(&out);
         let job = jobs.iter().find(|j| j.out == run_path);
         let command = job.map(|job| command::line(job, "vsr", 1));
-        let entry = command.and_then(|c| entry(&choice, &c, &campaign_file, &version));
+        let entry = command.and_then(|command| {
+            let origin = Origin {
+                command: &command,
+                campaign: &campaign_file,
+                code_version: &version,
+            };
+            entry(&choice, origin)
+        });
         let Some(entry) = entry else {
             eprintln!(
                 "vsr: {name}: its run is not in the campaign's plan; the previous export kept"
@@ -92,7 +99,7 @@ pub fn run(args: Args) -> Result<()> {
         crate::atomic::write(&args.to.join(&name), &text, "module")?;
         println!(
             "{name}: seed {} of {} validated run(s), training {:.2} m/s",
-            entry.seed, entry.chosen_from, entry.training_best
+            entry.provenance.seed, entry.provenance.chosen_from, entry.provenance.training_best
         );
         modules.push(entry);
     }
@@ -241,8 +248,8 @@ fn readme(manifest: &Manifest, pending: &[String], campaign: &str, dir: &Path) -
     };
     // Every campaign the folder's files came from, this one first (as the last run).
     let mut campaigns = vec![campaign.to_string()];
-    let named = manifest.modules.iter().map(|m| &m.campaign);
-    for c in named.chain(manifest.bodies.iter().map(|b| &b.campaign)) {
+    let named = manifest.modules.iter().map(|m| &m.provenance.campaign);
+    for c in named.chain(manifest.bodies.iter().map(|b| &b.provenance.campaign)) {
         if !campaigns.contains(c) {
             campaigns.push(c.clone());
         }

@@ -10,7 +10,7 @@ use std::path::Path;
 use vsr::study::campaign::export::bodies::{
     bodies_table, body_entry, body_file, choose_bodies, trimmed, BodyEntry,
 };
-use vsr::study::campaign::export::Manifest;
+use vsr::study::campaign::export::{Manifest, Origin};
 use vsr::study::campaign::{Job, Results};
 use vsr::{Error, Result};
 
@@ -73,8 +73,14 @@ pub fn export(
             .filter(|_| !condition.starts_with("scratch-"))
             .and_then(|g| g.module.as_deref());
         let run_file = run_path.display().to_string();
-        let entry =
-            command.and_then(|c| body_entry(&choice, (&run_file, &c, module), campaign, version));
+        let entry = command.and_then(|command| {
+            let origin = Origin {
+                command: &command,
+                campaign,
+                code_version: version,
+            };
+            body_entry(&choice, (&run_file, module), origin)
+        });
         let cut = choice.data.run.as_ref().and_then(trimmed);
         let (Some(entry), Some(cut)) = (entry, cut) else {
             eprintln!(
@@ -91,11 +97,12 @@ pub fn export(
         crate::atomic::write(&path, cut.to_json().as_bytes(), "body")?;
         println!(
             "{name}: seed {} of {} validated run(s), entry {}, {} voxels, unseen {:.2} m/s",
-            entry.seed,
-            entry.chosen_from,
+            entry.provenance.seed,
+            entry.provenance.chosen_from,
             entry.entry,
             entry.voxels,
             entry
+                .provenance
                 .validation
                 .get(&vsr::experiment::ValidationSet::Unseen)
                 .map_or(f64::NAN, |f| f.mean)

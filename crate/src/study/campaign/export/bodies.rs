@@ -13,12 +13,11 @@
 //! co-design run file still, so `vsr evaluate --genome`, `vsr validate` and Python replay it;
 //! the whole archive stays in the run file the entry names.
 
-use super::SetFigures;
+use super::{Origin, Provenance, RunFigures};
 use crate::controllers::ControllerKind;
 use crate::experiment::{CodesignRun, ValidationSet};
 use crate::study::campaign::results::{CodesignData, CodesignSpec, Results};
 use serde::{Deserialize, Serialize};
-use std::collections::BTreeMap;
 
 /// One body of the manifest's `bodies`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -45,27 +44,9 @@ pub struct BodyEntry {
     pub run_file: String,
     /// Its entry in that file's archive (`vsr validate --entry`).
     pub entry: usize,
-    /// Run seed.
-    pub seed: u64,
-    /// The run's evaluation budget.
-    pub budget: u64,
-    /// Evaluations the run made.
-    pub evaluations: u64,
-    /// Its mean training fitness in the archive (m/s).
-    pub training_best: f64,
-    /// Its validation figures, by set.
-    pub validation: BTreeMap<ValidationSet, SetFigures>,
-    /// Runs of its condition it was chosen from (finished and validated on both sets).
-    pub chosen_from: usize,
-    /// The command that made the run file (from the campaign's plan).
-    pub command: String,
-    /// The campaign file the run belongs to.
-    pub campaign: String,
-    /// The code that exported it (and replays it: tests/pretrained.rs).
-    pub code_version: String,
-    /// The run's wall time, if it recorded it (s).
-    #[serde(default)]
-    pub wall_seconds: Option<f64>,
+    /// Where it came from, and the figures a replay must reproduce.
+    #[serde(flatten)]
+    pub provenance: Provenance,
 }
 
 /// A chosen body: its run and what it was chosen from.
@@ -164,17 +145,23 @@ pub fn trimmed(run: &CodesignRun) -> Option<CodesignRun> {
     Some(cut)
 }
 
-/// The manifest entry of `choice`: its run file `run_file`, made by `command`, with the
-/// group's `module`; `None` if the run file is absent or its best is not in its archive.
+/// The manifest entry of `choice`: its run file `run_file`, with the group's `module`,
+/// exported by `origin`; `None` if the run file is absent or its best is not in its archive.
 pub fn body_entry(
     choice: &BodyChoice,
-    (run_file, command, module): (&str, &str, Option<&str>),
-    campaign: &str,
-    code_version: &str,
+    (run_file, module): (&str, Option<&str>),
+    origin: Origin,
 ) -> Option<BodyEntry> {
     let run = choice.data.run.as_ref()?;
     let entry = best_entry(run)?;
     let e = &run.archive[entry];
+    let figures = RunFigures {
+        seed: choice.spec.seed,
+        budget: run.config.budget_evals,
+        evaluations: run.evaluations,
+        training_best: e.fitness,
+        wall_seconds: run.timing.as_ref().map(|t| t.wall_seconds),
+    };
     Some(BodyEntry {
         file: body_file(&choice.spec.group, &choice.spec.condition),
         group: choice.spec.group.clone(),
@@ -186,21 +173,7 @@ pub fn body_entry(
         module: module.map(str::to_string),
         run_file: run_file.to_string(),
         entry,
-        seed: choice.spec.seed,
-        budget: run.config.budget_evals,
-        evaluations: run.evaluations,
-        training_best: e.fitness,
-        validation: choice
-            .data
-            .validation
-            .iter()
-            .map(|(set, v)| (*set, SetFigures::from(v)))
-            .collect(),
-        chosen_from: choice.candidates,
-        command: command.to_string(),
-        campaign: campaign.to_string(),
-        code_version: code_version.to_string(),
-        wall_seconds: run.timing.as_ref().map(|t| t.wall_seconds),
+        provenance: Provenance::new(figures, &choice.data.validation, choice.candidates, origin),
     })
 }
 
@@ -212,7 +185,8 @@ pub fn bodies_table(bodies: &[BodyEntry]) -> String {
     );
     for b in bodies {
         let figure = |set, mean: bool| {
-            b.validation
+            b.provenance
+                .validation
                 .get(&set)
                 .map_or(f64::NAN, |f| if mean { f.mean } else { f.median })
         };
@@ -224,13 +198,13 @@ pub fn bodies_table(bodies: &[BodyEntry]) -> String {
             b.rows,
             b.voxels,
             b.feet,
-            b.seed,
-            b.training_best,
+            b.provenance.seed,
+            b.provenance.training_best,
             figure(ValidationSet::Paper, false),
             figure(ValidationSet::Unseen, true),
             b.run_file,
             b.entry,
-            b.chosen_from
+            b.provenance.chosen_from
         );
     }
     md
