@@ -4,6 +4,7 @@
  * a generation's median, a from-scratch run beside a fine-tuning run), with ticks on both
  * axes and a legend. Non-finite values (exploded episodes) leave a gap.
  */
+import { plainNumber } from './format.js';
 
 const PAD = { left: 46, right: 12, top: 12, bottom: 34 };
 const FONT = '11px system-ui, sans-serif';
@@ -149,8 +150,7 @@ export function ticks(low, high) {
   return out;
 }
 
-/** @param {number} v */
+/** A tick's label: 30,000 evaluations, −0.5 m/s (format.js). @param {number} v */
 function format(v) {
-  if (Math.abs(v) >= 1000) return `${Math.round(v / 100) / 10}k`;
-  return String(Math.round(v * 100) / 100);
+  return plainNumber(v);
 }

@@ -19,6 +19,16 @@ export function count(n) {
 }
 
 /**
+ * A number as short as it goes, for an axis or a ruler: at most `digits` decimals (no trailing
+ * zeros), grouped by thousands, with the minus sign: 30,000, 0.5, −10. @param {number} v @param {number} [digits]
+ */
+export function plainNumber(v, digits = 2) {
+  if (!Number.isFinite(v)) return NONE;
+  const text = v.toLocaleString('en', { maximumFractionDigits: digits });
+  return text === '-0' ? '0' : text.replace('-', MINUS);
+}
+
+/**
  * A decimal with `digits` digits and the minus sign; one that rounds to zero is 0 (not −0.00);
  * not a number: –. @param {number | null | undefined} v @param {number} [digits]
  */

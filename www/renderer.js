@@ -10,6 +10,7 @@
  */
 import { BODY_FLOATS, CORNER_FLOATS } from './protocol.js';
 import { voxelAt } from './voxel-pick.js';
+import { plainNumber } from './format.js';
 
 /** Metres of world visible across the canvas width (at least). */
 const VIEW_WIDTH_M = 48;
@@ -203,7 +204,7 @@ export class Renderer {
     ctx.fillStyle = 'rgba(30, 50, 70, 0.8)';
     ctx.font = `${12 * dpr}px system-ui, sans-serif`;
     for (let d = Math.ceil((view.left - this.origin) / 10) * 10; this.origin + d <= view.right; d += 10) {
-      ctx.fillText(d === 0 ? 'start' : `${d} m`, (this.origin + d - view.left) * view.s + 3 * dpr, 14 * dpr);
+      ctx.fillText(d === 0 ? 'start' : `${plainNumber(d)} m`, (this.origin + d - view.left) * view.s + 3 * dpr, 14 * dpr);
     }
     const metres = niceLength(120 * dpr / view.s);
     const px = metres * view.s;
@@ -215,7 +216,7 @@ export class Renderer {
     ctx.fillRect(x0, y0 - 3 * dpr, px, 3 * dpr);
     ctx.fillRect(x0, y0 - 8 * dpr, 2 * dpr, 8 * dpr);
     ctx.fillRect(x0 + px - 2 * dpr, y0 - 8 * dpr, 2 * dpr, 8 * dpr);
-    ctx.fillText(`${metres} m`, x0, y0 - 10 * dpr);
+    ctx.fillText(`${plainNumber(metres)} m`, x0, y0 - 10 * dpr);
   }
 }
 
