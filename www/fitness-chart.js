@@ -80,7 +80,8 @@ export class FitnessChart {
     ctx.textBaseline = 'top';
     for (const v of xTicks) {
       line(ctx, x(v), PAD.top, x(v), height - PAD.bottom);
-      ctx.fillText(format(v), x(v), height - PAD.bottom + 4);
+      const label = format(v); // kept inside the canvas (30,000 at the right edge)
+      ctx.fillText(label, Math.min(x(v), width - ctx.measureText(label).width / 2 - 1), height - PAD.bottom + 4);
     }
     ctx.fillText('evaluations', (PAD.left + width - PAD.right) / 2, height - 14);
     ctx.save();
