@@ -147,8 +147,14 @@ test('numbers that agree: during a fine-tune the walking best shows its own trai
   }
   await byTestId(page, 'finetune').click();
   await waitForText(page, 'driver', /the best so far while fine-tuning/, 60_000);
-  const driver = String(await page.locator('#driver').textContent());
-  const note = String(await byTestId(page, 'speed-note').textContent());
+  // The note measures the walking best (asynchronously) and a newer best can take over: read both once they agree.
+  const agreed = await page.waitForFunction(() => {
+    const driver = document.getElementById('driver')?.textContent ?? '';
+    const note = document.querySelector('[data-testid="speed-note"]')?.textContent ?? '';
+    const best = /fine-tuning: ([−-]?\d+\.\d\d) m\/s in one evaluation/.exec(driver)?.[1];
+    return best && note.startsWith(`In training: ${best} m/s`) ? [driver, note] : false;
+  }, undefined, { timeout: 60_000 });
+  const [driver, note] = /** @type {string[]} */ (await agreed.jsonValue());
   const best = /fine-tuning: ([−-]?\d+\.\d\d) m\/s in one evaluation/.exec(driver)?.[1];
   assert.ok(best, driver);
   assert.match(note, new RegExp(`^In training: ${best} m/s \\(its best single evaluation, on a hilly-1-10 terrain drawn fresh for that evaluation, 2-s episodes\\)\\. `
