@@ -116,6 +116,12 @@ export class Drawing {
     return { left: Math.min(...xs), right: Math.max(...xs), bottom: Math.min(...ys), top: Math.max(...ys) };
   }
 
+  /** The drawing's place on the grid: its bottom-left cell (0, 0 when empty). */
+  origin() {
+    const box = this.box();
+    return box ? { left: box.left, bottom: box.bottom } : { left: 0, bottom: 0 };
+  }
+
   undo() { return this.travel(this.undoStack, this.redoStack); }
 
   redo() { return this.travel(this.redoStack, this.undoStack); }

@@ -50,7 +50,7 @@ export async function applyState(robot, state) {
   runs.setValues(state.run);
   robot.brain = null;
   if (state.brain) {
-    const brain = { ...state.brain, rows: state.rows, origin: robot.origin(), source: /** @type {string | null} */ (null) };
+    const brain = { ...state.brain, rows: state.rows, origin: robot.parts.drawing.origin(), source: /** @type {string | null} */ (null) };
     robot.brain = brain;
     if (state.brain.module) {
       try {

@@ -14,8 +14,8 @@ import { followEdit, ownBody, transplanted } from './brain.js';
 import { checkShape } from './core.js';
 import { showGeneCount } from './gene-count.js';
 import { messageOf } from './kit.js';
-import { plain } from './message.js';
 import { applyState } from './robot-state.js';
+import { checkWords, driverWords, walkingWords } from './robot-words.js';
 
 /** @typedef {import('./brain.js').Brain} Brain */
 
@@ -101,43 +101,20 @@ export class Robot {
     this.check = check ?? UNCHECKED;
     editor.setPieces(check && !check.ok ? check.pieces : null);
     const status = this.el('shape-status');
-    if (!check) {
-      status.textContent = 'Not checked: change the drawing to check it again';
-    } else if (check.ok) {
-      status.textContent = `${check.voxels} voxel${check.voxels === 1 ? '' : 's'} · ${rows}`;
-      messages.clear('validation');
-    } else {
-      const pieces = check.pieces.length > 1 ? `; each of its ${check.pieces.length} pieces has its own colour` : '';
-      status.textContent = check.pieces.length > 1 ? `Not a robot yet: ${check.pieces.length} separate pieces` : 'Not a robot yet: no voxels';
-      messages.show(`Your drawing is not a robot yet: ${plain(check.message)}${pieces}. Evolve and Fine-tune are off until it is.`, 'validation');
-    }
+    const { status: line, problem } = checkWords(rows, check);
+    status.textContent = line;
+    if (problem) messages.show(problem, 'validation');
+    else if (check) messages.clear('validation');
     status.dataset.ok = String(this.check.ok);
     this.updateParams();
     this.updateButtons();
   }
 
-  /** Says how many genes the chosen family has for this body, and what they are. */
+  /** Says how many genes the chosen family has for this body, and what they are; and what drives the robot. */
   updateParams() {
-    showGeneCount(this.el('param-count'), this.check, this.controllerSelect.value, this.parts.defaults.attentionGenes, this.walkingWords());
-    this.sayDriver();
-  }
-
-  /** The robot that walks while the drawing is not one (its last whole body), in words. */
-  walkingWords() {
-    const walking = this.brain?.rows ?? this.walkingRows;
-    if (!walking) return '';
-    const voxels = [...walking].filter((c) => c === '1').length;
-    return `the robot walking is your last whole drawing: ${voxels} voxels${this.brain ? `, ${this.brain.genome.length} genes` : ''}`;
-  }
-
-  /** Says what drives the robot, and, while the drawing is not a robot, that it is the last whole one. */
-  sayDriver() {
-    const brain = this.brain;
-    const drives = brain ? `Driven by: ${brain.label} (${brain.controller}, ${brain.genome.length} genes).`
-      : 'Driven by: the phase gait (no brain yet: evolve one, or load a module).';
-    const drawn = this.check.voxels > 0 && !this.check.ok && this.walkingRows
-      ? ` Your drawing (${this.check.voxels} voxels) is not a robot yet, so ${this.walkingWords()}.` : '';
-    this.el('driver').textContent = drives + drawn;
+    showGeneCount(this.el('param-count'), this.check, this.controllerSelect.value, this.parts.defaults.attentionGenes,
+      walkingWords(this.brain, this.walkingRows));
+    this.el('driver').textContent = driverWords(this.brain, this.check, this.walkingRows);
   }
 
   updateButtons() {
@@ -151,12 +128,6 @@ export class Robot {
     this.el('module-load').disabled = running || !this.check.ok;
     this.el('module-open').disabled = running;
     runs.update();
-  }
-
-  /** The drawing's place on the grid (its bottom-left cell). */
-  origin() {
-    const box = this.parts.drawing.box();
-    return box ? { left: box.left, bottom: box.bottom } : { left: 0, bottom: 0 };
   }
 
   /**
@@ -173,7 +144,7 @@ export class Robot {
 
   /** The drawing as it is now, and its check asked. @param {import('./protocol.js').Shift | false} keepPlace */
   change(keepPlace) {
-    return { rows: this.parts.drawing.rows(), origin: this.origin(), seed: this.seed(), keepPlace, checked: this.updateCheck() };
+    return { rows: this.parts.drawing.rows(), origin: this.parts.drawing.origin(), seed: this.seed(), keepPlace, checked: this.updateCheck() };
   }
 
   /** The brain follows the body of `change` (the core's remap) and the viewer walks it. @param {ReturnType<Robot['change']>} change */
@@ -210,7 +181,7 @@ export class Robot {
     speedNote.show(brain, viewer.terrain.value.trim(), seconds, !this.running);
     runs.showWalking(brain?.run === true);
     this.el('gait').hidden = brain !== null; // its settings drive only a robot with no brain
-    this.sayDriver();
+    this.el('driver').textContent = driverWords(this.brain, this.check, this.walkingRows);
     this.updateButtons();
   }
 
@@ -275,7 +246,7 @@ export class Robot {
    */
   loadModule(module) {
     if (!this.check.ok) { this.error('draw a valid robot first'); return Promise.resolve(); }
-    const [rows, origin, seed] = [this.parts.drawing.rows(), this.origin(), this.seed()];
+    const [rows, origin, seed] = [this.parts.drawing.rows(), this.parts.drawing.origin(), this.seed()];
     return this.serial(async () => {
       const brain = await transplanted(module, rows, origin, seed);
       this.setBrain(brain);

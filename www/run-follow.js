@@ -40,7 +40,7 @@ export class RunFollower {
       this.last = performance.now();
       this.pending = null;
       if (settings.shape !== robot.parts.drawing.rows()) return;
-      robot.drive(bestSoFar(genome, fitness, settings, kind, this.finetuning(), robot.brain?.source ?? null, robot.origin()));
+      robot.drive(bestSoFar(genome, fitness, settings, kind, this.finetuning(), robot.brain?.source ?? null, robot.parts.drawing.origin()));
     };
     window.clearTimeout(this.timer);
     this.pending = apply;
@@ -92,6 +92,6 @@ export class RunFollower {
         + `${run.mode === 'scratch' && run.follow ? '; the robot walks on with the fine-tuned result' : ''}.`, 'note');
       return;
     }
-    robot.drive(runResult(best, run.runFile, run.settings, robot.origin(), `the ${what} run's result: ${result}`));
+    robot.drive(runResult(best, run.runFile, run.settings, robot.parts.drawing.origin(), `the ${what} run's result: ${result}`));
   }
 }

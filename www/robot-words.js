@@ -1,0 +1,50 @@
+// @ts-check
+/**
+ * What the page says about the robot, in words: the drawing's check (the line under the grid
+ * and, for a drawing that is not a robot yet, the message that says why), the robot that walks
+ * while the drawing is not one, and what drives it. Plain functions of the robot's state, so
+ * robot.js only decides when to say them.
+ */
+import { plain } from './message.js';
+
+/** @typedef {import('./brain.js').Brain} Brain */
+
+/**
+ * The line under the grid for the drawing `rows` and its check (null: it could not be
+ * checked), and the message to show when it is not a robot ('' when it is).
+ * @param {string} rows @param {import('./core.js').ShapeCheck | null} check
+ * @returns {{status: string, problem: string}}
+ */
+export function checkWords(rows, check) {
+  if (!check) return { status: 'Not checked: change the drawing to check it again', problem: '' };
+  if (check.ok) return { status: `${check.voxels} voxel${check.voxels === 1 ? '' : 's'} · ${rows}`, problem: '' };
+  const many = check.pieces.length > 1;
+  return {
+    status: many ? `Not a robot yet: ${check.pieces.length} separate pieces` : 'Not a robot yet: no voxels',
+    problem: `Your drawing is not a robot yet: ${plain(check.message)}${many ? `; each of its ${check.pieces.length} pieces has its own colour` : ''}. `
+      + 'Evolve and Fine-tune are off until it is.',
+  };
+}
+
+/**
+ * The robot that walks while the drawing is not one (its last whole body), in words ('' before
+ * the first). @param {Brain | null} brain @param {string} walkingRows the body the viewer walks
+ */
+export function walkingWords(brain, walkingRows) {
+  const walking = brain?.rows ?? walkingRows;
+  if (!walking) return '';
+  const voxels = [...walking].filter((c) => c === '1').length;
+  return `the robot walking is your last whole drawing: ${voxels} voxels${brain ? `, ${brain.genome.length} genes` : ''}`;
+}
+
+/**
+ * What drives the robot and, while the drawing (`check`) is not a robot, that the one walking
+ * is the last whole one. @param {Brain | null} brain @param {import('./core.js').ShapeCheck} check @param {string} walkingRows
+ */
+export function driverWords(brain, check, walkingRows) {
+  const drives = brain ? `Driven by: ${brain.label} (${brain.controller}, ${brain.genome.length} genes).`
+    : 'Driven by: the phase gait (no brain yet: evolve one, or load a module).';
+  const drawn = check.voxels > 0 && !check.ok && walkingRows
+    ? ` Your drawing (${check.voxels} voxels) is not a robot yet, so ${walkingWords(brain, walkingRows)}.` : '';
+  return drives + drawn;
+}
