@@ -136,7 +136,8 @@ test('the panel searches live, the gallery fills, a click loads a body that walk
   const count = await bodies.count();
   assert.ok(count >= 2, `the gallery shows ${count} bodies`);
   assert.equal(count, Number(await page.locator('#codesign-summary').getAttribute('data-filled')));
-  assert.match(String(await page.locator('#codesign-summary').textContent()), /kinds? of body found .* fastest: \d+\.\d\d m\/s/);
+  assert.match(String(await page.locator('#codesign-summary').textContent()), /kinds? of body found .* fastest: \d+\.\d\d m\/s.* · searched for \d+ s, /,
+    'once ended, the summary says how long the search took');
 
   // The exported file's best is vsr codesign's with the panel's settings.
   const [download] = await Promise.all([page.waitForEvent('download'), byTestId(page, 'codesign-export').click()]);

@@ -15,6 +15,7 @@ import { FromCodesign, ToCodesign } from './protocol.js';
 import { Gallery, paintLegend } from './gallery.js';
 import { BOX_WORDS, planSearch, QUICK } from './plan.js';
 import { count, decimal } from '../format.js';
+import { bestEntry, summaryWords } from './summary.js';
 
 /** The status of a search that could not start (the message at the top says why). */
 const NOT_STARTED = 'The search did not start: the message at the top of the page says why.';
@@ -68,6 +69,8 @@ export class CodesignPanel {
     this.settings = null;
     /** The coordinator said the search started (errors before that: 'did not start'). */
     this.started = false;
+    /** The latest search's last round (its summary says how long it took once it ends). @type {any} */
+    this.lastRound = null;
     /** The latest search's run file (when it ended). @type {string | null} */
     this.runFile = null;
     /** What the latest search evolved, in words (labels of its bodies). */
@@ -144,6 +147,7 @@ export class CodesignPanel {
     this.coordinator = coordinator;
     this.running = true;
     this.started = false;
+    this.lastRound = null;
     this.progress.textContent = `0 of ${count(settings.budget)} evaluations`;
     this.setStatus('starting…');
     this.summary.textContent = '';
@@ -193,11 +197,8 @@ export class CodesignPanel {
     this.gallery.show(gallery, record.iteration);
     this.progress.textContent = `${count(msg.evaluations)} of ${count(msg.planned)} evaluations`;
     const best = bestEntry(gallery);
-    const rate = msg.seconds > 0 ? `, ${decimal(msg.evaluations / msg.seconds, 1)} evaluations a second` : '';
-    const rounds = record.iteration + 1;
-    this.summary.textContent = `Brain: ${this.what} · ${gallery.length} kind${gallery.length === 1 ? '' : 's'} of body found (cells filled) in ${rounds} round${rounds === 1 ? '' : 's'}`
-      + (best?.fitness != null ? ` · fastest: ${decimal(best.fitness)} m/s in training, ${best.voxels} voxels with ${best.feet} ${best.feet === 1 ? 'foot' : 'feet'}` : '')
-      + ` · searching for ${decimal(msg.seconds, 0)} s${rate}`;
+    this.lastRound = msg;
+    this.summary.textContent = summaryWords(this.what, msg, false);
     this.summary.dataset.filled = String(gallery.length);
     this.summary.dataset.best = String(best?.fitness ?? '');
     if (best) {
@@ -211,6 +212,7 @@ export class CodesignPanel {
 
   /** @param {{stopped: boolean, runFile: string | null}} msg */
   onDone(msg) {
+    if (this.lastRound) this.summary.textContent = summaryWords(this.what, this.lastRound, true);
     this.running = false;
     this.runFile = msg.runFile;
     this.setStatus(msg.stopped ? 'stopped' : 'finished');
@@ -295,11 +297,4 @@ export class CodesignPanel {
     b.export.disabled = this.runFile === null;
     for (const input of [this.brain, this.from, this.budget, this.seconds]) input.disabled = this.running;
   }
-}
-
-/** The fastest entry of a gallery, or null. @param {import('./protocol.js').GalleryEntry[]} gallery */
-function bestEntry(gallery) {
-  let best = null;
-  for (const e of gallery) if (e.fitness !== null && (best === null || e.fitness > /** @type {number} */ (best.fitness))) best = e;
-  return best;
 }

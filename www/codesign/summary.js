@@ -1,0 +1,28 @@
+// @ts-check
+/**
+ * The body search's summary line, in words: its brain, the kinds of body found, the fastest,
+ * and how long it has searched (or, once it ended, how long it took).
+ */
+import { decimal } from '../format.js';
+
+/** The fastest entry of a gallery, or null. @param {import('./protocol.js').GalleryEntry[]} gallery */
+export function bestEntry(gallery) {
+  let best = null;
+  for (const e of gallery) if (e.fitness !== null && (best === null || e.fitness > /** @type {number} */ (best.fitness))) best = e;
+  return best;
+}
+
+/**
+ * The summary after the round `round` of a search of `what` (its brain and bodies, in words).
+ * @param {string} what
+ * @param {{record: {iteration: number}, evaluations: number, gallery: import('./protocol.js').GalleryEntry[], seconds: number}} round
+ * @param {boolean} ended whether the search has ended (it says how long it took)
+ */
+export function summaryWords(what, { record, evaluations, gallery, seconds }, ended) {
+  const best = bestEntry(gallery);
+  const rate = seconds > 0 ? `, ${decimal(evaluations / seconds, 1)} evaluations a second` : '';
+  const rounds = record.iteration + 1;
+  return `Brain: ${what} · ${gallery.length} kind${gallery.length === 1 ? '' : 's'} of body found (cells filled) in ${rounds} round${rounds === 1 ? '' : 's'}`
+    + (best?.fitness != null ? ` · fastest: ${decimal(best.fitness)} m/s in training, ${best.voxels} voxels with ${best.feet} ${best.feet === 1 ? 'foot' : 'feet'}` : '')
+    + ` · ${ended ? 'searched' : 'searching'} for ${decimal(seconds, 0)} s${rate}`;
+}
