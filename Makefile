@@ -7,7 +7,7 @@
 #   make test-python-install  pip install "./python[examples,gym]" in a fresh venv, then use it
 #   make bench-wasm  speed of the wasm build in Node (figures for the README)
 #   make web-package the npm-ready web package (wasm core + <vsr-robot>) in target/web-package
-#   make test-browsers    opt-in: the page in Firefox and WebKitGTK gives vsr's results (tests/browsers/)
+#   make test-browsers    opt-in: the page in Firefox and WebKitGTK gives vsr's results, with Chromium's figures beside (tests/browsers/)
 
 SHELL := /bin/bash
 export PATH := $(HOME)/.cargo/bin:$(PATH)
@@ -97,7 +97,8 @@ test-web:
 
 ## Opt-in, not part of `make test`: the page in Debian firefox-esr (puppeteer-core) and
 ## WebKitGTK (WebKitWebDriver, MiniBrowser under xvfb-run) walks, evolves as `vsr evolve` and
-## measures as `vsr evaluate` (docs/playground.md); prints its figures and times.
+## measures as `vsr evaluate` (docs/playground.md); prints its figures and times, and
+## Chromium's in the same sitting (the quick evolution's time in each browser).
 test-browsers:
 	bash scripts/setup.sh --browsers
 	$(WASM_PACK_BUILD)

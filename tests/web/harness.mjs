@@ -19,7 +19,7 @@ export const SCREENSHOTS = path.join(HERE, 'screenshots');
 /** The native CLI, for comparisons (VSR_BIN overrides). */
 export const BIN = path.resolve(process.env.VSR_BIN
   ?? path.join(process.env.CARGO_TARGET_DIR ?? path.join(ROOT, 'target'), 'release', 'vsr'));
-const CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic',
+export const CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic',
   '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run'];
 
 /**
