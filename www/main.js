@@ -146,8 +146,9 @@ async function start() {
   });
   modules.listPretrained().then(() => { if (robot.brain?.module) modules.choose(robot.brain.module); });
   // How long a run will take, before the first: this computer's speed on the quick settings' episodes, for the drawn body.
-  // (A second after the page opened: its own start-up, wasm compiled in every worker, is done by then.)
-  setTimeout(() => estimate.measure(drawing.rows(), robot.check, defaults.quick.seconds, defaults.trainingTerrain), 1000);
+  // (Three seconds after the page opened: its own start-up, wasm compiled in every worker, is done by then and does not
+  // slow the measure, and the measure's two seconds of the cores do not slow the page's first moments.)
+  setTimeout(() => estimate.measure(drawing.rows(), robot.check, defaults.quick.seconds, defaults.trainingTerrain), 3000);
   window.addEventListener('hashchange', () => keeper.openLink());
   window.addEventListener('beforeunload', (event) => {
     if (robot.running) event.preventDefault(); // the browser asks: leaving ends the run (its best so far is kept)
