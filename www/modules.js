@@ -83,8 +83,9 @@ export class ModuleList {
         // A body search's best body with its brain (`vsr campaign export` of a [[codesign]] group).
         const mean = Number(b.validation?.unseen?.mean);
         const speed = Number.isFinite(mean) ? `, ${unseenWords(mean)}` : '';
-        const label = `a body found by the body search: ${b.voxels} voxels, ${b.controller} ${b.condition === 'frozen' ? 'module frozen' : `brain (${b.condition})`}${speed}`;
-        const short = shortLabel(`${b.voxels} voxels, ${b.controller} ${b.condition === 'frozen' ? 'frozen' : b.condition}`, mean);
+        const how = brainWords(b.condition);
+        const label = `a body found by the body search: ${b.voxels} voxels, ${b.controller} ${how.long}${speed}`;
+        const short = shortLabel(`${b.voxels} voxels, ${b.controller} ${how.short}`, mean);
         this.list(PRETRAINED_DIR + b.file, label, short, 'found by a body search', mean);
       }
       this.describe();
@@ -258,4 +259,15 @@ async function fetchOk(url) {
   const response = await fetch(url);
   if (!response.ok) throw new Error(`HTTP ${response.status}`);
   return response;
+}
+
+/**
+ * How a body search's brain was evolved, in words (long, and short for the list), from its
+ * condition in the campaign (`frozen`, `finetune`, `scratch-CONTROLLER`). @param {string} condition
+ */
+function brainWords(condition) {
+  if (condition === 'frozen') return { long: 'module frozen', short: 'frozen' };
+  if (condition === 'finetune') return { long: 'module fine-tuned', short: 'fine-tuned' };
+  if (condition.startsWith('scratch-')) return { long: 'brain from scratch', short: 'from scratch' };
+  return { long: `brain (${condition})`, short: condition };
 }
