@@ -208,6 +208,16 @@ test('the study\'s results in plain words: no Markdown, no file paths, every num
   const numbers = [...words.matchAll(/[+-]?\d[\d,]*\.\d+|\d{1,3}(?:,\d{3})+/g)].map((m) => m[0]);
   assert.ok(numbers.length >= 10, `numbers: ${numbers}`);
   for (const n of numbers) assert.ok(results.includes(n.replace(/^\+/, '')), `${n} is in docs/RESULTS.md`);
+  // The test of the paper's own claim: its state as `vsr report` wrote it, never an interim answer.
+  const claim = JSON.parse(readFileSync(path.join(ROOT, 'study/report-noninferiority/noninferiority.json'), 'utf8'));
+  await page.waitForFunction(() => !/reading its state/.test(document.querySelector('[data-testid="claim"]')?.textContent ?? 'reading its state'));
+  const said = String(await section.locator('[data-testid="claim"]').textContent());
+  if (claim.complete) {
+    for (const s of claim.shapes) assert.ok(said.includes(s.shape) && s.answer, `the answer on ${s.shape}: ${said}`);
+  } else {
+    assert.match(said, new RegExp(`under way: ${claim.finished_runs} of the ${claim.planned_runs} runs have finished`), said);
+    assert.doesNotMatch(said, /difference lies between/, 'no interim answer');
+  }
   const fold = section.locator('details.stats');
   assert.equal(await fold.getAttribute('open'), null, 'the tests are folded');
   assert.equal(await section.locator('table.tests').isVisible(), false);

@@ -34,6 +34,7 @@ pub mod figures;
 mod finetune;
 mod noninferiority;
 mod noninferiority_section;
+pub mod noninferiority_summary;
 mod plateau;
 mod samples;
 mod sets;
@@ -50,6 +51,9 @@ pub struct Report {
     pub markdown: String,
     /// The figures to draw next to it.
     pub figures: Vec<Figure>,
+    /// Data files to write next to it: (file name, JSON text). The non-inferiority test's
+    /// answer for the page (`noninferiority_summary`), where the campaign plans one.
+    pub files: Vec<(String, String)>,
 }
 
 /// Builds the report of `results`.
@@ -57,6 +61,7 @@ pub fn report(results: &Results) -> Report {
     let mut r = Report {
         markdown: String::from("# Campaign report\n\n"),
         figures: Vec::new(),
+        files: Vec::new(),
     };
     missing_section(results, &mut r.markdown);
     let tests = planned(results);
@@ -86,6 +91,11 @@ pub fn report(results: &Results) -> Report {
     }
     codesign::codesign_sections(results, &mut r);
     fidelity::fidelity_section(results, &mut r);
+    if let Some(s) = noninferiority_summary::summary(results) {
+        let json = serde_json::to_string_pretty(&s).expect("a summary serialises");
+        r.files
+            .push((noninferiority_summary::FILE.to_string(), json + "\n"));
+    }
     r
 }
 

@@ -1,5 +1,6 @@
 //! `vsr report FILE`: the campaign's statistics (`report.md`: medians, Mann-Whitney U tests,
-//! effect sizes, what is missing) and its figures (SVG) in one folder, from whatever runs
+//! effect sizes, what is missing), its figures (SVG) and its data files (the
+//! non-inferiority test's `noninferiority.json`, for the page) in one folder, from whatever runs
 //! exist so far (see `vsr::study::report`).
 
 use std::fs;
@@ -30,6 +31,9 @@ pub fn run(args: Args) -> Result<()> {
     for figure in &built.figures {
         let svg = super::svg::draw(figure)?;
         crate::atomic::write(&dir.join(&figure.file), svg.as_bytes(), "figure")?;
+    }
+    for (file, text) in &built.files {
+        crate::atomic::write(&dir.join(file), text.as_bytes(), "report data")?;
     }
     let path = dir.join("report.md");
     crate::atomic::write(&path, built.markdown.as_bytes(), "report")?;
