@@ -129,11 +129,7 @@ pub fn choose(
                 out.len() - 1
             }
         };
-        let complete = data.run.is_some()
-            && ValidationSet::ALL
-                .iter()
-                .all(|s| data.validation.contains_key(s));
-        if !complete {
+        if !data.complete() {
             continue;
         }
         // A NaN median (a run that fell apart) never wins.
