@@ -51,9 +51,9 @@ pub struct Report {
     pub markdown: String,
     /// The figures to draw next to it.
     pub figures: Vec<Figure>,
-    /// Data files to write next to it: (file name, JSON text). The non-inferiority test's
-    /// answer for the page (`noninferiority_summary`), where the campaign plans one.
-    pub files: Vec<(String, String)>,
+    /// The non-inferiority test's state and answer, where the campaign plans one: written
+    /// next to it as `noninferiority.json` for the page (`noninferiority_summary`).
+    pub noninferiority: Option<noninferiority_summary::Summary>,
 }
 
 /// Builds the report of `results`.
@@ -61,7 +61,7 @@ pub fn report(results: &Results) -> Report {
     let mut r = Report {
         markdown: String::from("# Campaign report\n\n"),
         figures: Vec::new(),
-        files: Vec::new(),
+        noninferiority: noninferiority_summary::summary(results),
     };
     missing_section(results, &mut r.markdown);
     let tests = planned(results);
@@ -91,11 +91,6 @@ pub fn report(results: &Results) -> Report {
     }
     codesign::codesign_sections(results, &mut r);
     fidelity::fidelity_section(results, &mut r);
-    if let Some(s) = noninferiority_summary::summary(results) {
-        let json = serde_json::to_string_pretty(&s).expect("a summary serialises");
-        r.files
-            .push((noninferiority_summary::FILE.to_string(), json + "\n"));
-    }
     r
 }
 

@@ -70,8 +70,7 @@ pub struct Answer {
     pub superiority: Option<&'static str>,
 }
 
-/// The summary of every group that plans a non-inferiority test (a campaign has at most a
-/// few; the file holds the first, as the plan has one).
+/// The summary of the first group that plans a non-inferiority test (the plan has one).
 pub fn summary(results: &Results) -> Option<Summary> {
     let g = results
         .campaign
@@ -79,6 +78,33 @@ pub fn summary(results: &Results) -> Option<Summary> {
         .iter()
         .find(|g| g.noninferiority.is_some())?;
     Some(of(results, g, g.noninferiority.as_ref()?))
+}
+
+impl Summary {
+    /// The file's text.
+    pub fn json(&self) -> String {
+        serde_json::to_string_pretty(self).expect("a summary serialises") + "\n"
+    }
+
+    /// One line for a terminal: how far the test has come, or its verdicts.
+    pub fn line(&self) -> String {
+        let head = format!(
+            "non-inferiority of {} against {} (margin {} m/s, {} mean)",
+            self.treatment, self.control, self.margin, self.set
+        );
+        if !self.complete {
+            return format!(
+                "{head}: {} of {} runs validated; no verdict until all are in",
+                self.finished_runs, self.planned_runs
+            );
+        }
+        let verdicts: Vec<String> = self
+            .shapes
+            .iter()
+            .filter_map(|s| Some(format!("{} {}", s.shape, s.answer.as_ref()?.verdict)))
+            .collect();
+        format!("{head}: {}", verdicts.join(", "))
+    }
 }
 
 fn of(results: &Results, g: &EvolveGroup, n: &NonInferiority) -> Summary {

@@ -6,7 +6,7 @@
 use std::fs;
 use std::path::PathBuf;
 
-use vsr::study::report::report;
+use vsr::study::report::{noninferiority_summary, report};
 use vsr::{Error, Result};
 
 use super::target::Target;
@@ -32,8 +32,9 @@ pub fn run(args: Args) -> Result<()> {
         let svg = super::svg::draw(figure)?;
         crate::atomic::write(&dir.join(&figure.file), svg.as_bytes(), "figure")?;
     }
-    for (file, text) in &built.files {
-        crate::atomic::write(&dir.join(file), text.as_bytes(), "report data")?;
+    if let Some(summary) = &built.noninferiority {
+        let path = dir.join(noninferiority_summary::FILE);
+        crate::atomic::write(&path, summary.json().as_bytes(), "report data")?;
     }
     let path = dir.join("report.md");
     crate::atomic::write(&path, built.markdown.as_bytes(), "report")?;
@@ -43,5 +44,8 @@ pub fn run(args: Args) -> Result<()> {
         built.figures.len(),
         results.missing.len()
     );
+    if let Some(summary) = &built.noninferiority {
+        println!("{}", summary.line());
+    }
     Ok(())
 }
