@@ -3,7 +3,8 @@
  * Browser test of the study's results in plain words (node --test): no Markdown and no file
  * paths, every number in them is in docs/RESULTS.md, the tests behind a fold, and the test of
  * the paper's own claim as `vsr report` wrote its state (study/report-noninferiority/
- * noninferiority.json), never an interim answer. Screenshot: screenshots/classroom-results-plain.png.
+ * noninferiority.json), never an interim answer; with a complete file served in its place, the
+ * answer on each body in words. Screenshot: screenshots/classroom-results-plain.png.
  */
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
@@ -59,6 +60,25 @@ test('the study\'s results in plain words: no Markdown, no file paths, every num
   await section.screenshot({ path: path.join(SCREENSHOTS, 'classroom-results-plain.png') });
   await section.locator('button', { hasText: 'See the figure' }).first().click();
   await page.waitForFunction(() => /fig4-rq1-biped/.test(/** @type {HTMLImageElement} */ (document.getElementById('study-image')).src));
+  assert.deepEqual(problems, []);
+  await page.context().close();
+});
+
+test('once every run of the claim\'s test is in, the page gives its answer on each body (a complete file, served in place of the real one)', async () => {
+  const answer = (/** @type {string} */ verdict, /** @type {string | null} */ superiority) => ({
+    medians: [3.9, 3.4], shift: 0.45, interval: [-0.12, 1.03], p: 0.004, holm_p: 0.008, verdict, superiority });
+  const complete = { group: 'noninferiority', treatment: 'attention', control: 'mlp-comm', margin: 0.5, set: 'unseen', planned_runs: 120,
+    finished_runs: 120, complete: true, shapes: [
+      { shape: 'biped-4x3', evals: 30000, planned: 30, finished: [30, 30], answer: answer('not worse', 'better') },
+      { shape: 'comb-7x2', evals: 30000, planned: 30, finished: [30, 30], answer: answer('not shown', null) }] };
+  const { page, problems } = await openPage(env.browser, env.url, { width: 1400, height: 900 });
+  await page.route('**/report-noninferiority/noninferiority.json', (route) => route.fulfill({ json: complete }));
+  await page.reload();
+  await page.waitForFunction(() => /On the comb/.test(document.querySelector('[data-testid="claim"]')?.textContent ?? ''));
+  const said = String(await page.locator('[data-testid="claim"]').textContent());
+  assert.match(said, /On the biped \(biped-4x3\), attention is not worse than mlp-comm, and is faster \(the middle run 3\.90 against 3\.40 m\/s; the difference lies between −0\.12 and \+1\.03 m\/s\)\./);
+  assert.match(said, /On the comb \(comb-7x2\), not settled: the runs still allow attention being more than 0\.5 m\/s slower/);
+  assert.doesNotMatch(said, /under way/);
   assert.deepEqual(problems, []);
   await page.context().close();
 });
