@@ -9,6 +9,7 @@
  */
 
 import { fillClaim } from './claim.js';
+import { figure } from './figures.js';
 
 /**
  * @typedef {object} Finding
@@ -113,7 +114,7 @@ export function fillResults(box, show) {
       item.append(claim);
     }
     if (f.figure) {
-      const button = add('button', 'See the figure and its robots');
+      const button = add('button', figure(f.figure).runs.length ? 'See the figure and its robots' : 'See the figure');
       /** @type {HTMLButtonElement} */ (button).type = 'button';
       button.addEventListener('click', () => show(/** @type {string} */ (f.figure)));
       item.append(button);
