@@ -4,7 +4,7 @@
  * paths, every number in them is in docs/RESULTS.md, the tests behind a fold, and the test of
  * the paper's own claim as `vsr report` wrote its state (study/report-noninferiority/
  * noninferiority.json), never an interim answer; with a complete file served in its place, the
- * answer on each body in words. Screenshot: screenshots/classroom-results-plain.png.
+ * answer on each body in words; the study panel says the same. Screenshot: screenshots/classroom-results-plain.png.
  */
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
@@ -52,6 +52,7 @@ test('the study\'s results in plain words: no Markdown, no file paths, every num
     assert.match(said, new RegExp(`under way: ${claim.finished_runs} of the ${claim.planned_runs} runs have finished`), said);
     assert.doesNotMatch(said, /difference lies between/, 'no interim answer');
   }
+  assert.equal(await page.locator('[data-testid="study-claim"]').textContent(), said, 'the study panel says the same');
   const fold = section.locator('details.stats');
   assert.equal(await fold.getAttribute('open'), null, 'the tests are folded');
   assert.equal(await section.locator('table.tests').isVisible(), false);
@@ -79,6 +80,7 @@ test('once every run of the claim\'s test is in, the page gives its answer on ea
   assert.match(said, /On the biped \(biped-4x3\), attention is not worse than mlp-comm, and is faster \(the middle run 3\.90 against 3\.40 m\/s; the difference lies between −0\.12 and \+1\.03 m\/s\)\./);
   assert.match(said, /On the comb \(comb-7x2\), not settled: the runs still allow attention being more than 0\.5 m\/s slower/);
   assert.doesNotMatch(said, /under way/);
+  assert.equal(await page.locator('[data-testid="study-claim"]').textContent(), said, 'the study panel says the same');
   assert.deepEqual(problems, []);
   await page.context().close();
 });

@@ -60,15 +60,23 @@ export function claimWords(s) {
   return `${asks} ${s.shapes.map((shape) => answerWords(s, shape)).join(' ')}`;
 }
 
+/** @type {Promise<ClaimSummary> | undefined} */
+let loaded;
+
+/** The test's state, fetched once for every place that says it. @returns {Promise<ClaimSummary>} */
+function loadClaim() {
+  loaded ??= fetch(CLAIM_FILE).then((response) => (response.ok ? response.json() : Promise.reject(new Error(`HTTP ${response.status}`))));
+  return loaded;
+}
+
 /**
- * Fetches the test's state and writes it into `box` (a line that says why, if it cannot).
+ * Writes the test's state into `box` (a line that says why, if it cannot be read): in “What
+ * our study found” and in the study panel.
  * @param {HTMLElement} box
  */
 export async function fillClaim(box) {
   try {
-    const response = await fetch(CLAIM_FILE);
-    if (!response.ok) throw new Error(`HTTP ${response.status}`);
-    box.textContent = claimWords(/** @type {ClaimSummary} */ (await response.json()));
+    box.textContent = claimWords(await loadClaim());
   } catch (error) {
     box.textContent = `A larger test of the paper's exact claim is planned; its state could not be read (${messageOf(error)}).`;
   }

@@ -10,6 +10,7 @@ import { withStats } from '../classroom/simple-words.js';
 import { messageOf } from '../kit.js';
 import { shortLabel, unseenWords } from '../modules.js';
 import { FIGURES, STUDY_DIR, TABLES, figureSrc } from './figures.js';
+import { fillClaim } from './claim.js';
 import { lineageNote } from './lineage.js';
 import { count } from '../format.js';
 
@@ -78,6 +79,7 @@ export class StudyPanel {
     this.watch = /** @type {HTMLButtonElement} */ (el('study-watch'));
     this.runNote = /** @type {HTMLElement} */ (el('study-run-note'));
     this.runBar = /** @type {HTMLElement} */ (el('study-run-bar'));
+    void fillClaim(/** @type {HTMLElement} */ (el('study-claim')));
     /** @type {StudyRun[]} */
     this.runs = [];
     for (const f of FIGURES) this.pick.append(new Option(f.title, f.id));
