@@ -46,9 +46,15 @@ test('the study\'s results in plain words: no Markdown, no file paths, every num
   const claim = JSON.parse(readFileSync(path.join(ROOT, 'study/report-noninferiority/noninferiority.json'), 'utf8'));
   await page.waitForFunction(() => !/reading its state/.test(document.querySelector('[data-testid="claim"]')?.textContent ?? 'reading its state'));
   const said = String(await section.locator('[data-testid="claim"]').textContent());
+  const row7 = results.split('\n').find((line) => line.startsWith('| 7 |')) ?? '';
   if (claim.complete) {
-    for (const s of claim.shapes) assert.ok(said.includes(s.shape) && s.answer, `the answer on ${s.shape}: ${said}`);
+    for (const s of claim.shapes) {
+      assert.ok(said.includes(s.shape) && s.answer, `the answer on ${s.shape}: ${said}`);
+      const interval = `[${s.answer.interval.map((/** @type {number} */ v) => (v < 0 ? '' : '+') + v.toFixed(2)).join(', ')}]`;
+      assert.ok(row7.includes(s.shape) && row7.includes(interval), `RESULTS.md's row 7 gives ${s.shape}'s interval ${interval}: ${row7}`);
+    }
   } else {
+    assert.match(row7, /no result yet/, 'RESULTS.md gives no answer before the page has one');
     assert.match(said, new RegExp(`under way: ${claim.finished_runs} of the ${claim.planned_runs} runs have finished`), said);
     assert.doesNotMatch(said, /difference lies between/, 'no interim answer');
   }
