@@ -1,8 +1,8 @@
 //! `vsr campaign status FILE`: how far a campaign has come, read from its output folder (it
 //! runs nothing): its evolutionary runs finished, in flight (a checkpoint, with the
 //! evaluations it has reached) and not started; its other jobs done; and an estimate of the
-//! core-hours left, from the finished runs' own generation times (the median seconds per
-//! evaluation on one thread: a run paused or slowed for a while moves it little).
+//! core-hours left, from the generation times of the runs finished last (the median seconds
+//! per evaluation on one thread: a run paused or slowed for a while moves it little).
 
 use std::fs;
 use std::path::Path;
@@ -37,6 +37,9 @@ pub fn run(args: Args) -> Result<()> {
     print!("{}", status(&jobs, cores));
     Ok(())
 }
+
+/// How many of the runs finished last the estimate reads.
+const RECENT: usize = 10;
 
 /// An evolutionary run's state on disk.
 enum RunState {
@@ -123,7 +126,8 @@ fn status(jobs: &[Job], cores: usize) -> String {
         match run_state(&job.out) {
             RunState::Finished => {
                 finished += 1;
-                rates.extend(seconds_per_evaluation(&job.out));
+                let written = fs::metadata(&job.out).and_then(|m| m.modified()).ok();
+                rates.extend(seconds_per_evaluation(&job.out).map(|r| (written, r)));
             }
             RunState::InFlight { evaluations } => {
                 left += budget.saturating_sub(evaluations);
@@ -161,15 +165,19 @@ fn status(jobs: &[Job], cores: usize) -> String {
     if runs == 0 {
         return text;
     }
-    match median(rates) {
+    // The runs finished last: the machine and the code as they are now.
+    rates.sort_by_key(|&(written, _)| written);
+    let recent: Vec<f64> = rates.iter().rev().take(RECENT).map(|&(_, r)| r).collect();
+    match median(recent) {
         _ if left == 0 => text += "every evolutionary run is finished\n",
         Some(s) => {
             let hours = left as f64 * s / 3600.0;
             text += &format!(
-                "left: {left} evaluations, about {hours:.1} core-hours at the finished runs' \
-                 median {:.1} ms per evaluation on one thread; about {:.1} hours on {cores} \
-                 cores\n",
+                "left: {left} evaluations, about {hours:.1} core-hours at {:.1} ms per evaluation \
+                 on one thread (the median of the last {} finished runs); about {:.1} hours on \
+                 {cores} cores\n",
                 s * 1e3,
+                rates.len().min(RECENT),
                 hours / cores as f64
             );
         }
