@@ -9,6 +9,7 @@ use std::path::Path;
 
 use vsr::experiment::planned_evaluations;
 use vsr::study::campaign::{Job, Task};
+use vsr::study::statistics;
 use vsr::{Error, Result};
 
 use super::target::{Only, Target};
@@ -89,17 +90,9 @@ fn seconds_per_evaluation(out: &Path) -> Option<f64> {
     median(per)
 }
 
-fn median(mut v: Vec<f64>) -> Option<f64> {
-    if v.is_empty() {
-        return None;
-    }
-    v.sort_by(f64::total_cmp);
-    let n = v.len();
-    Some(if n % 2 == 1 {
-        v[n / 2]
-    } else {
-        (v[n / 2 - 1] + v[n / 2]) / 2.0
-    })
+/// The median, if there are values.
+fn median(v: Vec<f64>) -> Option<f64> {
+    (!v.is_empty()).then(|| statistics::median(&v))
 }
 
 /// The status text.
