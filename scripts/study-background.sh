@@ -45,6 +45,8 @@ runner=$!
 while kill -0 "$runner" 2>/dev/null; do
   sleep 600
   commit
+  # How far it has come, in this script's log (a binary older than `campaign status` says nothing).
+  ( cd "$wt" && date -u +%H:%M && "$bin/vsr" campaign status "$campaign" 2>/dev/null ) || true
 done
 wait "$runner" || echo "study-background: the campaign stopped with an error (see $wt/study/logs)" >&2
 commit

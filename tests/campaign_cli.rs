@@ -33,9 +33,27 @@ fn plan_run_merge_report_and_resume() {
     let stage1 = vsr(&["campaign", "plan", &file, "--stage", "1"]);
     assert_eq!(text(&stage1).lines().count(), 12, "runs from scratch");
 
+    let status = |cores: &str| text(&vsr(&["campaign", "status", &file, "--cores", cores]));
+    let before = status("2");
+    assert!(
+        before.contains("evolutionary runs: 0 of 15 finished, 0 in flight, 15 not started")
+            && before.contains("assessments (validations, ablations, fidelity): 0 of 36 done")
+            && before.contains("no finished one-thread run yet"),
+        "{before}"
+    );
+
     let run = vsr(&["campaign", "run", &file, "--jobs", "2"]);
     assert!(run.status.success(), "{}", text(&run));
     let out = dir.join("smoke-out");
+    let after = status("2");
+    assert!(
+        after.contains("15 of 15 finished") && after.contains("36 of 36 done"),
+        "{after}"
+    );
+    assert!(
+        after.contains("every evolutionary run is finished"),
+        "{after}"
+    );
     assert_eq!(files_in(&out.join("runs")).len(), 15);
     assert_eq!(files_in(&out.join("validation")).len(), 30);
     assert_eq!(files_in(&out.join("ablation")).len(), 6);
@@ -105,6 +123,19 @@ fn plan_run_merge_report_and_resume() {
     assert!(md.contains("worm-3x1-attention-8-s1.json"));
     let pending = text(&vsr(&["campaign", "plan", &file, "--pending"]));
     assert_eq!(pending.lines().count(), 1, "{pending}");
+    let lost = status("1");
+    assert!(
+        lost.contains("14 of 15 finished, 0 in flight, 1 not started"),
+        "{lost}"
+    );
+    assert!(
+        lost.contains("left: 12 evaluations, about") && lost.contains("hours on 1 cores"),
+        "the source run's 12 evaluations (4 + 2 x 4: the budget 8 passed): {lost}"
+    );
+    assert_eq!(
+        text(&vsr(&["campaign", "status", &file, "--cores", "0"])).trim(),
+        "vsr: invalid input: --cores must be at least 1"
+    );
     let rerun = vsr(&["campaign", "run", &file]);
     assert!(
         text(&rerun).contains("51 done (50 already"),
@@ -130,6 +161,7 @@ fn the_report_reads_runs_at_an_earlier_budget() {
     let longer = "\n[[evolve]]\nname = \"longer\"\nshapes = [\"worm-3x1\"]\n\
                   controllers = [\"attention\", \"mlp\"]\nevals = [16]\nearlier = [8]\n";
     fs::write(&file, base + longer).unwrap();
+
     let run = vsr(&["campaign", "run", &file, "--jobs", "2"]);
     assert!(run.status.success(), "{}", text(&run));
     let out = dir.join("smoke-out");

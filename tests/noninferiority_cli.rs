@@ -5,7 +5,8 @@
 //! (seconds-long), then every other seed's and the known seeds' files are copies with chosen
 //! validation means, so that each verdict is reached: on `unseen`, worm-3x1 not worse and
 //! better, worm-4x1 not worse and not shown better; on `paper`, worm-3x1 worse by more than
-//! the margin, worm-4x1 not shown. A missing run makes the verdict an interim one.
+//! the margin, worm-4x1 not shown. A missing run makes the verdict an interim one, and
+//! takes the answers out of `noninferiority.json` (the page's copy of the primary verdicts).
 
 use std::fs;
 use std::path::Path;
@@ -84,6 +85,12 @@ fn row<'a>(md: &'a str, set: &str, shape: &str) -> &'a str {
     line.unwrap_or_else(|| panic!("no {shape} row on {set}: {md}"))
 }
 
+/// The report's data file for the page (`noninferiority.json`).
+fn summary(out: &Path) -> serde_json::Value {
+    serde_json::from_str(&fs::read_to_string(out.join("report/noninferiority.json")).unwrap())
+        .unwrap()
+}
+
 #[test]
 fn verdicts_of_a_synthetic_campaign() {
     let dir = std::env::temp_dir().join(format!("vsr-noninferiority-{}", std::process::id()));
@@ -152,6 +159,32 @@ fn verdicts_of_a_synthetic_campaign() {
         "{md}"
     );
     assert!(!md.contains("interim"), "{md}");
+    assert!(
+        text(&report)
+            .contains("(margin 0.5 m/s, unseen mean): worm-3x1 not worse, worm-4x1 not worse"),
+        "{}",
+        text(&report)
+    );
+    let json = summary(&out);
+    assert_eq!(json["complete"], true, "{json}");
+    assert_eq!(
+        (json["finished_runs"].clone(), json["planned_runs"].clone()),
+        (32.into(), 32.into())
+    );
+    assert_eq!(json["set"], "unseen");
+    let answer = |shape: usize, key: &str| json["shapes"][shape]["answer"][key].clone();
+    assert_eq!(
+        (answer(0, "verdict"), answer(0, "superiority")),
+        ("not worse".into(), "better".into())
+    );
+    assert_eq!(
+        (answer(1, "verdict"), answer(1, "superiority")),
+        ("not worse".into(), "not shown better".into())
+    );
+    assert!(
+        (answer(0, "holm_p").as_f64().unwrap() - 2.0 / 12870.0).abs() < 1e-9,
+        "{json}"
+    );
 
     fs::remove_file(out.join("validation/worm-4x1-attention-8-s8.paper.json")).unwrap();
     let again = vsr(&["report", file]);
@@ -161,6 +194,30 @@ fn verdicts_of_a_synthetic_campaign() {
     assert!(
         partial.contains("(interim: 7+8 of 8+8 runs, not the planned test)"),
         "{partial}"
+    );
+    // The primary set is still complete without a paper file; one unseen file missing and
+    // the page's file gives counts, never an interim answer.
+    assert_eq!(summary(&out)["complete"], true);
+    fs::remove_file(out.join("validation/worm-3x1-mlp-comm-8-s8.unseen.json")).unwrap();
+    let partial = vsr(&["report", file]);
+    assert!(
+        text(&partial).contains("31 of 32 runs validated; no verdict until all are in"),
+        "{}",
+        text(&partial)
+    );
+    let json = summary(&out);
+    assert_eq!(
+        (json["complete"].clone(), json["finished_runs"].clone()),
+        (false.into(), 31.into())
+    );
+    assert_eq!(
+        json["shapes"][0]["finished"],
+        serde_json::json!([8, 7]),
+        "{json}"
+    );
+    assert!(
+        json["shapes"][0]["answer"].is_null() && json["shapes"][1]["answer"].is_null(),
+        "{json}"
     );
     let _ = fs::remove_dir_all(&dir);
 }

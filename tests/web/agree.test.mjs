@@ -13,8 +13,8 @@ import { readFileSync } from 'node:fs';
 import { readFile } from 'node:fs/promises';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { ROOT, SCREENSHOTS, byTestId, clickCells, figure, openPage, screenshot, start, waitForFigure, waitForText } from './harness.mjs';
-import { ATTENTION, episodeSpeed, openOwnBody, speedNote } from './viewer-numbers.mjs';
+import { ROOT, SCREENSHOTS, byTestId, figure, openPage, screenshot, start, waitForFigure, waitForText } from './harness.mjs';
+import { ATTENTION, attentionOnWorm, episodeSpeed, openOwnBody, speedNote } from './viewer-numbers.mjs';
 
 /** @type {Awaited<ReturnType<typeof start>>} */ let env;
 
@@ -137,11 +137,7 @@ test('numbers that agree: the freeze verdict keeps one wording while the frozen 
 
 test('numbers that agree: during a fine-tune the walking best shows its own training figure, and why the viewer\'s differs', async () => {
   const { page, problems, context } = await openPage(env.browser, env.url);
-  await page.locator('#clear').click();
-  await clickCells(page, [[0, 0], [1, 0], [2, 0], [3, 0], [4, 0]]); // a 5-voxel worm
-  await byTestId(page, 'pretrained').selectOption(ATTENTION);
-  await byTestId(page, 'load-pretrained').click();
-  await waitForText(page, 'status', /^5 voxels, attention$/);
+  await attentionOnWorm(page); // the biped's attention on a 5-voxel worm
   for (const [key, value] of Object.entries({ population: '6', seconds: '2', budget: '60', seed: '2', terrain: 'hilly-1-10', workers: '2' })) {
     await page.locator(`#run-${key}`).fill(value);
   }

@@ -8,8 +8,8 @@
  * in print media); after a run, one button races its first, middle and last generations' bests;
  * the simple-words switch hides formulas and statistics and stays on after a reload, and the
  * glossary explains the issue's newcomer words, linked where they appear, with the voxel's
- * width the core's; the plain results have no Markdown and no file paths, and every number in
- * them is in docs/RESULTS.md. Screenshots: screenshots/classroom-*.png, worksheet.pdf.
+ * width the core's (the plain results: results.test.mjs). Screenshots:
+ * screenshots/classroom-*.png, worksheet.pdf.
  */
 import assert from 'node:assert/strict';
 import { readFileSync, statSync } from 'node:fs';
@@ -179,43 +179,6 @@ test('simple words: formulas and statistics hidden, kept after a reload; the new
   assert.equal(await page.locator('#glossary').getAttribute('open'), '');
   await page.waitForFunction(() => { const r = document.getElementById('g-gecco')?.getBoundingClientRect(); return r && r.top >= 0 && r.bottom <= innerHeight; });
   await screenshot(page, 'classroom-simple-words.png');
-  assert.deepEqual(problems, []);
-  await page.context().close();
-});
-
-test('the study\'s results in plain words: no Markdown, no file paths, every number from RESULTS.md, the tests behind a fold', async () => {
-  const { page, problems } = await openPage(env.browser, env.url, { width: 1400, height: 900 });
-  const section = byTestId(page, 'results-plain');
-  await page.locator('header a[href="#results-plain"]').click();
-  await page.waitForFunction(() => { const r = document.getElementById('results-plain')?.getBoundingClientRect(); return r && r.top < innerHeight && r.bottom > 0; });
-  assert.equal(new URL(page.url()).hash, '', 'the address (the share link\'s #...) is left alone');
-  const plain = String(await section.evaluate((el) => {
-    const copy = /** @type {HTMLElement} */ (el.cloneNode(true));
-    copy.querySelector('details')?.remove();
-    return copy.textContent;
-  }));
-  assert.doesNotMatch(plain, /\*\*|`|\||^#|\[[^\]]*\]\(/m, 'no Markdown characters');
-  assert.doesNotMatch(plain, /[\w-]+\/[\w.-]+\.(md|json|csv|toml|svg)\b|docs\/|study\//, 'no file paths');
-  assert.doesNotMatch(plain, /\bRQ\d|A12|Hodges|Mann-Whitney|CCD|dyn4j|SPEC|latched/, 'none of the researchers\' terms');
-  assert.match(plain, /No difference detected” means/);
-  const results = readFileSync(path.join(ROOT, 'docs/RESULTS.md'), 'utf8');
-  const words = await section.evaluate((el) => { // every text node apart, so that table cells do not run together
-    const walk = document.createTreeWalker(el, NodeFilter.SHOW_TEXT);
-    const out = [];
-    while (walk.nextNode()) out.push(walk.currentNode.textContent);
-    return out.join(' ');
-  });
-  const numbers = [...words.matchAll(/[+-]?\d[\d,]*\.\d+|\d{1,3}(?:,\d{3})+/g)].map((m) => m[0]);
-  assert.ok(numbers.length >= 10, `numbers: ${numbers}`);
-  for (const n of numbers) assert.ok(results.includes(n.replace(/^\+/, '')), `${n} is in docs/RESULTS.md`);
-  const fold = section.locator('details.stats');
-  assert.equal(await fold.getAttribute('open'), null, 'the tests are folded');
-  assert.equal(await section.locator('table.tests').isVisible(), false);
-  await fold.locator('summary').click();
-  assert.equal(await section.locator('table.tests tbody tr').count(), 6);
-  await section.screenshot({ path: path.join(SCREENSHOTS, 'classroom-results-plain.png') });
-  await section.locator('button', { hasText: 'See the figure' }).first().click();
-  await page.waitForFunction(() => /fig4-rq1-biped/.test(/** @type {HTMLImageElement} */ (document.getElementById('study-image')).src));
   assert.deepEqual(problems, []);
   await page.context().close();
 });

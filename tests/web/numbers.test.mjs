@@ -21,9 +21,9 @@ import { execFileSync } from 'node:child_process';
 import { readFile } from 'node:fs/promises';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { BIN, ROOT, byTestId, clickCells, figure, openPage, screenshot, start, waitForText } from './harness.mjs';
+import { BIN, ROOT, byTestId, figure, openPage, screenshot, start, waitForText } from './harness.mjs';
 
-import { ATTENTION, TERRAIN, episodeSpeed, openOwnBody, shareLink, speedNote } from './viewer-numbers.mjs';
+import { ATTENTION, attentionOnWorm, TERRAIN, episodeSpeed, openOwnBody, shareLink, speedNote } from './viewer-numbers.mjs';
 
 /** @type {Awaited<ReturnType<typeof start>>} */ let env;
 
@@ -106,11 +106,7 @@ test('a pretrained brain kept across a reload, or shared as a link, is measured 
 
 test('a transplant shows its one-shot speed at once and says to fine-tune; a budget says what it becomes', async () => {
   const { page, problems, context } = await openPage(env.browser, env.url);
-  await page.locator('#clear').click();
-  await clickCells(page, [[0, 0], [1, 0], [2, 0], [3, 0], [4, 0]]); // a 5-voxel worm
-  await byTestId(page, 'pretrained').selectOption(ATTENTION);
-  await byTestId(page, 'load-pretrained').click();
-  await waitForText(page, 'status', /^5 voxels, attention$/);
+  await attentionOnWorm(page); // the biped's attention on a 5-voxel worm
   await waitForText(page, 'speed-note', /one-shot speed.*the paper found the same.*Fine-tune/, 30_000);
   const oneShot = await figure(page, 'speed-note');
   assert.ok(Number.isFinite(oneShot));
@@ -129,11 +125,7 @@ test('a transplant reloaded, or opened from its link, still says it walks one-sh
   const { page, problems, context } = await openPage(env.browser, env.url);
   await page.locator('#terrain').fill(TERRAIN);
   await page.locator('#terrain').press('Enter');
-  await page.locator('#clear').click();
-  await clickCells(page, [[0, 0], [1, 0], [2, 0], [3, 0], [4, 0]]); // a 5-voxel worm
-  await byTestId(page, 'pretrained').selectOption(ATTENTION);
-  await byTestId(page, 'load-pretrained').click();
-  await waitForText(page, 'status', /^5 voxels, attention$/);
+  await attentionOnWorm(page); // the biped's attention on a 5-voxel worm
   const before = await speedNote(page);
   assert.match(before, /over a 30-s episode on hilly-1-10-7\. That is its one-shot speed.*press Fine-tune/);
   await page.waitForFunction(() => /one-shot=1/.test(localStorage.getItem('vsr-playground/state/v1') ?? ''), undefined, { timeout: 20_000 });

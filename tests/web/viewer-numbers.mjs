@@ -3,10 +3,19 @@
  * What the tests of the page's numbers share (numbers.test.mjs, agree.test.mjs): the viewer's
  * speed over its episode, the speed note, the shared link, the pretrained biped on its own body.
  */
-import { byTestId, figure, openPage, waitForText } from './harness.mjs';
+import { byTestId, clickCells, figure, openPage, waitForText } from './harness.mjs';
 
 export const ATTENTION = 'pretrained/biped-4x3-attention.json';
 export const TERRAIN = 'hilly-1-10-7';
+
+/** Clears the drawing, draws a 5-voxel worm and transplants the biped's attention module onto it. @param {import('playwright-core').Page} page */
+export async function attentionOnWorm(page) {
+  await page.locator('#clear').click();
+  await clickCells(page, [[0, 0], [1, 0], [2, 0], [3, 0], [4, 0]]);
+  await byTestId(page, 'pretrained').selectOption(ATTENTION);
+  await byTestId(page, 'load-pretrained').click();
+  await waitForText(page, 'status', /^5 voxels, attention$/);
+}
 
 /** Waits until the viewer's episode ended and returns its speed. @param {import('playwright-core').Page} page */
 export async function episodeSpeed(page) {

@@ -147,6 +147,7 @@ export const CHAPTERS = [
     notice: 'The gallery fills round by round: small bodies first, then larger ones and more feet. Green bodies are the fastest; an outline marks bodies new in the last round. The fastest body is often not the biped the brain was evolved on. Each body\'s speed is measured again every round on new hills, so a lucky walk does not stay on top. '
       + 'In our study of this search (ten long searches per brain, on hills the robots never trained on), this frozen brain found faster bodies than searches that had to evolve a plain network or a messaging network together with the body; against an attention brain evolved from scratch with the body, the searches were too few to tell.',
     setup: { rows: null, brain: { module: ATTENTION, on: 'own' }, terrain: VIEW, run: QUICK, codesign: { brain: 'frozen', from: 'box' } },
+    figure: 'codesign-unseen',
     target: '#codesign-panel',
   },
   {

@@ -80,6 +80,27 @@ export const FIGURES = [
       + 'the first 30,000 evaluations of each run (up to the dashed line) are exactly the run the other comb figures show.',
     runs: [{ kind: 'scratch', shape: 'comb-7x2', evals: 60000, controllers: ['attention', 'mlp-comm'] }],
   },
+  {
+    id: 'codesign-unseen',
+    report: 'report-codesign/',
+    file: 'codesign-rq3-unseen.svg',
+    title: 'Searching for a body: a frozen brain from the biped against brains evolved with the body',
+    paper: 'Our own question (the paper moved brains only between bodies of the same kind). Ten searches per brain, each 6,000 evaluations from a 3 × 3 box: '
+      + 'with the biped\'s attention kept frozen, the searches ended on faster bodies than with a plain network (mlp, Holm p 0.006) or a messaging one (mlp-comm, 0.027) evolved along with the body; '
+      + 'against attention evolved from scratch with the body, no difference is detected (0.25). The fastest body of each brain is in the playground\'s list of modules.',
+    read: `${BOXES} A point is one search's final best body, with its brain, walking ten hilly terrains it was not trained on.`,
+    runs: [],
+  },
+  {
+    id: 'codesign-bodies',
+    report: 'report-codesign/',
+    file: 'codesign-rq3-bodies.svg',
+    title: 'Searching for a body: the body every search ended on',
+    paper: 'Our own question. None of the fifty bodies is the biped the frozen brain was evolved on: the searches invented bodies of 5 to 20 voxels.',
+    read: 'One small drawing per search (a row per brain, a column per seed), with its mean speed on the ten unseen terrains. '
+      + 'The fastest body of each brain is in the playground\'s list of modules: choose it there to watch it walk.',
+    runs: [],
+  },
   transfer('biped', ['biped-4x3', 'small'], ['biped-6x4', 'large'], 'The paper\'s Fig. 7: a transplanted attention, '
     + 'fine-tuned, gets fast much sooner than a brain evolved from scratch. Our study agrees on all four transfers (after '
     + '2,500 evaluations); by the end of the budget no difference is detected between the two.'),
@@ -105,6 +126,11 @@ function transfer(body, [from, fromSize], [to, toSize], paper) {
     runs: [{ kind: 'finetune', shape: to, evals: 10000, source: `${from}-` },
       { kind: 'scratch', shape: to, evals: 30000, controllers: ['attention'] }],
   };
+}
+
+/** Where a figure's file is served. @param {StudyFigure} fig */
+export function figureSrc(fig) {
+  return `${STUDY_DIR}${fig.report ?? 'report/'}${fig.file}`;
 }
 
 /** @param {string} id @returns {StudyFigure} */

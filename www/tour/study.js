@@ -9,7 +9,8 @@
 import { withStats } from '../classroom/simple-words.js';
 import { messageOf } from '../kit.js';
 import { shortLabel, unseenWords } from '../modules.js';
-import { FIGURES, STUDY_DIR, TABLES } from './figures.js';
+import { FIGURES, STUDY_DIR, TABLES, figureSrc } from './figures.js';
+import { fillClaim } from './claim.js';
 import { lineageNote } from './lineage.js';
 import { count } from '../format.js';
 
@@ -77,6 +78,8 @@ export class StudyPanel {
     this.runPick = /** @type {HTMLSelectElement} */ (el('study-run'));
     this.watch = /** @type {HTMLButtonElement} */ (el('study-watch'));
     this.runNote = /** @type {HTMLElement} */ (el('study-run-note'));
+    this.runBar = /** @type {HTMLElement} */ (el('study-run-bar'));
+    void fillClaim(/** @type {HTMLElement} */ (el('study-claim')));
     /** @type {StudyRun[]} */
     this.runs = [];
     for (const f of FIGURES) this.pick.append(new Option(f.title, f.id));
@@ -101,7 +104,7 @@ export class StudyPanel {
   /** Shows the chosen figure and lists its runs, the fastest of its first brain chosen. */
   async showFigure() {
     const fig = FIGURES.find((f) => f.id === this.pick.value) ?? FIGURES[0];
-    const src = `${STUDY_DIR}${fig.report ?? 'report/'}${fig.file}`;
+    const src = figureSrc(fig);
     this.image.src = src;
     this.image.alt = fig.title;
     this.link.href = src;
@@ -109,12 +112,15 @@ export class StudyPanel {
     const runs = runsOf(fig, this.runs);
     this.runPick.replaceChildren(...runs.map((r) => new Option(describe(r), r.run)));
     this.watch.disabled = runs.length === 0;
+    this.runBar.hidden = fig.runs.length === 0;
     this.noteRun();
   }
 
   /** Says beside the chosen run where the same run stopped at another budget, and why their bests differ. */
   noteRun() {
-    this.runNote.textContent = lineageNote(this.runs, this.runPick.value);
+    const fig = FIGURES.find((f) => f.id === this.pick.value);
+    this.runNote.textContent = fig?.runs.length === 0 ? 'These runs are not listed here: the fastest body each brain found is in the list of modules, in the playground above.'
+      : lineageNote(this.runs, this.runPick.value);
     this.runNote.hidden = !this.runNote.textContent;
   }
 

@@ -10,7 +10,7 @@
 import { withStats } from '../classroom/simple-words.js';
 import { messageOf } from '../kit.js';
 import { CHAPTERS } from './chapters.js';
-import { FIGURES, STUDY_DIR } from './figures.js';
+import { FIGURES, figureSrc } from './figures.js';
 import { stage } from './stage.js';
 
 /** How long after a chapter opens its controls are brought into view again, once the page has settled (ms). */
@@ -162,7 +162,7 @@ export class Tour {
     const fig = FIGURES.find((f) => f.id === id);
     const box = doc.createElement('figure');
     if (!fig) return box;
-    const src = `${STUDY_DIR}report/${fig.file}`;
+    const src = figureSrc(fig);
     box.innerHTML = '<a target="_blank" rel="noopener" title="Open the figure full size"><img alt=""></a><figcaption></figcaption>';
     /** @type {HTMLAnchorElement} */ (box.querySelector('a')).href = src;
     const img = /** @type {HTMLImageElement} */ (box.querySelector('img'));
@@ -172,8 +172,8 @@ export class Tour {
     caption.replaceChildren(...withStats(doc, `Our study: ${fig.title}. ${fig.read} ${fig.paper} `));
     const watch = doc.createElement('button');
     watch.type = 'button';
-    watch.textContent = 'Watch its robots';
-    watch.title = 'Show this figure in “The study” below, where each run\'s best robot can walk';
+    watch.textContent = fig.runs.length ? 'Watch its robots' : 'Show it in “The study” below';
+    watch.title = fig.runs.length ? 'Show this figure in “The study” below, where each run\'s best robot can walk' : 'Show this figure in “The study” below';
     watch.addEventListener('click', () => this.study.show(id));
     caption.append(watch);
     return box;

@@ -259,6 +259,6 @@ pub(crate) fn planned_generations(population: u64, budget: u64) -> u64 {
 /// Evaluations a run of `population` and `budget` evaluations takes: generation 0 (the
 /// first population) plus two populations per later generation (30100 for the paper's
 /// 30000 with 100, 2020 for 2000 with 20).
-pub(crate) fn planned_evaluations(population: u64, budget: u64) -> u64 {
+pub fn planned_evaluations(population: u64, budget: u64) -> u64 {
     population + 2 * population * planned_generations(population, budget)
 }

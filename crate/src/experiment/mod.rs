@@ -29,7 +29,7 @@ pub use codesign::{best_in_file, BrainMode, Codesign, CodesignConfig, CodesignRu
 pub use config::{EvolutionConfig, SourceRun, TrainingTerrain};
 pub use ensemble::{check_start_offset, gait_ensemble, Ensemble, ENSEMBLE_SHIFT};
 pub use episode::{steps_for, topology, Episode, GaitEpisode, Outcome, Policy};
-pub use evolution::{Evolution, Job};
+pub use evolution::{planned_evaluations, Evolution, Job};
 pub use finetune::{source_of, transplant};
 pub use freeze::freezable_policy;
 pub use gait::PhaseGait;

@@ -14,13 +14,8 @@ use crate::trajectory::Writer;
 /// Arguments of `vsr evaluate`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// The run file whose best individual is evaluated (or a co-design run file: its best
-    /// body with its brain).
-    #[arg(long)]
-    genome: PathBuf,
-    /// A co-design run file's archive entry (0 first, in the file's order) instead of its best.
-    #[arg(long)]
-    entry: Option<usize>,
+    #[command(flatten)]
+    individual: crate::runfile::Individual,
     /// Terrain name, e.g. flat or hilly-1-10-0.
     #[arg(long)]
     terrain: String,
@@ -42,7 +37,7 @@ pub struct Args {
 /// Runs the command.
 pub fn run(args: Args) -> vsr::Result<()> {
     check_seconds(args.seconds)?;
-    let best = crate::runfile::load_best(&args.genome, args.entry)?;
+    let best = args.individual.load()?;
     let shape = match &args.shape {
         Some(s) => Shape::parse(s)?,
         None => best.shape.clone(),

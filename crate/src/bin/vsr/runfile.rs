@@ -2,7 +2,7 @@
 //! never leaves a half-written run file.
 
 use std::fs;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use vsr::experiment::RunFile;
 use vsr::{Error, Result};
@@ -22,6 +22,25 @@ pub fn load_source(path: &Path) -> Result<vsr::experiment::SourceRun> {
     let text = fs::read_to_string(path)
         .map_err(|e| Error::Io(format!("cannot read run file {}: {e}", path.display())))?;
     vsr::experiment::codesign::source_in_file(&text).map_err(|e| in_file(path, e))
+}
+
+/// The individual a command walks (`vsr evaluate`, `vsr validate`): `--genome` and `--entry`.
+#[derive(clap::Args, Debug)]
+pub struct Individual {
+    /// The run file whose best individual is walked (or a co-design run file: its best body
+    /// with its brain).
+    #[arg(long)]
+    pub genome: PathBuf,
+    /// A co-design run file's archive entry (0 first, in the file's order) instead of its best.
+    #[arg(long)]
+    pub entry: Option<usize>,
+}
+
+impl Individual {
+    /// Its body and brain (see [`load_best`]).
+    pub fn load(&self) -> Result<vsr::experiment::Best> {
+        load_best(&self.genome, self.entry)
+    }
 }
 
 /// The body with its brain in a run file or a co-design run file (its best, or archive entry

@@ -11,13 +11,8 @@ use vsr::{Error, Result};
 /// Arguments of `vsr validate`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// The run file whose best individual is validated (or a co-design run file: its best
-    /// body with its brain).
-    #[arg(long)]
-    genome: PathBuf,
-    /// A co-design run file's archive entry (0 first, in the file's order) instead of its best.
-    #[arg(long)]
-    entry: Option<usize>,
+    #[command(flatten)]
+    individual: crate::runfile::Individual,
     /// Simulated seconds per episode.
     #[arg(long, default_value_t = 30.0)]
     seconds: f64,
@@ -36,7 +31,7 @@ pub struct Args {
 /// Runs the command.
 pub fn run(args: Args) -> Result<()> {
     check_seconds(args.seconds)?;
-    let best = crate::runfile::load_best(&args.genome, args.entry)?;
+    let best = args.individual.load()?;
     if let Some(out) = &args.out {
         crate::atomic::check_writable(out)?;
     }

@@ -26,6 +26,11 @@ impl RunData {
         self.validation.get(&set).map(|v| v.mean)
     }
 
+    /// Finished and validated on every set.
+    pub fn complete(&self) -> bool {
+        self.run.is_some() && validated_everywhere(&self.validation)
+    }
+
     /// The unfrozen reference of the ablation on `set`: the velocity of the validation
     /// episode on the set's first terrain (the same terrain and sensor noise), if known.
     pub fn unfrozen(&self, set: ValidationSet) -> Option<f64> {
@@ -108,6 +113,18 @@ impl CodesignData {
     pub fn validation_mean(&self, set: ValidationSet) -> Option<f64> {
         self.validation.get(&set).map(|v| v.mean)
     }
+
+    /// Finished and its best body validated on every set.
+    pub fn complete(&self) -> bool {
+        self.run.is_some() && validated_everywhere(&self.validation)
+    }
+}
+
+/// Whether `validation` holds every set.
+fn validated_everywhere(validation: &BTreeMap<ValidationSet, Validation>) -> bool {
+    ValidationSet::ALL
+        .iter()
+        .all(|s| validation.contains_key(s))
 }
 
 /// Every run's data, and the expected files that do not exist.

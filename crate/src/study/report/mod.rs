@@ -34,6 +34,7 @@ pub mod figures;
 mod finetune;
 mod noninferiority;
 mod noninferiority_section;
+pub mod noninferiority_summary;
 mod plateau;
 mod samples;
 mod sets;
@@ -50,6 +51,9 @@ pub struct Report {
     pub markdown: String,
     /// The figures to draw next to it.
     pub figures: Vec<Figure>,
+    /// The non-inferiority test's state and answer, where the campaign plans one: written
+    /// next to it as `noninferiority.json` for the page (`noninferiority_summary`).
+    pub noninferiority: Option<noninferiority_summary::Summary>,
 }
 
 /// Builds the report of `results`.
@@ -57,6 +61,7 @@ pub fn report(results: &Results) -> Report {
     let mut r = Report {
         markdown: String::from("# Campaign report\n\n"),
         figures: Vec::new(),
+        noninferiority: noninferiority_summary::summary(results),
     };
     missing_section(results, &mut r.markdown);
     let tests = planned(results);

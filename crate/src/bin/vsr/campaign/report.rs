@@ -1,11 +1,12 @@
 //! `vsr report FILE`: the campaign's statistics (`report.md`: medians, Mann-Whitney U tests,
-//! effect sizes, what is missing) and its figures (SVG) in one folder, from whatever runs
+//! effect sizes, what is missing), its figures (SVG) and its data files (the
+//! non-inferiority test's `noninferiority.json`, for the page) in one folder, from whatever runs
 //! exist so far (see `vsr::study::report`).
 
 use std::fs;
 use std::path::PathBuf;
 
-use vsr::study::report::report;
+use vsr::study::report::{noninferiority_summary, report};
 use vsr::{Error, Result};
 
 use super::target::Target;
@@ -31,6 +32,10 @@ pub fn run(args: Args) -> Result<()> {
         let svg = super::svg::draw(figure)?;
         crate::atomic::write(&dir.join(&figure.file), svg.as_bytes(), "figure")?;
     }
+    if let Some(summary) = &built.noninferiority {
+        let path = dir.join(noninferiority_summary::FILE);
+        crate::atomic::write(&path, summary.json().as_bytes(), "report data")?;
+    }
     let path = dir.join("report.md");
     crate::atomic::write(&path, built.markdown.as_bytes(), "report")?;
     println!(
@@ -39,5 +44,8 @@ pub fn run(args: Args) -> Result<()> {
         built.figures.len(),
         results.missing.len()
     );
+    if let Some(summary) = &built.noninferiority {
+        println!("{}", summary.line());
+    }
     Ok(())
 }

@@ -94,11 +94,7 @@ pub fn choose_bodies(results: &Results) -> Vec<Chosen> {
             }
         };
         out[at].runs.0 += 1;
-        let complete = data.run.is_some()
-            && ValidationSet::ALL
-                .iter()
-                .all(|s| data.validation.contains_key(s));
-        if !complete {
+        if !data.complete() {
             continue;
         }
         out[at].runs.1 += 1;

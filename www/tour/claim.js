@@ -1,0 +1,83 @@
+// @ts-check
+/**
+ * The test of the paper's own claim, that attention is "better or comparably" good as
+ * mlp-comm (not worse), in a newcomer's words. Read from the file `vsr report` writes for it
+ * (study/report-noninferiority/noninferiority.json; crate/src/study/report/
+ * noninferiority_summary.rs), never copied by hand: until every planned run is in, the file
+ * holds only how many have finished, and the page says so; the answer appears once the test
+ * is complete.
+ */
+import { count, decimal, signed } from '../format.js';
+import { messageOf } from '../kit.js';
+import { STUDY_DIR } from './figures.js';
+
+/** Where the page reads the test's state. */
+export const CLAIM_FILE = `${STUDY_DIR}report-noninferiority/noninferiority.json`;
+
+/**
+ * @typedef {object} ClaimAnswer
+ * @property {[number, number]} medians @property {number} shift @property {[number, number]} interval
+ * @property {number} p @property {number} holm_p
+ * @property {'not worse' | 'worse' | 'not shown'} verdict @property {'better' | 'not shown better' | null} superiority
+ */
+/**
+ * @typedef {object} ClaimSummary
+ * @property {string} treatment @property {string} control @property {number} margin
+ * @property {number} planned_runs @property {number} finished_runs @property {boolean} complete
+ * @property {{shape: string, planned: number, finished: [number, number], answer: ClaimAnswer | null}[]} shapes
+ */
+
+/** A body's name in words. @param {string} shape */
+function bodyWords(shape) {
+  return shape.startsWith('biped') ? `the biped (${shape})` : shape.startsWith('comb') ? `the comb (${shape})` : shape;
+}
+
+/** One shape's answer in words. @param {ClaimSummary} s @param {ClaimSummary['shapes'][number]} shape */
+function answerWords(s, shape) {
+  const a = shape.answer;
+  if (!a) return '';
+  const verdict = {
+    'not worse': `${s.treatment} is not worse than ${s.control}${a.superiority === 'better' ? `, and is faster` : ''}`,
+    worse: `${s.treatment} is worse, by more than ${decimal(s.margin, 1)} m/s: the paper's claim does not hold here`,
+    'not shown': `not settled: the runs still allow ${s.treatment} being more than ${decimal(s.margin, 1)} m/s slower`,
+  }[a.verdict];
+  return `On ${bodyWords(shape.shape)}, ${verdict} (the middle run ${decimal(a.medians[0])} against ${decimal(a.medians[1])} m/s; `
+    + `the difference lies between ${signed(a.interval[0])} and ${signed(a.interval[1])} m/s).`;
+}
+
+/**
+ * The test in words: what it asks, then either how far it has come or its answer on each body.
+ * @param {ClaimSummary} s @returns {string}
+ */
+export function claimWords(s) {
+  const asks = `A larger test of the paper's exact claim, that ${s.treatment} is not worse than ${s.control} `
+    + `(not slower by ${decimal(s.margin, 1)} m/s or more), fixed before any of its runs began: `
+    + `${count(s.planned_runs)} fresh runs, ${count(s.planned_runs / (2 * s.shapes.length))} of each brain on each body.`;
+  if (!s.complete) {
+    return `${asks} It is under way: ${count(s.finished_runs)} of the ${count(s.planned_runs)} runs have finished. `
+      + 'Its answer will be here when all are in (an answer read from part of the runs would not be the planned test).';
+  }
+  return `${asks} ${s.shapes.map((shape) => answerWords(s, shape)).join(' ')}`;
+}
+
+/** @type {Promise<ClaimSummary> | undefined} */
+let loaded;
+
+/** The test's state, fetched once for every place that says it. @returns {Promise<ClaimSummary>} */
+function loadClaim() {
+  loaded ??= fetch(CLAIM_FILE).then((response) => (response.ok ? response.json() : Promise.reject(new Error(`HTTP ${response.status}`))));
+  return loaded;
+}
+
+/**
+ * Writes the test's state into `box` (a line that says why, if it cannot be read): in “What
+ * our study found” and in the study panel.
+ * @param {HTMLElement} box
+ */
+export async function fillClaim(box) {
+  try {
+    box.textContent = claimWords(await loadClaim());
+  } catch (error) {
+    box.textContent = `A larger test of the paper's exact claim is planned; its state could not be read (${messageOf(error)}).`;
+  }
+}
