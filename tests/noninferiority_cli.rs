@@ -165,6 +165,25 @@ fn verdicts_of_a_synthetic_campaign() {
         "{}",
         text(&report)
     );
+    // The intervals at a glance, one figure per set, linked from the report.
+    let figure = |set: &str| out.join(format!("report/intervals-ni-{set}.svg"));
+    for set in ["unseen", "paper"] {
+        let svg = fs::read_to_string(figure(set)).unwrap();
+        for words in [
+            "-0.5: the margin",
+            "0: no difference",
+            "worm-3x1",
+            "worm-4x1",
+        ] {
+            assert!(svg.contains(words), "{set}: {words}");
+        }
+        assert!(md.contains(&format!("(intervals-ni-{set}.svg)")), "{md}");
+    }
+    let svg = fs::read_to_string(figure("unseen")).unwrap();
+    assert!(
+        svg.contains("worm-3x1, 8+8 runs: not worse (one-sided Holm p 0.0002, alpha 0.025); better (Holm p 0.0002)"),
+        "{svg}"
+    );
     let json = summary(&out);
     assert_eq!(json["complete"], true, "{json}");
     assert_eq!(
@@ -195,6 +214,9 @@ fn verdicts_of_a_synthetic_campaign() {
         partial.contains("(interim: 7+8 of 8+8 runs, not the planned test)"),
         "{partial}"
     );
+    // No figure of an interim test: the earlier report's is taken away, the other set's kept.
+    assert!(!figure("paper").exists() && !md.contains("intervals-ni-paper.svg"));
+    assert!(figure("unseen").exists());
     // The primary set is still complete without a paper file; one unseen file missing and
     // the page's file gives counts, never an interim answer.
     assert_eq!(summary(&out)["complete"], true);
@@ -219,5 +241,6 @@ fn verdicts_of_a_synthetic_campaign() {
         json["shapes"][0]["answer"].is_null() && json["shapes"][1]["answer"].is_null(),
         "{json}"
     );
+    assert!(!figure("unseen").exists());
     let _ = fs::remove_dir_all(&dir);
 }

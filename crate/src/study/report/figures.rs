@@ -85,6 +85,14 @@ pub enum Plot {
     Boxes(Vec<BoxData>),
     /// Points of y against x, with the line y = x (ours against the reference).
     Versus(Vec<Points>),
+    /// Differences with their intervals, one row each (top to bottom), over vertical marks
+    /// (a non-inferiority margin, no difference).
+    Intervals {
+        /// The rows.
+        rows: Vec<IntervalRow>,
+        /// The marks.
+        marks: Vec<Mark>,
+    },
     /// Bodies drawn as voxel grids, one row of pictures per label (the best bodies of each
     /// condition of a body search).
     Bodies(Vec<BodyRow>),
@@ -107,6 +115,19 @@ pub struct BodyPicture {
     pub rows: String,
     /// The caption.
     pub caption: String,
+}
+
+/// One estimate with its interval.
+#[derive(Debug, Clone, PartialEq)]
+pub struct IntervalRow {
+    /// What it compares (e.g. a shape).
+    pub label: String,
+    /// The estimate.
+    pub estimate: f64,
+    /// The interval's ends.
+    pub low: f64,
+    /// See `low`.
+    pub high: f64,
 }
 
 /// A vertical line at `x` with a short label beside it (e.g. a shorter budget in a longer

@@ -33,6 +33,7 @@ mod fidelity;
 pub mod figures;
 mod finetune;
 mod noninferiority;
+mod noninferiority_figure;
 mod noninferiority_section;
 pub mod noninferiority_summary;
 mod plateau;
@@ -51,6 +52,9 @@ pub struct Report {
     pub markdown: String,
     /// The figures to draw next to it.
     pub figures: Vec<Figure>,
+    /// Figures it does not draw now and that an earlier report may have left in the folder,
+    /// to delete (a non-inferiority test's intervals while short of its planned runs).
+    pub withdrawn: Vec<String>,
     /// The non-inferiority test's state and answer, where the campaign plans one: written
     /// next to it as `noninferiority.json` for the page (`noninferiority_summary`).
     pub noninferiority: Option<noninferiority_summary::Summary>,
@@ -61,12 +65,13 @@ pub fn report(results: &Results) -> Report {
     let mut r = Report {
         markdown: String::from("# Campaign report\n\n"),
         figures: Vec::new(),
+        withdrawn: Vec::new(),
         noninferiority: noninferiority_summary::summary(results),
     };
     missing_section(results, &mut r.markdown);
     let tests = planned(results);
     families_table(&tests, &mut r.markdown);
-    noninferiority_section::noninferiority_sections(results, &mut r.markdown);
+    noninferiority_section::noninferiority_sections(results, &mut r);
     sets::sets_section(results, &mut r.markdown);
     for g in &results.campaign.evolve {
         for shape in &g.shapes {

@@ -48,6 +48,15 @@ impl Verdict {
         }
     }
 
+    /// The verdict's short name: "not worse", "worse" or "not shown".
+    pub fn name(self) -> &'static str {
+        match self {
+            Verdict::NotWorse => "not worse",
+            Verdict::Worse => "worse",
+            Verdict::NotShown => "not shown",
+        }
+    }
+
     /// The verdict in the plan's words.
     pub fn words(self, control: ControllerKind, margin: f64) -> String {
         match self {

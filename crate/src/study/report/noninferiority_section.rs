@@ -1,24 +1,29 @@
 //! The non-inferiority section of the report: for every evolve group with a
 //! `noninferiority` key, the tests of `noninferiority` set by set (the primary first) with
-//! their intervals and verdicts, then the known seeds' values beside them, never pooled.
+//! their intervals and verdicts (and, once a set's tests are at their planned size, the
+//! figure of their intervals: `noninferiority_figure`), then the known seeds' values beside
+//! them, never pooled.
 
 use super::families::ALPHA;
 use super::noninferiority::{arm, tests, Test, ONE_SIDED_ALPHA};
+use super::noninferiority_figure::{figure, file};
+use super::Report;
 use crate::study::campaign::file::{EvolveGroup, NonInferiority};
 use crate::study::campaign::Results;
 use crate::study::statistics::{hodges_lehmann, mann_whitney, median, Method};
 use std::fmt::Write;
 
 /// The sections of every group that plans a non-inferiority test.
-pub(super) fn noninferiority_sections(results: &Results, md: &mut String) {
+pub(super) fn noninferiority_sections(results: &Results, r: &mut Report) {
     for g in &results.campaign.evolve {
         if let Some(n) = &g.noninferiority {
-            section(results, g, n, md);
+            section(results, g, n, r);
         }
     }
 }
 
-fn section(results: &Results, g: &EvolveGroup, n: &NonInferiority, md: &mut String) {
+fn section(results: &Results, g: &EvolveGroup, n: &NonInferiority, r: &mut Report) {
+    let md = &mut r.markdown;
     let (t, c, m) = (n.treatment, n.control, n.margin);
     let level = 100.0 * (1.0 - ALPHA);
     let _ = writeln!(
@@ -44,6 +49,7 @@ fn section(results: &Results, g: &EvolveGroup, n: &NonInferiority, md: &mut Stri
         let rows: Vec<&Test> = all.iter().filter(|x| x.set == set).collect();
         if rows.is_empty() {
             let _ = writeln!(md, "No shape has runs of both controllers yet.\n");
+            r.withdrawn.push(file(&g.name, set));
             continue;
         }
         let _ = writeln!(
@@ -51,10 +57,17 @@ fn section(results: &Results, g: &EvolveGroup, n: &NonInferiority, md: &mut Stri
             "| shape | evals | n | median {t} | median {c} | shift [{level:.0}% CI] | A12 [{level:.0}% CI] | p | p (Holm) | verdict | superiority: p (Holm) |"
         );
         let _ = writeln!(md, "|---|---|---|---|---|---|---|---|---|---|---|");
-        for x in rows {
+        for &x in &rows {
             row(x, n, md);
         }
         md.push('\n');
+        match figure(g, n, &rows) {
+            Some(fig) => {
+                let _ = writeln!(md, "![{}]({})\n", fig.title, fig.file);
+                r.figures.push(fig);
+            }
+            None => r.withdrawn.push(file(&g.name, set)),
+        }
     }
     known_part(results, g, n, md);
 }

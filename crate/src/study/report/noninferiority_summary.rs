@@ -5,7 +5,7 @@
 //! plan's test is Holm over the shapes at the planned sample size): until then no number of
 //! the comparison is in the file, so nothing reads an interim result as the answer.
 
-use super::noninferiority::{arm, tests, Verdict};
+use super::noninferiority::{arm, tests};
 use crate::study::campaign::file::{EvolveGroup, NonInferiority};
 use crate::study::campaign::Results;
 use serde::Serialize;
@@ -141,11 +141,7 @@ fn of(results: &Results, g: &EvolveGroup, n: &NonInferiority) -> Summary {
                 interval: [t.shift.interval.low, t.shift.interval.high],
                 p: t.test.p,
                 holm_p: t.holm.0,
-                verdict: match t.verdict {
-                    Verdict::NotWorse => "not worse",
-                    Verdict::Worse => "worse",
-                    Verdict::NotShown => "not shown",
-                },
+                verdict: t.verdict.name(),
                 superiority: t.superiority_words().map(|w| w.trim_matches('*')),
             });
         }

@@ -28,6 +28,13 @@ pub fn run(args: Args) -> Result<()> {
     fs::create_dir_all(&dir)
         .map_err(|e| Error::Io(format!("cannot create {}: {e}", dir.display())))?;
     let built = report(&results);
+    for file in &built.withdrawn {
+        let path = dir.join(file);
+        if path.exists() {
+            fs::remove_file(&path)
+                .map_err(|e| Error::Io(format!("cannot remove {}: {e}", path.display())))?;
+        }
+    }
     for figure in &built.figures {
         let svg = super::svg::draw(figure)?;
         crate::atomic::write(&dir.join(&figure.file), svg.as_bytes(), "figure")?;

@@ -5,7 +5,8 @@
 use super::palette::{looks, Look};
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
-use vsr::study::report::figures::{Band, BoxData, Figure, Mark, Plot, Points};
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+use vsr::study::report::figures::{Band, BoxData, Figure, IntervalRow, Mark, Plot, Points};
 use vsr::{Error, Result};
 
 const SIZE: (u32, u32) = (800, 500);
@@ -53,6 +54,7 @@ pub fn draw(figure: &Figure) -> Result<String> {
             Plot::Lines { bands, marks } => lines(&root, figure, bands, marks)?,
             Plot::Boxes(boxes) => boxes_plot(&root, figure, boxes)?,
             Plot::Versus(series) => versus(&root, figure, series)?,
+            Plot::Intervals { rows, marks } => intervals(&root, figure, rows, marks)?,
             Plot::Bodies(_) => unreachable!("drawn above"),
         }
         root.present().map_err(plot_error)?;
@@ -132,7 +134,7 @@ fn lines(root: &Area, figure: &Figure, bands: &[Band], marks: &[Mark]) -> Result
         .draw()
         .map_err(plot_error)?;
     for m in marks {
-        marked(&mut chart, m, &data)?;
+        marked(&mut chart, m, &data, false)?;
     }
     let looks = looks(bands.iter().map(|b| b.role));
     for (b, &Look { colour, dashed }) in bands.iter().zip(&looks) {
@@ -165,15 +167,20 @@ fn lines(root: &Area, figure: &Figure, bands: &[Band], marks: &[Mark]) -> Result
 }
 
 /// A vertical dashed grey line at the mark over the data's range `ys`, its label beside its
-/// foot.
-fn marked(chart: &mut Chart, m: &Mark, ys: &std::ops::Range<f64>) -> Result<()> {
+/// foot: to its right, or to its left (`left`, for a mark with another close on its right).
+fn marked(chart: &mut Chart, m: &Mark, ys: &std::ops::Range<f64>, left: bool) -> Result<()> {
     let grey = RGBColor(110, 110, 110);
     let line = [(m.x, ys.start), (m.x, ys.end)];
     chart
         .draw_series(DashedLineSeries::new(line, 6, 4, grey.stroke_width(1)))
         .map_err(plot_error)?;
     let font = ("sans-serif", 13).into_font().color(&grey);
-    let label = EmptyElement::at((m.x, ys.start)) + Text::new(m.label.clone(), (6, -18), font);
+    let (font, dx) = if left {
+        (font.pos(Pos::new(HPos::Right, VPos::Top)), -6)
+    } else {
+        (font, 6)
+    };
+    let label = EmptyElement::at((m.x, ys.start)) + Text::new(m.label.clone(), (dx, -18), font);
     chart
         .draw_series(std::iter::once(label))
         .map_err(plot_error)?;
@@ -235,6 +242,54 @@ fn boxes_plot(root: &Area, figure: &Figure, boxes: &[BoxData]) -> Result<()> {
             .iter()
             .map(|&v| Circle::new((x, v), 3, color.filled()));
         chart.draw_series(dots).map_err(plot_error)?;
+    }
+    Ok(())
+}
+
+/// One row per estimate, top to bottom: a dot at the estimate and a bar over its interval,
+/// over the dashed vertical marks (which the horizontal range always includes).
+fn intervals(root: &Area, figure: &Figure, rows: &[IntervalRow], marks: &[Mark]) -> Result<()> {
+    let ends = rows.iter().flat_map(|r| [r.low, r.high, r.estimate]);
+    let xs = range(ends.chain(marks.iter().map(|m| m.x)));
+    // Room on the left for the rows' names and the first mark's label.
+    let xs = xs.start - 0.25 * (xs.end - xs.start)..xs.end;
+    let n = rows.len() as f64;
+    // Row i sits at y = n - 1 - i (the first on top); room below for the marks' labels.
+    let ys = -0.7..n - 0.4;
+    let mut chart = chart(root, figure, xs.clone(), ys.clone())?;
+    chart
+        .configure_mesh()
+        .x_desc(&figure.x_label)
+        .y_desc(&figure.y_label)
+        .y_labels(0)
+        .disable_y_mesh()
+        .bold_line_style(GRID)
+        .light_line_style(FINE_GRID)
+        .draw()
+        .map_err(plot_error)?;
+    for (i, m) in marks.iter().enumerate() {
+        marked(&mut chart, m, &(ys.start..ys.end), i + 1 < marks.len())?;
+    }
+    let colour = looks(std::iter::once(vsr::study::report::figures::Role::Other))[0].colour;
+    for (i, r) in rows.iter().enumerate() {
+        let y = n - 1.0 - i as f64;
+        let (tick, style) = (0.12, colour.stroke_width(2));
+        let bar = vec![
+            PathElement::new(vec![(r.low, y), (r.high, y)], style),
+            PathElement::new(vec![(r.low, y - tick), (r.low, y + tick)], style),
+            PathElement::new(vec![(r.high, y - tick), (r.high, y + tick)], style),
+        ];
+        chart.draw_series(bar).map_err(plot_error)?;
+        // The row's name above its bar, at the left edge.
+        let font = ("sans-serif", 15).into_font().color(&BLACK);
+        let name = EmptyElement::at((xs.start, y)) + Text::new(r.label.clone(), (8, -30), font);
+        chart
+            .draw_series(std::iter::once(name))
+            .map_err(plot_error)?;
+        let dot = Circle::new((r.estimate, y), 6, colour.filled());
+        chart
+            .draw_series(std::iter::once(dot))
+            .map_err(plot_error)?;
     }
     Ok(())
 }
