@@ -123,6 +123,11 @@ fn verdicts_of_a_synthetic_campaign() {
     let md = fs::read_to_string(out.join("report/report.md")).unwrap();
     assert!(md.contains("Every planned output exists"), "{md}");
     assert!(md.contains("## Non-inferiority: attention against mlp-comm (group `ni`)"));
+    // Its test is the plan's: no two-sided difference test of the group beside it.
+    assert!(
+        !md.contains("## Families of tests") && !md.contains("attention vs mlp-comm"),
+        "{md}"
+    );
     let not_worse = "**not worse** than mlp-comm by 0.5 m/s or more (non-inferior)";
     let better = row(&md, "unseen", "worm-3x1");
     assert!(better.contains(not_worse), "{better}");

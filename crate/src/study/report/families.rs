@@ -3,7 +3,8 @@
 //! on one measure, across its shapes and budgets; a pair already tested in an earlier group
 //! (the same shape, budget, controllers and measure) is not tested again, only listed. Holm's
 //! correction within each family; the Hodges-Lehmann shift and A12 with their intervals; the
-//! smallest effect each test could detect.
+//! smallest effect each test could detect. A group that plans a non-inferiority test (its
+//! `noninferiority` key) has that test as its plan (`noninferiority`), not these.
 
 use super::samples::{finetune_samples, measures, samples_of, transfer, Sample};
 use crate::study::campaign::Results;
@@ -66,7 +67,8 @@ pub fn planned(results: &Results) -> Vec<Comparison> {
     let mut first: HashMap<(String, u64, String, String, String), String> = HashMap::new();
     let mut detectable: HashMap<(usize, usize), Detectable> = HashMap::new();
     let mut sections: Vec<(String, String, u64, Vec<Sample>)> = Vec::new();
-    for g in &results.campaign.evolve {
+    let evolve = results.campaign.evolve.iter();
+    for g in evolve.filter(|g| g.noninferiority.is_none()) {
         for shape in &g.shapes {
             for &evals in &g.evals {
                 let samples = samples_of(results, g, shape, evals);
