@@ -7,10 +7,11 @@
  * answer on each body in words; the study panel says the same. Screenshot: screenshots/classroom-results-plain.png.
  */
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
+import { existsSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 import { ROOT, SCREENSHOTS, byTestId, openPage, start } from './harness.mjs';
+import { CLAIM_TABLE, FIGURES, STUDY_DIR, figureSrc } from '../../www/tour/figures.js';
 
 /** @type {Awaited<ReturnType<typeof start>>} */ let env;
 
@@ -48,6 +49,8 @@ test('the study\'s results in plain words: no Markdown, no file paths, every num
   const said = String(await section.locator('[data-testid="claim"]').textContent());
   const row7 = results.split('\n').find((line) => line.startsWith('| 7 |')) ?? '';
   if (claim.complete) {
+    for (const fig of FIGURES.filter((f) => f.claim)) assert.ok(existsSync(path.join(ROOT, figureSrc(fig))), `${figureSrc(fig)} is drawn`);
+    assert.ok(existsSync(path.join(ROOT, STUDY_DIR, CLAIM_TABLE)), `${CLAIM_TABLE} is merged`);
     for (const s of claim.shapes) {
       assert.ok(said.includes(s.shape) && s.answer, `the answer on ${s.shape}: ${said}`);
       const interval = `[${s.answer.interval.map((/** @type {number} */ v) => (v < 0 ? '' : '+') + v.toFixed(2)).join(', ')}]`;
@@ -59,6 +62,8 @@ test('the study\'s results in plain words: no Markdown, no file paths, every num
     assert.doesNotMatch(said, /difference lies between/, 'no interim answer');
   }
   assert.equal(await page.locator('[data-testid="study-claim"]').textContent(), said, 'the study panel says the same');
+  const figures = await byTestId(page, 'study-figure').locator('option').evaluateAll((os) => os.map((o) => /** @type {HTMLOptionElement} */ (o).value));
+  assert.equal(figures.some((id) => id.startsWith('claim-')), claim.complete, `the claim's figures only once it is complete: ${figures}`);
   const fold = section.locator('details.stats');
   assert.equal(await fold.getAttribute('open'), null, 'the tests are folded');
   assert.equal(await section.locator('table.tests').isVisible(), false);
@@ -78,8 +83,15 @@ test('once every run of the claim\'s test is in, the page gives its answer on ea
     finished_runs: 120, complete: true, shapes: [
       { shape: 'biped-4x3', evals: 30000, planned: 30, finished: [30, 30], answer: answer('not worse', 'better') },
       { shape: 'comb-7x2', evals: 30000, planned: 30, finished: [30, 30], answer: answer('not shown', null) }] };
+  const row = (/** @type {string} */ shape, /** @type {string} */ controller, /** @type {number} */ unseen) =>
+    `${shape}-${controller}-30000-s11,scratch,${shape},${controller},30000,30100,11,,${unseen}`;
+  const table = ['run,kind,shape,controller,evals,evaluations,seed,source,unseen_mean',
+    row('biped-4x3', 'mlp-comm', 3.1), row('biped-4x3', 'attention', 3.7), row('comb-7x2', 'attention', 2.9), row('comb-7x2', 'mlp-comm', 3.0)].join('\n');
   const { page, problems } = await openPage(env.browser, env.url, { width: 1400, height: 900 });
   await page.route('**/report-noninferiority/noninferiority.json', (route) => route.fulfill({ json: complete }));
+  await page.route('**/study/noninferiority.csv', (route) => route.fulfill({ body: table, contentType: 'text/csv' }));
+  await page.route('**/report-noninferiority/intervals-noninferiority-unseen.svg', (route) => route.fulfill({
+    body: '<svg xmlns="http://www.w3.org/2000/svg" width="80" height="50"><text y="20">intervals</text></svg>', contentType: 'image/svg+xml' }));
   await page.reload();
   await page.waitForFunction(() => /On the comb/.test(document.querySelector('[data-testid="claim"]')?.textContent ?? ''));
   const said = String(await page.locator('[data-testid="claim"]').textContent());
@@ -87,6 +99,17 @@ test('once every run of the claim\'s test is in, the page gives its answer on ea
   assert.match(said, /On the comb \(comb-7x2\), not settled: the runs still allow attention being more than 0\.5 m\/s slower/);
   assert.doesNotMatch(said, /under way/);
   assert.equal(await page.locator('[data-testid="study-claim"]').textContent(), said, 'the study panel says the same');
+  // The study panel now lists the test's figures, drawn from its own table of runs only.
+  const pick = byTestId(page, 'study-figure');
+  await page.waitForFunction(() => !!document.querySelector('#study-figure option[value="claim-intervals"]'));
+  await pick.selectOption('claim-intervals');
+  await page.waitForFunction(() => /intervals-noninferiority-unseen\.svg$/.test(/** @type {HTMLImageElement} */ (document.getElementById('study-image')).src));
+  const runs = await byTestId(page, 'study-run').locator('option').evaluateAll((os) => os.map((o) => /** @type {HTMLOptionElement} */ (o).value));
+  assert.deepEqual(runs, ['biped-4x3-attention-30000-s11', 'biped-4x3-mlp-comm-30000-s11', 'comb-7x2-attention-30000-s11', 'comb-7x2-mlp-comm-30000-s11']);
+  assert.match(String(await page.locator('#study-caption').textContent()), /dashed line at −0\.5/);
+  await pick.selectOption('validation-biped');
+  const paperRuns = await byTestId(page, 'study-run').locator('option').evaluateAll((os) => os.map((o) => /** @type {HTMLOptionElement} */ (o).value));
+  assert.ok(paperRuns.length > 0 && paperRuns.every((r) => !r.endsWith('-s11')), `the paper study's figure lists its own runs only: ${paperRuns}`);
   assert.deepEqual(problems, []);
   await page.context().close();
 });

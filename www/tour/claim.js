@@ -64,7 +64,7 @@ export function claimWords(s) {
 let loaded;
 
 /** The test's state, fetched once for every place that says it. @returns {Promise<ClaimSummary>} */
-function loadClaim() {
+export function loadClaim() {
   loaded ??= fetch(CLAIM_FILE).then((response) => (response.ok ? response.json() : Promise.reject(new Error(`HTTP ${response.status}`))));
   return loaded;
 }

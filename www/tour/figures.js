@@ -13,6 +13,12 @@ export const STUDY_DIR = 'study/';
 export const TABLES = ['campaign.csv', 'comb-budget.csv'];
 
 /**
+ * The table of the test of the paper's own claim (claim.js), read only once that test is
+ * complete: its figures (those with `claim`) are listed only then.
+ */
+export const CLAIM_TABLE = 'noninferiority.csv';
+
+/**
  * @typedef {object} StudyFigure
  * @property {string} id
  * @property {string} file       in the report folder
@@ -21,14 +27,18 @@ export const TABLES = ['campaign.csv', 'comb-budget.csv'];
  * @property {string} paper      the paper's figure it reproduces, and what the paper found
  * @property {string} read       how to read it
  * @property {RunFilter[]} runs  the campaign rows it is drawn from: those that match one filter
+ * @property {string} [table]   the table those rows are in (default: TABLES[0], the paper study's)
+ * @property {boolean} [claim]  a figure of the test of the paper's own claim: listed only once that test is complete
  */
 /**
  * @typedef {{kind: string, shape: string, evals: number, controllers?: string[], source?: string}} RunFilter
  *   every field given must match; source: how the fine-tuned module's run name starts
  */
 
-const BOXES = 'Each box holds the runs of one brain (one dot per run, each with its own seed): the line in it is the median run, the box the middle half, the whiskers reach the slowest and the fastest run. '
-  + 'The lines under the plot test each pair: "no difference detected" means the runs are too few to be sure the two brains differ (p and Holm: see the glossary).';
+/** How to read a box plot. */
+const BOX = 'Each box holds the runs of one brain (one dot per run, each with its own seed): the line in it is the median run, the box the middle half, the whiskers reach the slowest and the fastest run.';
+/** How to read a box plot with the tests of each pair under it. */
+const BOXES = `${BOX} The lines under the plot test each pair: "no difference detected" means the runs are too few to be sure the two brains differ (p and Holm: see the glossary).`;
 
 /** @type {StudyFigure[]} */
 export const FIGURES = [
@@ -79,7 +89,9 @@ export const FIGURES = [
     read: 'Speed of the best robot of each generation (the median run; shaded, the middle half) against evaluations, five runs of each brain; '
       + 'the first 30,000 evaluations of each run (up to the dashed line) are exactly the run the other comb figures show.',
     runs: [{ kind: 'scratch', shape: 'comb-7x2', evals: 60000, controllers: ['attention', 'mlp-comm'] }],
+    table: 'comb-budget.csv',
   },
+  ...claimFigures(),
   {
     id: 'codesign-unseen',
     report: 'report-codesign/',
@@ -108,6 +120,33 @@ export const FIGURES = [
   transfer('comb', ['comb-7x2', 'small'], ['comb-14x2', 'large'], 'The paper\'s Fig. 7, for the combs.'),
   transfer('comb', ['comb-14x2', 'large'], ['comb-7x2', 'small'], 'The paper\'s Fig. 7, from large to small.'),
 ];
+
+/**
+ * The figures of the test of the paper's own claim (attention not worse than mlp-comm, by
+ * less than 0.5 m/s): the two brains' differences with their intervals, then each body's runs.
+ * Their words give no result: the answer is in the line above the figure (claim.js), read
+ * from the file `vsr report` writes.
+ * @returns {StudyFigure[]}
+ */
+function claimFigures() {
+  const base = { report: 'report-noninferiority/', table: CLAIM_TABLE, claim: true };
+  const pair = ['attention', 'mlp-comm'];
+  const bodies = /** @type {const} */ ([['biped', 'biped-4x3'], ['comb', 'comb-7x2']]);
+  return [
+    { ...base, id: 'claim-intervals', file: 'intervals-noninferiority-unseen.svg',
+      title: 'The larger test of the paper\'s claim: is attention slower than mlp-comm, on each body?',
+      paper: 'The paper says a brain with no messages (attention) walks "better or comparably" to one whose voxels send messages (mlp-comm). '
+        + 'This test asked that exactly, fixed before any of its runs began: thirty fresh runs of each brain on each body. Its answer in words is above the figure.',
+      read: 'Each row is a body: the dot is how much faster attention walks than mlp-comm on ten unseen terrains (the middle estimate, m/s), the bar the range the runs still allow (95%). '
+        + 'A bar wholly right of the dashed line at −0.5 means attention is not worse by 0.5 m/s or more; right of 0 too, faster.',
+      runs: bodies.map(([, shape]) => ({ kind: 'scratch', shape, evals: 30000, controllers: pair })) },
+    ...bodies.map(([body, shape]) => ({ ...base, id: `claim-${body}`, file: `fig4-noninferiority-${shape}-30000-unseen.svg`,
+      title: `The larger test of the paper's claim on the ${body}: thirty runs of each brain`,
+      paper: 'The paper says attention walks "better or comparably" to mlp-comm. The answer of this test in words is above the figure.',
+      read: `${BOX} A point is the mean speed of one run's best robot over ten hilly terrains it was not trained on.`,
+      runs: [{ kind: 'scratch', shape, evals: 30000, controllers: pair }] })),
+  ];
+}
 
 /**
  * A fine-tuning figure (the paper's Fig. 7): the attention evolved on `from` (20,000

@@ -9,8 +9,8 @@
 import { withStats } from '../classroom/simple-words.js';
 import { messageOf } from '../kit.js';
 import { shortLabel, unseenWords } from '../modules.js';
-import { FIGURES, STUDY_DIR, TABLES, figureSrc } from './figures.js';
-import { fillClaim } from './claim.js';
+import { CLAIM_TABLE, FIGURES, STUDY_DIR, TABLES, figureSrc } from './figures.js';
+import { fillClaim, loadClaim } from './claim.js';
 import { lineageNote } from './lineage.js';
 import { count } from '../format.js';
 
@@ -21,13 +21,14 @@ import { count } from '../format.js';
  * @property {number} evals  its budget @property {number} evaluations  what it took (a run finishes its last generation)
  * @property {number} seed @property {string} source
  * @property {number} unseen  mean speed of its best over the ten unseen test terrains (m/s)
+ * @property {string} table  the table it is a row of (figures.js: TABLES, CLAIM_TABLE)
  */
 
 /**
  * The runs of a campaign table (CSV with a header row; no quoted commas in it).
- * @param {string} text @returns {StudyRun[]}
+ * @param {string} text @param {string} table  its name @returns {StudyRun[]}
  */
-export function parseCampaign(text) {
+export function parseCampaign(text, table) {
   const [head, ...lines] = text.trim().split('\n');
   const names = head.split(',');
   const col = (/** @type {string} */ name) => names.indexOf(name);
@@ -37,19 +38,27 @@ export function parseCampaign(text) {
   return lines.map((line) => {
     const v = line.split(',');
     return { run: v[at.run], kind: v[at.kind], shape: v[at.shape], controller: v[at.controller], evals: Number(v[at.evals]),
-      evaluations: Number(v[at.evaluations]), seed: Number(v[at.seed]), source: v[at.source], unseen: Number(v[at.unseen]) };
+      evaluations: Number(v[at.evaluations]), seed: Number(v[at.seed]), source: v[at.source], unseen: Number(v[at.unseen]), table };
   });
 }
 
 /**
- * The runs a figure is drawn from, the fastest first within each filter.
+ * The runs a figure is drawn from (rows of its table), the fastest first within each filter.
  * @param {import('./figures.js').StudyFigure} figure @param {StudyRun[]} runs @returns {StudyRun[]}
  */
 export function runsOf(figure, runs) {
-  return figure.runs.flatMap((f) => runs.filter((r) => r.kind === f.kind && r.shape === f.shape && r.evals === f.evals
+  const table = figure.table ?? TABLES[0];
+  return figure.runs.flatMap((f) => runs.filter((r) => r.table === table && r.kind === f.kind && r.shape === f.shape && r.evals === f.evals
     && (!f.controllers || f.controllers.includes(r.controller)) && (!f.source || r.source.startsWith(f.source)))
     .sort((a, b) => (f.controllers ? f.controllers.indexOf(a.controller) - f.controllers.indexOf(b.controller) : 0)
       || b.unseen - a.unseen));
+}
+
+/** The runs of one of the study's tables, fetched. @param {string} name @returns {Promise<StudyRun[]>} */
+async function table(name) {
+  const response = await fetch(`${STUDY_DIR}${name}`);
+  if (!response.ok) throw new Error(`${name}: HTTP ${response.status}`);
+  return parseCampaign(await response.text(), name);
 }
 
 /** A run in words. @param {StudyRun} r */
@@ -82,16 +91,34 @@ export class StudyPanel {
     void fillClaim(/** @type {HTMLElement} */ (el('study-claim')));
     /** @type {StudyRun[]} */
     this.runs = [];
-    for (const f of FIGURES) this.pick.append(new Option(f.title, f.id));
+    this.listFigures(false);
     this.pick.addEventListener('change', () => this.showFigure());
     this.watch.addEventListener('click', () => this.watchRun());
     this.runPick.addEventListener('change', () => this.noteRun());
-    this.loaded = Promise.all(TABLES.map((name) => fetch(`${STUDY_DIR}${name}`)
-      .then((r) => (r.ok ? r.text() : Promise.reject(new Error(`${name}: HTTP ${r.status}`))))
-      .then(parseCampaign)))
+    this.loaded = Promise.all(TABLES.map(table))
       .then((tables) => { this.runs = tables.flat(); })
       .catch((error) => page.message(`the study's runs could not be listed: ${messageOf(error)}`))
-      .then(() => this.showFigure());
+      .then(() => this.showFigure())
+      .then(() => this.addClaim());
+  }
+
+  /** Lists the figures, those of the claim's test only when it is `complete`; the chosen one stays chosen. @param {boolean} complete */
+  listFigures(complete) {
+    const chosen = this.pick.value;
+    this.pick.replaceChildren(...FIGURES.filter((f) => complete || !f.claim).map((f) => new Option(f.title, f.id)));
+    if (chosen) this.pick.value = chosen;
+  }
+
+  /** Once the test of the paper's own claim is complete, lists its figures and runs (until then, the line above says how far it is). */
+  async addClaim() {
+    const claim = await loadClaim().catch(() => null); // the line above says why it could not be read
+    if (!claim?.complete) return;
+    try {
+      this.runs.push(...await table(CLAIM_TABLE));
+    } catch (error) {
+      this.page.message(`the runs of the claim's test could not be listed: ${messageOf(error)}`);
+    }
+    this.listFigures(true);
   }
 
   /** Shows the figure `id` and scrolls to it (from a tour chapter). @param {string} id */
