@@ -8,6 +8,7 @@ mod bodies_svg;
 pub mod command;
 mod export;
 mod export_bodies;
+mod intervals_svg;
 mod merge;
 mod palette;
 mod plan;

@@ -1,12 +1,13 @@
 //! Draws the report's figures as SVG with plotters' SVG backend. Text is written as SVG
 //! `<text>` (plotters without its `ttf` / `ab_glyph` features lays text out by estimate and
 //! needs no font file), so the viewer's sans-serif font renders it. Colours: `palette`.
+//! Bodies and intervals are drawn in their own files (`bodies_svg`, `intervals_svg`).
 
 use super::palette::{looks, Look};
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
-use vsr::study::report::figures::{Band, BoxData, Figure, IntervalRow, Mark, Plot, Points};
+use vsr::study::report::figures::{Band, BoxData, Figure, Mark, Plot, Points};
 use vsr::{Error, Result};
 
 const SIZE: (u32, u32) = (800, 500);
@@ -15,8 +16,8 @@ const SIZE: (u32, u32) = (800, 500);
 const NOTE_LINE: u32 = 16;
 
 /// The grid: major lines light, minor ones fainter, so that the data stand out.
-const GRID: RGBColor = RGBColor(225, 225, 225);
-const FINE_GRID: RGBColor = RGBColor(244, 244, 244);
+pub(super) const GRID: RGBColor = RGBColor(225, 225, 225);
+pub(super) const FINE_GRID: RGBColor = RGBColor(244, 244, 244);
 
 /// What the marks of a kind of plot are, written under it.
 fn key(plot: &Plot) -> Option<&'static str> {
@@ -54,7 +55,9 @@ pub fn draw(figure: &Figure) -> Result<String> {
             Plot::Lines { bands, marks } => lines(&root, figure, bands, marks)?,
             Plot::Boxes(boxes) => boxes_plot(&root, figure, boxes)?,
             Plot::Versus(series) => versus(&root, figure, series)?,
-            Plot::Intervals { rows, marks } => intervals(&root, figure, rows, marks)?,
+            Plot::Intervals { rows, marks } => {
+                super::intervals_svg::draw(&root, figure, rows, marks)?
+            }
             Plot::Bodies(_) => unreachable!("drawn above"),
         }
         root.present().map_err(plot_error)?;
@@ -62,12 +65,12 @@ pub fn draw(figure: &Figure) -> Result<String> {
     Ok(svg)
 }
 
-fn plot_error<E: std::fmt::Display>(e: E) -> Error {
+pub(super) fn plot_error<E: std::fmt::Display>(e: E) -> Error {
     Error::Io(format!("cannot draw the figure: {e}"))
 }
 
 /// The range of `values` (finite ones), padded by 5% (or 1 when flat).
-fn range(values: impl Iterator<Item = f64>) -> std::ops::Range<f64> {
+pub(super) fn range(values: impl Iterator<Item = f64>) -> std::ops::Range<f64> {
     let (lo, hi) = values
         .filter(|v| v.is_finite())
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
@@ -80,12 +83,12 @@ fn range(values: impl Iterator<Item = f64>) -> std::ops::Range<f64> {
     (lo - pad)..(hi + pad)
 }
 
-type Area<'a> = DrawingArea<SVGBackend<'a>, plotters::coord::Shift>;
+pub(super) type Area<'a> = DrawingArea<SVGBackend<'a>, plotters::coord::Shift>;
 
 type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
 /// The figure's frame: its title, margins and axis areas around the ranges `xs` x `ys`.
-fn chart<'a, 'b>(
+pub(super) fn chart<'a, 'b>(
     root: &'a Area<'b>,
     figure: &Figure,
     xs: std::ops::Range<f64>,
@@ -168,7 +171,12 @@ fn lines(root: &Area, figure: &Figure, bands: &[Band], marks: &[Mark]) -> Result
 
 /// A vertical dashed grey line at the mark over the data's range `ys`, its label beside its
 /// foot: to its right, or to its left (`left`, for a mark with another close on its right).
-fn marked(chart: &mut Chart, m: &Mark, ys: &std::ops::Range<f64>, left: bool) -> Result<()> {
+pub(super) fn marked(
+    chart: &mut Chart,
+    m: &Mark,
+    ys: &std::ops::Range<f64>,
+    left: bool,
+) -> Result<()> {
     let grey = RGBColor(110, 110, 110);
     let line = [(m.x, ys.start), (m.x, ys.end)];
     chart
@@ -242,54 +250,6 @@ fn boxes_plot(root: &Area, figure: &Figure, boxes: &[BoxData]) -> Result<()> {
             .iter()
             .map(|&v| Circle::new((x, v), 3, color.filled()));
         chart.draw_series(dots).map_err(plot_error)?;
-    }
-    Ok(())
-}
-
-/// One row per estimate, top to bottom: a dot at the estimate and a bar over its interval,
-/// over the dashed vertical marks (which the horizontal range always includes).
-fn intervals(root: &Area, figure: &Figure, rows: &[IntervalRow], marks: &[Mark]) -> Result<()> {
-    let ends = rows.iter().flat_map(|r| [r.low, r.high, r.estimate]);
-    let xs = range(ends.chain(marks.iter().map(|m| m.x)));
-    // Room on the left for the rows' names and the first mark's label.
-    let xs = xs.start - 0.25 * (xs.end - xs.start)..xs.end;
-    let n = rows.len() as f64;
-    // Row i sits at y = n - 1 - i (the first on top); room below for the marks' labels.
-    let ys = -0.7..n - 0.4;
-    let mut chart = chart(root, figure, xs.clone(), ys.clone())?;
-    chart
-        .configure_mesh()
-        .x_desc(&figure.x_label)
-        .y_desc(&figure.y_label)
-        .y_labels(0)
-        .disable_y_mesh()
-        .bold_line_style(GRID)
-        .light_line_style(FINE_GRID)
-        .draw()
-        .map_err(plot_error)?;
-    for (i, m) in marks.iter().enumerate() {
-        marked(&mut chart, m, &(ys.start..ys.end), i + 1 < marks.len())?;
-    }
-    let colour = looks(std::iter::once(vsr::study::report::figures::Role::Other))[0].colour;
-    for (i, r) in rows.iter().enumerate() {
-        let y = n - 1.0 - i as f64;
-        let (tick, style) = (0.12, colour.stroke_width(2));
-        let bar = vec![
-            PathElement::new(vec![(r.low, y), (r.high, y)], style),
-            PathElement::new(vec![(r.low, y - tick), (r.low, y + tick)], style),
-            PathElement::new(vec![(r.high, y - tick), (r.high, y + tick)], style),
-        ];
-        chart.draw_series(bar).map_err(plot_error)?;
-        // The row's name above its bar, at the left edge.
-        let font = ("sans-serif", 15).into_font().color(&BLACK);
-        let name = EmptyElement::at((xs.start, y)) + Text::new(r.label.clone(), (8, -30), font);
-        chart
-            .draw_series(std::iter::once(name))
-            .map_err(plot_error)?;
-        let dot = Circle::new((r.estimate, y), 6, colour.filled());
-        chart
-            .draw_series(std::iter::once(dot))
-            .map_err(plot_error)?;
     }
     Ok(())
 }
