@@ -50,12 +50,14 @@ function answerWords(s, shape) {
  * @param {ClaimSummary} s @returns {string}
  */
 export function claimWords(s) {
-  const asks = `A larger test of the paper's exact claim, that ${s.treatment} is not worse than ${s.control} `
-    + `(not slower by ${decimal(s.margin, 1)} m/s or more), fixed before any of its runs began: `
-    + `${count(s.planned_runs)} fresh runs, ${count(s.planned_runs / (2 * s.shapes.length))} of each brain on each body.`;
+  const perArm = count(s.planned_runs / (2 * s.shapes.length));
+  const asks = `The paper's own words are that ${s.treatment} does "better or comparably": that it is at least about as fast as ${s.control}. `
+    + `Ten runs of each cannot settle that, so a larger test asks it exactly: is ${s.treatment} slower by ${decimal(s.margin, 1)} m/s or more `
+    + `(a margin fixed in advance, less than half of what the messages were worth on either body)? `
+    + `Everything about it was written down before any of its runs began: ${perArm} fresh runs of each brain on each body, ${count(s.planned_runs)} in all.`;
   if (!s.complete) {
     return `${asks} It is under way: ${count(s.finished_runs)} of the ${count(s.planned_runs)} runs have finished. `
-      + 'Its answer will be here when all are in (an answer read from part of the runs would not be the planned test).';
+      + 'Its answer will be here when all are in: it is worked out only then, so that nobody can stop at a convenient moment.';
   }
   return `${asks} ${s.shapes.map((shape) => answerWords(s, shape)).join(' ')}`;
 }
@@ -78,6 +80,6 @@ export async function fillClaim(box) {
   try {
     box.textContent = claimWords(await loadClaim());
   } catch (error) {
-    box.textContent = `A larger test of the paper's exact claim is planned; its state could not be read (${messageOf(error)}).`;
+    box.textContent = `A larger test of the paper's own claim is under way; how far it has come could not be read (${messageOf(error)}).`;
   }
 }

@@ -38,7 +38,8 @@ export const CLAIM_TABLE = 'noninferiority.csv';
 /** How to read a box plot. */
 const BOX = 'Each box holds the runs of one brain (one dot per run, each with its own seed): the line in it is the median run, the box the middle half, the whiskers reach the slowest and the fastest run.';
 /** How to read a box plot with the tests of each pair under it. */
-const BOXES = `${BOX} The lines under the plot test each pair: "no difference detected" means the runs are too few to be sure the two brains differ (p and Holm: see the glossary).`;
+const BOXES = `${BOX} The small print under the plot tests pairs of brains: "no difference detected" means the runs are too few to be sure the two brains differ; `
+  + 'for how to read it, see the glossary (a pair counts as different only when its Holm p is below 0.05).';
 
 /** @type {StudyFigure[]} */
 export const FIGURES = [
@@ -67,7 +68,9 @@ export const FIGURES = [
     file: 'fig6-rq1-biped-4x3-30000.svg',
     title: 'Freeze the attention and the biped stops',
     paper: 'The paper\'s Fig. 6: with every voxel\'s attention frozen as it was at one moment, the robots barely move.',
-    read: 'Each run\'s best robot, its attention frozen as it was at the second on the horizontal axis of a walk, then walked 30 s afresh from standing, frozen from its first step: its speed. Mind the scale: a few centimetres per second at most, where the same robots walk about 4 m/s unfrozen (the line: the middle of the runs, over a whole 30-s walk).',
+    read: 'Each run\'s best robot, its attention frozen as it was at the second on the horizontal axis of a walk, then walked 30 s afresh from standing, frozen from its first step: its speed. '
+      + 'The frozen curve hugs zero: frozen, the robots move a few centimetres per second at most, where the same robots walk about 4 m/s unfrozen (the other line: the middle of the runs, over a whole 30-s walk). '
+      + 'This figure is our first five runs; the results page gives the middle of ten.',
     runs: [{ kind: 'scratch', shape: 'biped-4x3', evals: 30000, controllers: ['attention'] }],
   },
   {
@@ -75,7 +78,8 @@ export const FIGURES = [
     file: 'fig6-rq1-comb-7x2-30000.svg',
     title: 'Freeze the attention and the comb stops',
     paper: 'The paper\'s Fig. 6, for the comb.',
-    read: 'Each run\'s best robot, its attention frozen as it was at the second on the horizontal axis of a walk, then walked 30 s afresh from standing, frozen from its first step: its speed (mind the scale: centimetres per second).',
+    read: 'Each run\'s best robot, its attention frozen as it was at the second on the horizontal axis of a walk, then walked 30 s afresh from standing, frozen from its first step: its speed. '
+      + 'The frozen curve hugs zero (a few centimetres per second), the other line is the same robots unfrozen.',
     runs: [{ kind: 'scratch', shape: 'comb-7x2', evals: 30000, controllers: ['attention'] }],
   },
   {
@@ -98,9 +102,13 @@ export const FIGURES = [
     file: 'codesign-rq3-unseen.svg',
     title: 'Searching for a body: a frozen brain from the biped against brains evolved with the body',
     paper: 'Our own question (the paper moved brains only between bodies of the same kind). Ten searches per brain, each 6,000 evaluations from a 3 × 3 box: '
-      + 'with the biped\'s attention kept frozen, the searches ended on faster bodies than with a plain network (mlp, Holm p 0.006) or a messaging one (mlp-comm, 0.027) evolved along with the body; '
-      + 'against attention evolved from scratch with the body, no difference is detected (0.25). The fastest body of each brain is in the playground\'s list of modules.',
-    read: `${BOXES} A point is one search's final best body, with its brain, walking ten hilly terrains it was not trained on.`,
+      + 'with the biped\'s attention kept frozen, the searches ended on faster bodies than with a plain network (mlp; Holm p 0.006) or a messaging one (mlp-comm; Holm p 0.027) evolved along with the body; '
+      + 'against attention evolved from scratch with the body, no difference is detected (Holm p 0.25). '
+      + 'Fine-tuned along with the body, the same attention ended on the fastest middle body of all, 3.34 m/s, but against attention from scratch no difference is detected either (Holm p 0.071). '
+      + 'The fastest body of each brain is in the playground\'s list of modules.',
+    read: `${BOXES} A point is one search's final best body, with its brain, walking ten hilly terrains it was not trained on. `
+      + 'The boxes: frozen, the biped\'s attention kept frozen; finetune, the same attention fine-tuned along with the body; '
+      + 'scratch-attention, scratch-mlp and scratch-mlp-comm, each brain evolved from scratch along with the body ("rq3" in the title is the name of this search in our study\'s files).',
     runs: [],
   },
   {
