@@ -5,8 +5,10 @@
 //! (seconds-long), then every other seed's and the known seeds' files are copies with chosen
 //! validation means, so that each verdict is reached: on `unseen`, worm-3x1 not worse and
 //! better, worm-4x1 not worse and not shown better; on `paper`, worm-3x1 worse by more than
-//! the margin, worm-4x1 not shown. A missing run makes the verdict an interim one, and
-//! takes the answers out of `noninferiority.json` (the page's copy of the primary verdicts).
+//! the margin, worm-4x1 not shown. A missing `paper` validation makes that set's rows interim
+//! ones; a missing `unseen` (primary) one takes every comparison of the group out of the
+//! report (tables, summaries, figures: only the counts stay) and the answers out of
+//! `noninferiority.json` (the page's copy of the primary verdicts).
 
 use std::fs;
 use std::path::Path;
@@ -170,6 +172,7 @@ fn verdicts_of_a_synthetic_campaign() {
         "{}",
         text(&report)
     );
+    assert!(out.join("report/fig4-ni-worm-3x1-8-unseen.svg").exists());
     // The intervals at a glance, one figure per set, linked from the report.
     let figure = |set: &str| out.join(format!("report/intervals-ni-{set}.svg"));
     for set in ["unseen", "paper"] {
@@ -247,5 +250,26 @@ fn verdicts_of_a_synthetic_campaign() {
         "{json}"
     );
     assert!(!figure("unseen").exists());
+    // Nothing of the group is compared while the primary set is short of a run: no table,
+    // no summary, no figure (those of the complete report taken away), only the counts.
+    let md = fs::read_to_string(out.join("report/report.md")).unwrap();
+    assert!(
+        md.contains("**Not yet computed: the test waits for every planned run**")
+            && md.contains("- worm-3x1, 8 evaluations: attention 8, mlp-comm 7")
+            && md.contains("wait for every planned run, as its non-inferiority test does"),
+        "{md}"
+    );
+    let tested = md.lines().any(|l| l.starts_with("| worm-3x1 |"));
+    assert!(!md.contains("### unseen mean") && !tested, "{md}");
+    assert!(
+        md.contains("### Known before the plan: seeds 11-12"),
+        "{md}"
+    );
+    let svgs: Vec<String> = fs::read_dir(out.join("report"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|f| f.ends_with(".svg"))
+        .collect();
+    assert!(svgs.is_empty(), "{svgs:?}");
     let _ = fs::remove_dir_all(&dir);
 }

@@ -140,6 +140,23 @@ fn evolve_section(
     let md = &mut r.markdown;
     let _ = writeln!(md, "## {} · {shape} · {evals} evaluations\n", g.name);
     let sets = &results.campaign.validate;
+    if let Some(n) = g
+        .noninferiority
+        .as_ref()
+        .filter(|n| !noninferiority::complete(results, g, n))
+    {
+        // The group's summaries and figures compare its arms: none before its test is read.
+        let _ = writeln!(
+            md,
+            "The summaries and figures of this group ({} against {}) wait for every planned \
+             run, as its non-inferiority test does.\n",
+            n.treatment, n.control
+        );
+        r.withdrawn.push(format!("fig3-{id}.svg"));
+        r.withdrawn
+            .extend(sets.iter().map(|set| format!("fig4-{id}-{set}.svg")));
+        return;
+    }
     summary_table(&samples, sets, md);
     comparisons(tests, md);
     plateau::plateau_table(&samples, md);

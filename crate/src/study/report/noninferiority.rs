@@ -126,6 +126,23 @@ pub(super) fn arm(
         .collect()
 }
 
+/// Whether every planned run of the test is validated on its primary set: both arms, every
+/// shape and budget, every seed. Until then no comparison of the group is reported (no
+/// interim look: the plan fixes the sample size, and its answer is read once).
+pub fn complete(results: &Results, g: &EvolveGroup, n: &NonInferiority) -> bool {
+    let seeds = g.seeds.as_ref().unwrap_or(&results.campaign.seeds);
+    let Some(&set) = n.sets.first() else {
+        return false;
+    };
+    g.shapes.iter().all(|shape| {
+        g.evals.iter().all(|&evals| {
+            [n.treatment, n.control]
+                .iter()
+                .all(|&c| arm(results, (shape, c, evals), seeds, set).len() == seeds.len())
+        })
+    })
+}
+
 /// Every test of the group's non-inferiority, set by set (the primary first), each set's
 /// shapes and budgets in campaign order; a shape or budget without data in either arm is
 /// left out.

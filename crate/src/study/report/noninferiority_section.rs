@@ -5,7 +5,7 @@
 //! them, never pooled.
 
 use super::families::ALPHA;
-use super::noninferiority::{arm, tests, Test, ONE_SIDED_ALPHA};
+use super::noninferiority::{arm, complete, tests, Test, ONE_SIDED_ALPHA};
 use super::noninferiority_figure::{figure, file};
 use super::Report;
 use crate::study::campaign::file::{EvolveGroup, NonInferiority};
@@ -42,6 +42,13 @@ fn section(results: &Results, g: &EvolveGroup, n: &NonInferiority, r: &mut Repor
         g.name,
         100.0 * (1.0 - ALPHA / 2.0)
     );
+    if !complete(results, g, n) {
+        waiting(results, g, n, md);
+        r.withdrawn
+            .extend(n.sets.iter().map(|&set| file(&g.name, set)));
+        known_part(results, g, n, md);
+        return;
+    }
     let all = tests(results, g, n);
     for (i, &set) in n.sets.iter().enumerate() {
         let role = if i == 0 { "primary" } else { "secondary" };
@@ -70,6 +77,34 @@ fn section(results: &Results, g: &EvolveGroup, n: &NonInferiority, r: &mut Repor
         }
     }
     known_part(results, g, n, md);
+}
+
+/// While a planned run is missing on the primary set: how many each arm has, and nothing
+/// compared.
+fn waiting(results: &Results, g: &EvolveGroup, n: &NonInferiority, md: &mut String) {
+    let seeds = g.seeds.as_ref().unwrap_or(&results.campaign.seeds);
+    let set = n.sets[0];
+    let _ = writeln!(
+        md,
+        "**Not yet computed: the test waits for every planned run** (no interim look: the \
+         plan fixes the sample size, and its answer is read once). Runs validated on the \
+         {set} set so far, of {} per arm:\n",
+        seeds.len()
+    );
+    for shape in &g.shapes {
+        for &evals in &g.evals {
+            let count = |c| arm(results, (shape, c, evals), seeds, set).len();
+            let _ = writeln!(
+                md,
+                "- {shape}, {evals} evaluations: {} {}, {} {}",
+                n.treatment,
+                count(n.treatment),
+                n.control,
+                count(n.control)
+            );
+        }
+    }
+    md.push('\n');
 }
 
 fn row(x: &Test, n: &NonInferiority, md: &mut String) {

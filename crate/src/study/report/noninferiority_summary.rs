@@ -5,7 +5,7 @@
 //! plan's test is Holm over the shapes at the planned sample size): until then no number of
 //! the comparison is in the file, so nothing reads an interim result as the answer.
 
-use super::noninferiority::{arm, tests};
+use super::noninferiority::{arm, complete, tests};
 use crate::study::campaign::file::{EvolveGroup, NonInferiority};
 use crate::study::campaign::Results;
 use serde::Serialize;
@@ -128,7 +128,7 @@ fn of(results: &Results, g: &EvolveGroup, n: &NonInferiority) -> Summary {
     }
     let planned_runs = 2 * seeds.len() * shapes.len();
     let finished_runs = shapes.iter().map(|s| s.finished[0] + s.finished[1]).sum();
-    let complete = finished_runs == planned_runs;
+    let complete = complete(results, g, n);
     if complete {
         for t in tests(results, g, n).iter().filter(|t| t.set == set) {
             let s = shapes
