@@ -1,11 +1,11 @@
 //! The data of the report's figures, ready to draw: lines with a band across seeds, box
-//! plots, and points against the line y = x. The command line draws them (SVG); nothing here
+//! plots, and points against the line y = x (the runs' series they are drawn from: `series`). The command line draws them (SVG); nothing here
 //! knows about pixels.
 
 use crate::controllers::ControllerKind;
-use crate::experiment::ValidationSet;
-use crate::study::campaign::RunData;
 use crate::study::statistics::{quantile, Summary};
+
+pub use super::series::{ablation_series, best_series, rate_series, unfrozen_series};
 
 /// What a series is, which fixes its colour in every figure: a controller evolved from
 /// scratch, an attention module frozen, a module fine-tuned, or something that is no brain
@@ -193,57 +193,6 @@ pub fn band(label: &str, series: &[Vec<(f64, f64)>]) -> Option<Band> {
         b.q3.push(quantile(&ys, 0.75));
     }
     Some(b)
-}
-
-/// Best fitness against evaluations of each run, x shifted by `offset` evaluations.
-pub fn best_series(runs: &[RunData], offset: f64) -> Vec<Vec<(f64, f64)>> {
-    runs.iter()
-        .filter_map(|d| d.run.as_ref())
-        .map(|r| {
-            let points = r.generations.iter();
-            points
-                .map(|g| (offset + g.evaluations as f64, g.best))
-                .collect()
-        })
-        .collect()
-}
-
-/// Velocity against freeze second of each run's ablation on `set`.
-pub fn ablation_series(runs: &[RunData], set: ValidationSet) -> Vec<Vec<(f64, f64)>> {
-    runs.iter()
-        .filter_map(|d| d.ablation.get(&set))
-        .map(|a| {
-            let points = a.iter();
-            points
-                .map(|p| (f64::from(p.freeze_second), p.velocity))
-                .collect()
-        })
-        .collect()
-}
-
-/// The unfrozen reference of each run with an ablation on `set`, as a flat series over the
-/// same freeze seconds.
-pub fn unfrozen_series(runs: &[RunData], set: ValidationSet) -> Vec<Vec<(f64, f64)>> {
-    runs.iter()
-        .filter_map(|d| Some((d.ablation.get(&set)?, d.unfrozen(set)?)))
-        .map(|(a, v)| a.iter().map(|p| (f64::from(p.freeze_second), v)).collect())
-        .collect()
-}
-
-/// alpha (`eta` false) or eta (`eta` true) of each generation's best, against evaluations,
-/// for runs that recorded them.
-pub fn rate_series(runs: &[RunData], eta: bool) -> Vec<Vec<(f64, f64)>> {
-    runs.iter()
-        .filter_map(|d| d.run.as_ref())
-        .map(|r| {
-            let rate = |g: &crate::experiment::GenerationRecord| if eta { g.eta } else { g.alpha };
-            let points = r.generations.iter();
-            points
-                .filter_map(|g| rate(g).map(|v| (g.evaluations as f64, f64::from(v))))
-                .collect::<Vec<_>>()
-        })
-        .filter(|s| !s.is_empty())
-        .collect()
 }
 
 /// A box of `values`.

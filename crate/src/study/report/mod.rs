@@ -19,10 +19,9 @@
 //! ensembles against the reference file NAME's; `codesign-GROUP-*.svg` a body search's
 //! curves, boxes and best bodies (`codesign`).
 
-use crate::controllers::ControllerKind;
 use crate::study::campaign::file::EvolveGroup;
 use crate::study::campaign::Results;
-use figures::{band, best_series, box_of, rate_series, Figure, Plot};
+use figures::{band, best_series, box_of, Figure, Plot};
 use std::fmt::Write;
 
 mod ablation;
@@ -38,12 +37,14 @@ mod noninferiority_section;
 pub mod noninferiority_summary;
 mod plateau;
 mod samples;
+mod series;
 mod sets;
+mod slow;
 mod tables;
 use families::{planned, Comparison};
 use finetune::finetune_section;
 use samples::{samples_of, Sample};
-use tables::{cell, comparisons, families_table, summary_table};
+use tables::{comparisons, families_table, summary_table};
 
 /// The report: Markdown text and the figures it links.
 #[derive(Debug, Clone)]
@@ -204,7 +205,7 @@ fn evolve_section(
     if g.ablate {
         ablation::ablation_part(&samples, &id, shape, r);
     }
-    slow_part(&samples, &id, shape, r);
+    slow::slow_part(&samples, &id, shape, r);
 }
 
 /// The seeds a figure's curves are drawn from, and how many runs each curve has so far.
@@ -222,7 +223,7 @@ fn runs_note(seeds: &[u64], samples: &[Sample]) -> String {
 
 /// Pushes a line figure (and its link) when it has at least one band; the figure, to add
 /// notes or marks to.
-fn push_lines<'r>(
+pub(super) fn push_lines<'r>(
     r: &'r mut Report,
     file: String,
     title: String,
@@ -246,40 +247,6 @@ fn push_lines<'r>(
         notes: Vec::new(),
     });
     r.figures.last_mut()
-}
-
-fn slow_part(samples: &[Sample], id: &str, shape: &str, r: &mut Report) {
-    let slow = ControllerKind::SlowAttention.to_string();
-    let Some(s) = samples
-        .iter()
-        .find(|s| s.label == slow && !s.runs.is_empty())
-    else {
-        return;
-    };
-    let finals = |f: fn(&crate::experiment::Best) -> Option<f32>| -> Vec<f64> {
-        s.runs
-            .iter()
-            .filter_map(|d| d.run.as_ref().and_then(|r| f(&r.best)))
-            .map(f64::from)
-            .collect()
-    };
-    let _ = writeln!(
-        r.markdown,
-        "Slow attention, final best: alpha {}, eta {}.\n",
-        cell(&finals(|b| b.alpha)),
-        cell(&finals(|b| b.eta))
-    );
-    let bands = [("alpha", false), ("eta", true)]
-        .into_iter()
-        .filter_map(|(name, eta)| band(name, &rate_series(&s.runs, eta)));
-    push_lines(
-        r,
-        format!("fig8-{id}.svg"),
-        format!("{shape}: slow attention's alpha and eta"),
-        "evaluations",
-        "value",
-        bands.collect(),
-    );
 }
 
 /// The tests between the boxes of a measure, one line each, for the figure.

@@ -5,6 +5,7 @@
 //! subcommand; `command.rs` turns a planned job into a `vsr` command line.
 
 mod bodies_svg;
+mod boxes_svg;
 pub mod command;
 mod export;
 mod export_bodies;

@@ -1,13 +1,14 @@
 //! Draws the report's figures as SVG with plotters' SVG backend. Text is written as SVG
 //! `<text>` (plotters without its `ttf` / `ab_glyph` features lays text out by estimate and
 //! needs no font file), so the viewer's sans-serif font renders it. Colours: `palette`.
-//! Bodies and intervals are drawn in their own files (`bodies_svg`, `intervals_svg`).
+//! Boxes, bodies and intervals are drawn in their own files (`boxes_svg`, `bodies_svg`,
+//! `intervals_svg`).
 
 use super::palette::{looks, Look};
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
-use vsr::study::report::figures::{Band, BoxData, Figure, Mark, Plot, Points};
+use vsr::study::report::figures::{Band, Figure, Mark, Plot, Points};
 use vsr::{Error, Result};
 
 const SIZE: (u32, u32) = (800, 500);
@@ -53,7 +54,7 @@ pub fn draw(figure: &Figure) -> Result<String> {
         }
         match &figure.plot {
             Plot::Lines { bands, marks } => lines(&root, figure, bands, marks)?,
-            Plot::Boxes(boxes) => boxes_plot(&root, figure, boxes)?,
+            Plot::Boxes(boxes) => super::boxes_svg::draw(&root, figure, boxes)?,
             Plot::Versus(series) => versus(&root, figure, series)?,
             Plot::Intervals { rows, marks } => {
                 super::intervals_svg::draw(&root, figure, rows, marks)?
@@ -192,65 +193,6 @@ pub(super) fn marked(
     chart
         .draw_series(std::iter::once(label))
         .map_err(plot_error)?;
-    Ok(())
-}
-
-/// Box plots: box from q1 to q3, median line, whiskers to the smallest and largest value
-/// (no outlier rule: with 5 runs every value is drawn as a dot anyway).
-fn boxes_plot(root: &Area, figure: &Figure, boxes: &[BoxData]) -> Result<()> {
-    let ys = range(boxes.iter().flat_map(|b| b.values.iter().copied()));
-    let labels: Vec<&str> = boxes.iter().map(|b| b.label.as_str()).collect();
-    let xs = -0.5..boxes.len() as f64 - 0.5;
-    let mut chart = chart(root, figure, xs, ys)?;
-    let name = |x: &f64| {
-        let i = x.round();
-        let at_box = (x - i).abs() < 1e-6 && i >= 0.0;
-        let label = labels.get(i as usize).filter(|_| at_box);
-        label.map_or(String::new(), |l| l.to_string())
-    };
-    chart
-        .configure_mesh()
-        .x_desc(&figure.x_label)
-        .y_desc(&figure.y_label)
-        .x_labels(boxes.len().max(2) * 2 - 1)
-        .x_label_formatter(&name)
-        .disable_x_mesh()
-        .bold_line_style(GRID)
-        .light_line_style(FINE_GRID)
-        .draw()
-        .map_err(plot_error)?;
-    let looks = looks(boxes.iter().map(|b| b.role));
-    for (i, (b, look)) in boxes.iter().zip(&looks).enumerate() {
-        let color = look.colour;
-        let (x, w, s) = (i as f64, 0.2, &b.summary);
-        let style = color.stroke_width(2);
-        let shapes: Vec<PathElement<(f64, f64)>> = vec![
-            PathElement::new(
-                vec![
-                    (x - w, s.q1),
-                    (x + w, s.q1),
-                    (x + w, s.q3),
-                    (x - w, s.q3),
-                    (x - w, s.q1),
-                ],
-                style,
-            ),
-            PathElement::new(
-                vec![(x - w, s.median), (x + w, s.median)],
-                color.stroke_width(3),
-            ),
-            PathElement::new(vec![(x, s.q3), (x, s.max)], style),
-            PathElement::new(vec![(x, s.q1), (x, s.min)], style),
-            PathElement::new(vec![(x - w / 2.0, s.max), (x + w / 2.0, s.max)], style),
-            PathElement::new(vec![(x - w / 2.0, s.min), (x + w / 2.0, s.min)], style),
-        ];
-        chart.draw_series(shapes).map_err(plot_error)?;
-        let dots = b
-            .values
-            .iter()
-            .map(|&v| Circle::new((x, v), 3, color.filled()));
-        chart.draw_series(dots).map_err(plot_error)?;
-    }
     Ok(())
 }
 
