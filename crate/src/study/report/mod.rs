@@ -153,9 +153,9 @@ fn evolve_section(
              run, as its non-inferiority test does.\n",
             n.treatment, n.control
         );
-        r.withdrawn.push(format!("fig3-{id}.svg"));
+        r.withdrawn.push(fig3_file(&id));
         r.withdrawn
-            .extend(sets.iter().map(|set| format!("fig4-{id}-{set}.svg")));
+            .extend(sets.iter().map(|&set| fig4_file(&id, set)));
         return;
     }
     summary_table(&samples, sets, md);
@@ -167,7 +167,7 @@ fn evolve_section(
         .filter_map(|s| band(&s.label, &best_series(&s.runs, 0.0)));
     let fig3 = push_lines(
         r,
-        format!("fig3-{id}.svg"),
+        fig3_file(&id),
         format!("{shape}: best fitness"),
         "evaluations",
         "best fitness (m/s)",
@@ -190,7 +190,7 @@ fn evolve_section(
         });
         let boxes: Vec<_> = boxes.filter(|b| !b.values.is_empty()).collect();
         if !boxes.is_empty() {
-            let file = format!("fig4-{id}-{set}.svg");
+            let file = fig4_file(&id, set);
             let _ = writeln!(r.markdown, "![validation on the {set} set]({file})\n");
             r.figures.push(Figure {
                 file,
@@ -206,6 +206,16 @@ fn evolve_section(
         ablation::ablation_part(&samples, &id, shape, r);
     }
     slow::slow_part(&samples, &id, shape, r);
+}
+
+/// The file of an evolve section's best-fitness curves (`id`: group-shape-evals).
+fn fig3_file(id: &str) -> String {
+    format!("fig3-{id}.svg")
+}
+
+/// The file of an evolve section's validation boxes on `set`.
+fn fig4_file(id: &str, set: crate::experiment::ValidationSet) -> String {
+    format!("fig4-{id}-{set}.svg")
 }
 
 /// The seeds a figure's curves are drawn from, and how many runs each curve has so far.
