@@ -35,6 +35,16 @@ function startable(url) {
   return URL.createObjectURL(new Blob([`import ${JSON.stringify(url.href)};`], { type: 'text/javascript' }));
 }
 
+/**
+ * Fetches `url`, throwing on an HTTP error ("WHAT: HTTP 404", or "HTTP 404" without `what`).
+ * @param {string} url @param {string} [what] what it is, for the message @returns {Promise<Response>}
+ */
+export async function fetchOk(url, what) {
+  const response = await fetch(url);
+  if (!response.ok) throw new Error(`${what ? `${what}: ` : ''}HTTP ${response.status}`);
+  return response;
+}
+
 /** The text of a thrown value. @param {unknown} error @returns {string} */
 export function messageOf(error) {
   return error instanceof Error ? error.message : String(error);

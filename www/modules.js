@@ -7,7 +7,7 @@
  * the core when read; a bad file shows a message and changes nothing.
  */
 import { describeRun } from './core.js';
-import { messageOf } from './kit.js';
+import { fetchOk, messageOf } from './kit.js';
 import { lineageNote } from './tour/lineage.js';
 import { count, decimal } from './format.js';
 
@@ -252,13 +252,6 @@ export function shortLabel(what, mean) {
  */
 export function unseenWords(mean) {
   return `on average ${decimal(mean)} m/s on ten terrains it never trained on`;
-}
-
-/** @param {string} url @returns {Promise<Response>} the response, or throws on an HTTP error */
-async function fetchOk(url) {
-  const response = await fetch(url);
-  if (!response.ok) throw new Error(`HTTP ${response.status}`);
-  return response;
 }
 
 /**

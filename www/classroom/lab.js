@@ -7,7 +7,7 @@
  * race).
  */
 import { checkShape, describeRun, runGenome, transplant } from '../core.js';
-import { requester } from '../kit.js';
+import { fetchOk, requester } from '../kit.js';
 
 const ask = requester('classroom/lab-worker.js', 'the classroom\'s measuring worker');
 
@@ -34,7 +34,7 @@ export class Lab {
   /** A committed file's text (fetched once). @param {string} path served with the page */
   file(path) {
     if (!this.files.has(path)) {
-      this.files.set(path, fetch(path).then((r) => (r.ok ? r.text() : Promise.reject(new Error(`${path}: HTTP ${r.status}`)))));
+      this.files.set(path, fetchOk(path, path).then((r) => r.text()));
     }
     return /** @type {Promise<string>} */ (this.files.get(path));
   }

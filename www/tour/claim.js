@@ -8,7 +8,7 @@
  * is complete.
  */
 import { count, decimal, signed } from '../format.js';
-import { messageOf } from '../kit.js';
+import { fetchOk, messageOf } from '../kit.js';
 import { STUDY_DIR } from './figures.js';
 
 /** Where the page reads the test's state. */
@@ -67,7 +67,7 @@ let loaded;
 
 /** The test's state, fetched once for every place that says it. @returns {Promise<ClaimSummary>} */
 export function loadClaim() {
-  loaded ??= fetch(CLAIM_FILE).then((response) => (response.ok ? response.json() : Promise.reject(new Error(`HTTP ${response.status}`))));
+  loaded ??= fetchOk(CLAIM_FILE).then((response) => response.json());
   return loaded;
 }
 

@@ -7,7 +7,7 @@
  * becomes a module of the list, so it can also race or be transplanted).
  */
 import { withStats } from '../classroom/simple-words.js';
-import { messageOf } from '../kit.js';
+import { fetchOk, messageOf } from '../kit.js';
 import { shortLabel, unseenWords } from '../modules.js';
 import { CLAIM_TABLE, FIGURES, STUDY_DIR, TABLES, figureSrc } from './figures.js';
 import { fillClaim, loadClaim } from './claim.js';
@@ -56,8 +56,7 @@ export function runsOf(figure, runs) {
 
 /** The runs of one of the study's tables, fetched. @param {string} name @returns {Promise<StudyRun[]>} */
 async function table(name) {
-  const response = await fetch(`${STUDY_DIR}${name}`);
-  if (!response.ok) throw new Error(`${name}: HTTP ${response.status}`);
+  const response = await fetchOk(`${STUDY_DIR}${name}`, name);
   return parseCampaign(await response.text(), name);
 }
 
