@@ -117,7 +117,11 @@ impl Controller for MlpComm {
             );
             *u = self.output(0, i, &x);
             for d in 0..4 {
-                self.sending[i][d] = self.output(1 + d, i, &x);
+                // A message toward a side with no neighbour is never read: not computed.
+                self.sending[i][d] = match self.topology.neighbour(i, d) {
+                    Some(_) => self.output(1 + d, i, &x),
+                    None => 0.0,
+                };
             }
         }
         // Messages computed now are delivered at the next call.
