@@ -19,9 +19,9 @@
 //! voxel `i` (one-hot position encoding) and slot `8 n` is the bias. So output `o` of voxel `i`
 //! is tanh(P[o (8n + 1) + 8 n] + sum_j P[o (8n + 1) + 8 i + j] tanh(x_j)).
 
+use super::tanh_lanes::tanhf_in_place;
 use super::topology::opposite;
 use super::{io_fits, Controller, Params, Topology, SENSORS_PER_VOXEL};
-use libm::tanhf;
 
 /// Outputs per voxel: 1 actuation + 4 directional messages.
 pub(crate) const MLP_COMM_OUTPUTS: usize = 5;
@@ -37,6 +37,10 @@ pub struct MlpComm {
     sent: Vec<[f32; 4]>,
     /// Scratch for the messages being sent at this call.
     sending: Vec<[f32; 4]>,
+    /// Scratch: every voxel's 8 inputs after tanh, voxel after voxel.
+    inputs: Vec<f32>,
+    /// Scratch: every voxel's 5 outputs, voxel after voxel (tanh taken over all at once).
+    outputs: Vec<f32>,
     /// Called only when the actuation is latched (messages at the actuation's pace).
     latched: bool,
 }
@@ -51,6 +55,8 @@ impl MlpComm {
             params: Params::zeros(Self::param_count_for(n)),
             sent: vec![[0.0; 4]; n],
             sending: vec![[0.0; 4]; n],
+            inputs: vec![0.0; INPUTS * n],
+            outputs: vec![0.0; MLP_COMM_OUTPUTS * n],
             latched: false,
         }
     }
@@ -68,28 +74,31 @@ impl MlpComm {
         (INPUTS * n_voxels + 1) * MLP_COMM_OUTPUTS
     }
 
-    /// The 8 inputs of voxel `i`, tanh already applied.
-    fn inputs(&self, i: usize, s: &[f32]) -> [f32; INPUTS] {
-        let mut x = [0.0f32; INPUTS];
-        for j in 0..SENSORS_PER_VOXEL {
-            x[j] = tanhf(s[j]);
-        }
-        for d in 0..4 {
-            if let Some(from) = self.topology.neighbour(i, d) {
+    /// Gathers every voxel's 8 inputs into `self.inputs` and applies tanh to all of them.
+    /// A side with no neighbour reads 0 (tanh 0 = 0).
+    fn gather_inputs(&mut self, sensors: &[f32]) {
+        for (i, x) in self.inputs.chunks_exact_mut(INPUTS).enumerate() {
+            x[..SENSORS_PER_VOXEL]
+                .copy_from_slice(&sensors[SENSORS_PER_VOXEL * i..SENSORS_PER_VOXEL * (i + 1)]);
+            for d in 0..4 {
                 // The neighbour in direction d addressed us through its opposite side.
-                x[SENSORS_PER_VOXEL + d] = tanhf(self.sent[from][opposite(d)]);
+                x[SENSORS_PER_VOXEL + d] = match self.topology.neighbour(i, d) {
+                    Some(from) => self.sent[from][opposite(d)],
+                    None => 0.0,
+                };
             }
         }
-        x
+        tanhf_in_place(&mut self.inputs);
     }
 
-    /// Output `o` of voxel `i` for inputs `x`.
-    fn output(&self, o: usize, i: usize, x: &[f32; INPUTS]) -> f32 {
+    /// Output `o` of voxel `i` before its tanh, for the gathered inputs.
+    fn pre_activation(&self, o: usize, i: usize) -> f32 {
         let n = self.topology.voxel_count();
         let row = &self.params[o * (INPUTS * n + 1)..(o + 1) * (INPUTS * n + 1)];
         let w = &row[INPUTS * i..INPUTS * (i + 1)];
+        let x = &self.inputs[INPUTS * i..INPUTS * (i + 1)];
         let sum: f32 = w.iter().zip(x).map(|(w, x)| w * x).sum();
-        tanhf(row[INPUTS * n] + sum)
+        row[INPUTS * n] + sum
     }
 }
 
@@ -110,15 +119,23 @@ impl Controller for MlpComm {
         if !io_fits(self.topology.voxel_count(), sensors, out) {
             return;
         }
-        for (i, u) in out.iter_mut().enumerate() {
-            let x = self.inputs(
-                i,
-                &sensors[SENSORS_PER_VOXEL * i..SENSORS_PER_VOXEL * (i + 1)],
-            );
-            *u = self.output(0, i, &x);
-            for d in 0..4 {
-                self.sending[i][d] = self.output(1 + d, i, &x);
+        self.gather_inputs(sensors);
+        for i in 0..out.len() {
+            for o in 0..MLP_COMM_OUTPUTS {
+                // A message toward a side with no neighbour is never read: not computed.
+                let live = o == 0 || self.topology.neighbour(i, o - 1).is_some();
+                self.outputs[MLP_COMM_OUTPUTS * i + o] =
+                    if live { self.pre_activation(o, i) } else { 0.0 };
             }
+        }
+        tanhf_in_place(&mut self.outputs);
+        for (i, (u, y)) in out
+            .iter_mut()
+            .zip(self.outputs.chunks_exact(MLP_COMM_OUTPUTS))
+            .enumerate()
+        {
+            *u = y[0];
+            self.sending[i].copy_from_slice(&y[1..]);
         }
         // Messages computed now are delivered at the next call.
         std::mem::swap(&mut self.sent, &mut self.sending);

@@ -19,6 +19,7 @@ mod mlp;
 mod mlp_comm;
 mod params;
 mod slow;
+mod tanh_lanes;
 mod topology;
 
 pub use attention::{attention_terms, Attention, ATTENTION_PARAMS};
