@@ -30,6 +30,7 @@ import { decimal } from './format.js';
  * @property {number} speed   m/s
  * @property {string} terrain the training terrain (family or name)
  * @property {boolean} [single] the best single evaluation seen during a run (not the run's result)
+ * @property {number} [walks]   the mean of this many evaluations, each on a fresh terrain (the body search)
  */
 
 /** @typedef {{left: number, bottom: number}} Origin */

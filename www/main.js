@@ -188,17 +188,18 @@ const playground = {
   race,
   /** @param {{brain: string, from: string}} settings the body search's brain and start body */
   setCodesign: (settings) => bodySearch.setUp(settings),
-race,
+  /** @param {boolean} on whether the walk holds when its episode ends (the tour: what is measured is what is seen) */
+  holdAtEpisodeEnd: (on) => viewer.holdAtEnd(on),
   message: showMessage,
 };
-const lab = new Lab({ defaults, runBests: () => race.run.bests, raceSeconds: () => Number(race.seconds.value) });
+const lab = new Lab({ defaults, latestRun: () => race.run, raceSeconds: () => Number(race.seconds.value) });
 const study = new StudyPanel(document, playground);
 study.loaded.then(() => modules.setStudyRuns(study.runs));
 const tour = new Tour(document, playground, study, new Classroom(document, lab));
 fillResults(el('results-plain-body'), (id) => study.show(id));
 wireWords(document);
 const challenge = new Challenge(document, lab, {
-  defaults, rows: () => drawing.rows(), race, message: showMessage,
+  defaults, rows: () => drawing.rows(), race, message: showMessage, pin: (text) => messages.show(text, 'pinned'),
   setView: (terrain) => { viewer.terrain.value = terrain; viewer.terrain.dispatchEvent(new Event('change')); },
   setRun: (values) => { runs.setValues(values); keeper.schedule(); },
   setBody: (rows) => robot.setBody(rows),

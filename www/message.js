@@ -8,6 +8,7 @@
  *   message from that source replaces it, and it goes once that input is valid (drop). Errors
  *   without a source (a crashed worker, a damaged link) only go by their close button.
  * - A note ("Link copied") goes away by itself after a while; a newer note replaces it.
+ * - A pinned note (a challenge's rules) looks like a note and stays until it is closed.
  * - The validation message (the drawing is not a robot yet) stays while that is so: the
  *   drawing's check replaces or clears it. It is shown under the drawing grid, so that its
  *   coming and going never moves the grid being drawn on.
@@ -18,7 +19,7 @@
 /** How long a note stays up (ms). */
 const NOTE_MS = 6_000;
 
-/** @typedef {'error' | 'note' | 'validation'} Kind */
+/** @typedef {'error' | 'note' | 'pinned' | 'validation'} Kind */
 
 export class MessageBox {
   /**
@@ -48,7 +49,7 @@ export class MessageBox {
     entry.className = 'message';
     entry.dataset.kind = kind;
     if (source) entry.dataset.source = source;
-    entry.setAttribute('role', kind === 'note' ? 'status' : 'alert');
+    entry.setAttribute('role', kind === 'note' || kind === 'pinned' ? 'status' : 'alert');
     const text = document.createElement('span');
     text.textContent = sentence;
     const close = document.createElement('button');

@@ -75,7 +75,7 @@ export class Lane {
     this.dirty = true;
     /** The centre's x at the start line (m). */
     this.start = NaN;
-    /** Metres walked from the start line (NaN before the first frame). */
+    /** Metres walked from the start line (NaN until the robot has moved off it). */
     this.walked = NaN;
     /** Every frame's simulated time (s) and metres walked, since the start line. @type {{t: number, walked: number}[]} */
     this.track = [];
@@ -137,11 +137,12 @@ export class Lane {
   /** @param {number} velocity @param {number} time @param {number} x */
   show(velocity, time, x) {
     if (!Number.isFinite(this.start) || time === 0) this.start = x;
+    if (Number.isFinite(this.start)) this.renderer.origin = this.start; // the ruler reads as the distance
     this.speed.dataset.value = String(velocity);
     this.speed.dataset.time = String(time);
     this.speed.textContent = Number.isFinite(velocity) && time > 0 ? `${decimal(velocity)} m/s` : '– m/s';
     const walked = x - this.start;
-    this.walked = walked;
+    this.walked = time > 0 ? walked : NaN; // at the start line nobody has a place yet
     if (Number.isFinite(walked) && Number.isFinite(time)) {
       const last = this.track[this.track.length - 1];
       if (last && time < last.t) this.track = []; // loaded again: a new race

@@ -46,8 +46,10 @@ export class Race {
     /** @type {Lane[]} */
     this.lanes = [];
     /** The current run's best evaluation of every generation, and what it evolved. */
-    this.run = { bests: /** @type {GenerationBest[]} */ ([]), shape: '', controller: '', what: '' };
+    this.run = { bests: /** @type {GenerationBest[]} */ ([]), shape: '', controller: '', what: '', mode: '' };
     this.terrainName = '';
+    /** Whether the robots wait at the start line (a tour question asks first; Restart starts them). */
+    this.held = false;
     this.wire();
     this.update();
     requestAnimationFrame(function loop(/** @type {number} */ now) {
@@ -64,7 +66,7 @@ export class Race {
     b.best.addEventListener('click', () => this.addGeneration(-1));
     b.generation.addEventListener('click', () => this.addGeneration(Number(this.generation.value)));
     b.firstLast.addEventListener('click', () => this.firstMiddleLast());
-    b.restart.addEventListener('click', () => this.restart());
+    b.restart.addEventListener('click', () => { this.held = false; this.restart(); });
     b.clear.addEventListener('click', () => this.clear());
     b.csv.addEventListener('click', () => {
       const { header, rows } = this.table();
@@ -158,7 +160,7 @@ export class Race {
   keepGeneration(top, generation, settings, kind, mode) {
     if (generation === 0) {
       const what = { evolve: 'evolved', finetune: 'fine-tuned', scratch: 'from scratch' }[mode] ?? mode;
-      this.run = { bests: [], shape: settings.shape, controller: kind, what: `${what} ${kind} (seed ${settings.seed})` };
+      this.run = { bests: [], shape: settings.shape, controller: kind, what: `${what} ${kind} (seed ${settings.seed})`, mode };
       this.generation.replaceChildren();
     }
     if (!top || !Number.isFinite(top.fitness)) return;
@@ -190,8 +192,19 @@ export class Race {
     this.update();
   }
 
+  /**
+   * Keeps the robots at the start line (`on`), or starts them: a question about the race is
+   * answered before it is run. @param {boolean} on
+   */
+  hold(on) {
+    if (this.held === on) return;
+    this.held = on;
+    if (on) this.restart(); else this.startIfLoaded();
+    this.update();
+  }
+
   startIfLoaded() {
-    if (this.lanes.length === 0 || !this.lanes.every((l) => l.loaded)) return;
+    if (this.held || this.lanes.length === 0 || !this.lanes.every((l) => l.loaded)) return;
     for (const lane of this.lanes) lane.run(true);
     this.update();
   }
@@ -208,9 +221,10 @@ export class Race {
     b.clear.disabled = n === 0;
     b.csv.disabled = n === 0;
     const done = n > 0 && this.lanes.every((l) => l.finished);
-    this.section.dataset.state = n === 0 ? 'empty' : done ? 'finished' : 'racing';
+    this.section.dataset.state = n === 0 ? 'empty' : done ? 'finished' : this.held ? 'waiting' : 'racing';
     this.status.textContent = n === 0
       ? 'No robot in the race yet.'
-      : `${n} robot${n === 1 ? '' : 's'} on ${this.terrainName}, ${this.seconds.value} s${done ? ': finished' : ''}.`;
+      : `${n} robot${n === 1 ? '' : 's'} on ${this.terrainName}, ${this.seconds.value} s${done ? ': finished'
+        : this.held ? ': waiting at the start line until you reveal your answer (Restart race starts them now)' : ''}.`;
   }
 }

@@ -36,7 +36,7 @@ export class SpeedNote {
       const trained = brain.trained && Number.isFinite(brain.trained.speed) ? brain.trained : null;
       if (!trained) { this.set(NaN, `${here}; the run goes on.`); return; }
       const said = training(trained, brain.seconds ?? seconds).then(({ where, why }) => `In training: ${decimal(trained.speed)} m/s `
-        + `(${trained.single ? 'its best single evaluation' : 'its latest evaluation'}, on ${where}). ${here}. ${why}`, () => `${here}; the run goes on.`);
+        + `(${which(trained)} ${where}). ${here}. ${why}`, () => `${here}; the run goes on.`);
       const text = await said;
       if (ticket === this.shown) this.set(NaN, text);
       return;
@@ -66,7 +66,7 @@ export class SpeedNote {
     const trained = brain.trained;
     if (!trained || !Number.isFinite(trained.speed)) return here;
     const { where, why } = await training(trained, brain.seconds ?? seconds);
-    return `${here} In training: ${decimal(trained.speed)} m/s (its latest evaluation, on ${where}). ${why}`;
+    return `${here} In training: ${decimal(trained.speed)} m/s (${which(trained)} ${where}). ${why}`;
   }
 
   /** @param {number} value @param {string} text */
@@ -74,6 +74,15 @@ export class SpeedNote {
     this.el.dataset.value = String(value);
     this.el.textContent = text;
   }
+}
+
+/**
+ * What the training figure is, and the words that lead to where it was measured.
+ * @param {import('./brain.js').Trained} trained
+ */
+function which(trained) {
+  if (trained.walks) return trained.walks === 1 ? 'one evaluation only, on' : `the mean of its ${trained.walks} evaluations, each on`;
+  return trained.single ? 'its best single evaluation, on' : 'its latest evaluation, on';
 }
 
 /**

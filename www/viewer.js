@@ -45,6 +45,10 @@ export class Viewer {
     /** The episode asked for last (kept across a worker restart). @type {import('./protocol.js').EpisodeParams | null} */
     this.wanted = null;
     this.running = true;
+    /** Whether a walk holds when its episode ends ({@link Viewer#holdAtEnd}). */
+    this.holdsAtEnd = false;
+    /** Whether the viewer held this walk at its episode's end (a new walk or Restart goes on). */
+    this.heldAtEnd = false;
     this.restarts = 0;
     this.worker = this.startWorker();
     this.wire();
@@ -57,9 +61,9 @@ export class Viewer {
 
   wire() {
     const { buttons } = this;
-    buttons.play.addEventListener('click', () => this.worker.postMessage({ type: ToWorker.START }));
+    buttons.play.addEventListener('click', () => { this.heldAtEnd = false; this.worker.postMessage({ type: ToWorker.START }); });
     buttons.hold.addEventListener('click', () => this.worker.postMessage({ type: ToWorker.PAUSE }));
-    buttons.restart.addEventListener('click', () => this.worker.postMessage({ type: ToWorker.RESET }));
+    buttons.restart.addEventListener('click', () => { this.worker.postMessage({ type: ToWorker.RESET }); this.goOn(); });
     this.speed.addEventListener('change', () => this.worker.postMessage({ type: ToWorker.SPEED, speed: Number(this.speed.value) }));
     for (const input of [this.terrain, this.gait.frequency, this.gait.phase]) {
       input.addEventListener('change', () => { if (this.wanted) this.show(this.wanted.shape, this.wanted.brain, false); });
@@ -96,6 +100,25 @@ export class Viewer {
       frequency: this.gait.frequency.valueAsNumber, phase: this.gait.phase.valueAsNumber,
     };
     this.worker.postMessage({ type: ToWorker.LOAD, params: this.wanted });
+    this.goOn();
+  }
+
+  /**
+   * Whether every walk holds when its episode ends (the tour: the robot stops where its speed
+   * was measured, so what a class sees is what the numbers say), or walks on (the page's way).
+   * @param {boolean} on
+   */
+  holdAtEnd(on) {
+    this.holdsAtEnd = on;
+    this.readout.holdsAtEnd = on;
+    if (!on) this.goOn();
+  }
+
+  /** Walks on if the viewer held the walk at its episode's end. */
+  goOn() {
+    if (!this.heldAtEnd) return;
+    this.heldAtEnd = false;
+    this.worker.postMessage({ type: ToWorker.START });
   }
 
   /** The episode's length from now on, without restarting the walk. @param {number} seconds */
@@ -121,6 +144,10 @@ export class Viewer {
         break;
       case FromWorker.FRAME:
         if (frameIsConsistent(msg)) {
+          if (this.holdsAtEnd && this.running && !this.heldAtEnd && !this.readout.ended && Number.isFinite(msg.episodeSpeed)) {
+            this.heldAtEnd = true;
+            this.worker.postMessage({ type: ToWorker.PAUSE });
+          }
           this.renderer.setFrame(msg); this.readout.update(msg); this.attention.setFrame(msg);
           if (Number.isFinite(this.readout.origin)) this.renderer.origin = this.readout.origin; // the ruler reads as the distance
           this.reader.setFrame(msg.attention); this.freeze.setFrame(msg);

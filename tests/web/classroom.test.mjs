@@ -35,6 +35,9 @@ async function answerAndReveal(page, n) {
   assert.equal(await task.count(), 1, `chapter ${n}: one task`);
   assert.equal(await byTestId(page, 'tour-reveal').isDisabled(), true, `chapter ${n}: no reveal before an answer`);
   assert.equal(await page.locator('.tour-notice').isVisible(), false, `chapter ${n}: the Notice waits for the reveal`);
+  const { figure: shows, setup } = CHAPTERS[n - 1];
+  if (shows) assert.equal(await page.locator('#tour-body figure').isVisible(), false, `chapter ${n}: the study's figure waits for the reveal`);
+  if (setup.race) assert.equal(await page.locator('#race-panel').getAttribute('data-state'), 'waiting', `chapter ${n}: the race waits at the start line`);
   if (exerciseOf(n - 1)?.choices) await task.locator('input[type=radio]').first().check();
   else await task.locator('input[type=number]').fill('4');
   await byTestId(page, 'tour-reveal').click();
@@ -42,6 +45,8 @@ async function answerAndReveal(page, n) {
   const text = (await byTestId(page, 'tour-answer').locator('p').allTextContents()).join(' ');
   assert.match(text, /You said: .* The page's answer: /, `chapter ${n}: the answer beside the student's`);
   assert.equal(await page.locator('.tour-notice').isVisible(), true, `chapter ${n}: the Notice after the reveal`);
+  if (shows) assert.equal(await page.locator('#tour-body figure').isVisible(), true, `chapter ${n}: the figure after the reveal`);
+  if (setup.race) await page.locator('#race-panel:not([data-state="waiting"])').waitFor({ timeout: 10_000 });
   return text;
 }
 
@@ -66,6 +71,13 @@ test('every chapter asks before it shows: an answer, then the reveal with why', 
       const shown = await figure(page, 'robot-speed');
       const quoted = Number(/([-\d.]+) m\/s at φ 1\.5/.exec(text)?.[1]);
       assert.equal(quoted, Number(shown.toFixed(2)), `chapter 1: the reveal's speed is the viewer's (${shown})`);
+      // In the tour the walk holds where its speed was measured, and says how to go on.
+      await waitForText(page, 'sim-time', /episode is over; Play walks on, Restart walks it again/);
+      const held = Number(await page.locator('#sim-time').getAttribute('data-value'));
+      await page.waitForTimeout(1000);
+      assert.equal(Number(await page.locator('#sim-time').getAttribute('data-value')), held, 'the clock stands at the episode\'s end');
+      await page.locator('#sim-restart').click();
+      await page.waitForFunction(() => Number(document.getElementById('sim-time')?.dataset.value) < 5, undefined, { timeout: 10_000 });
     }
     if (n === 1 || n === 5) await page.screenshot({ path: path.join(SCREENSHOTS, `classroom-reveal-${n}.png`) });
     assert.deepEqual(problems, [], `chapter ${n}`);
@@ -154,6 +166,7 @@ test('after a run, one button races its first, middle and last generations side 
 test('simple words: formulas and statistics hidden, kept after a reload; the newcomer\'s words explained', async () => {
   const { page, problems } = await openPage(env.browser, `${env.url}?chapter=6`, { width: 1400, height: 900 });
   await ready(page);
+  await answerAndReveal(page, 6); // the figure shows after the reveal
   const stats = page.locator('#tour-box figcaption .stats');
   assert.ok(await stats.count() >= 1, 'the figure\'s p-values are marked');
   assert.equal(await stats.first().isVisible(), true);
@@ -232,19 +245,21 @@ test('a class challenge: its link sets the rules; three entries ranked by the pa
   await page.locator('#challenge-make').click();
   const challengeUrl = await page.locator('#challenge-link').inputValue();
   assert.match(challengeUrl, /\?challenge=1&terrain=hilly-1-10-0&seconds=30/);
-  await byTestId(page, 'challenge-compare').fill([`Ana ${links[0]}`, `Ben: ${links[1]}`, links[2], `Cleo ${damaged}`, 'Dan https://example.com/#shape=1'].join('\n'));
+  await byTestId(page, 'challenge-compare').fill([`Ana ${links[0]}`, `Ben: ${links[1]}`, links[2], `Cleo ${damaged}`, 'Dan https://example.com/#shape=1', 'Eve not-a-link'].join('\n'));
   await page.locator('#challenge-rank').click();
   await page.locator('#challenge-panel[data-state="ranked"]').waitFor({ timeout: 60_000 });
   const rows = await byTestId(page, 'challenge-table').locator('tbody tr').evaluateAll((trs) => trs.map((tr) => [...tr.children].map((td) => td.textContent)));
   console.log(`# challenge table: ${JSON.stringify(rows)}`);
-  assert.equal(rows.length, 5, 'every line has a row');
+  assert.equal(rows.length, 6, 'every line has a row');
   assert.deepEqual(rows.slice(0, 3).map((r) => r[0]), ['1', '2', '3'], 'three ranked');
   assert.equal(rows[0][1], 'Ana', 'the attention biped first');
-  assert.equal(rows[0][3], 'attention');
+  assert.match(String(rows[0][3]), /^attention \(the pretrained module biped-4x3-attention, unchanged: not evolved here\)$/, 'a pretrained brain is named');
+  assert.equal(rows[2][3], 'no brain (phase gait)');
   const speeds = rows.slice(0, 3).map((r) => Number.parseFloat(String(r[4]).replace('−', '-')));
   assert.ok(speeds[0] >= speeds[1] && speeds[1] >= speeds[2], `ranked by speed: ${speeds}`);
   assert.match(String(rows.find((r) => r[1] === 'Cleo')?.[4]), /damaged/);
   assert.match(String(rows.find((r) => r[1] === 'Dan')?.[4]), /another page/);
+  assert.match(String(rows.find((r) => r[1] === 'Eve')?.[4]), /not a share link/, 'a line without a link keeps its name');
   await byTestId(page, 'challenge-race').click();
   await page.waitForFunction(() => document.querySelectorAll('[data-testid="race-robot"]').length === 2);
   await byTestId(page, 'challenge').screenshot({ path: path.join(SCREENSHOTS, 'classroom-challenge.png') });
@@ -253,6 +268,7 @@ test('a class challenge: its link sets the rules; three entries ranked by the pa
 
   const student = await openPage(env.browser, `${challengeUrl.replace(/^https?:\/\/[^/]+\//, env.url)}`, { width: 1400, height: 900 });
   await waitForText(student.page, 'challenge-rules', /speed measured over 30 s on hilly-1-10-0; evolve with 2,000 evaluations, seed 1/);
+  await waitForText(student.page, 'message', /^Challenge: .*speed measured over 30 s on hilly-1-10-0; .*further down/); // at the top, where a student looks first
   assert.equal(await student.page.locator('#terrain').inputValue(), 'hilly-1-10-0');
   assert.equal(await student.page.locator('#run-budget').inputValue(), '2000');
   assert.deepEqual(student.problems, []);

@@ -57,9 +57,12 @@ export function challengeLink(rules) {
  */
 export function linesOf(text) {
   return text.split('\n').map((l) => l.trim()).filter((l) => l !== '').map((line, i) => {
-    const at = line.search(/https?:\/\/|#/);
+    // The link starts at its address or its #; a line with neither is read as a name and a
+    // (broken) link, its last word, so that the table still says whose line it was.
+    const found = line.search(/https?:\/\/|#/);
+    const at = found >= 0 ? found : line.search(/\S+$/);
     const name = (at > 0 ? line.slice(0, at) : '').replace(/[\s:,-]+$/, '').trim();
-    return { name: name || `entry ${i + 1}`, link: at >= 0 ? line.slice(at) : line };
+    return { name: name || `entry ${i + 1}`, link: line.slice(Math.max(at, 0)) };
   });
 }
 
@@ -68,7 +71,7 @@ export class Challenge {
    * @param {Document} doc @param {import('./lab.js').Lab} lab
    * @param {{defaults: import('../core.js').Defaults, rows: () => string, setView: (terrain: string) => void,
    *   setRun: (values: Record<string, string>) => void, setBody: (rows: string) => Promise<void>,
-   *   race: import('../race.js').Race, message: (text: string) => void}} page
+   *   race: import('../race.js').Race, message: (text: string) => void, pin: (text: string) => void}} page
    */
   constructor(doc, lab, page) {
     this.doc = doc;
@@ -106,6 +109,7 @@ export class Challenge {
   words(r) {
     const body = r.body ? `the body ${r.body}` : r.voxels ? `any body of at most ${r.voxels} voxels` : 'any body';
     return `Challenge: ${body}; speed measured over ${r.seconds} s on ${r.terrain}; evolve with ${Number.isFinite(Number(r.budget)) ? count(Number(r.budget)) : r.budget} evaluations, seed ${r.seed}. `
+      + `The teacher's page walks your robot again for ${r.seconds} s on ${r.terrain}, so its speed there may differ from the one under your robot. `
       + 'When your robot walks, press “Share link” and send the link to your teacher.';
   }
 
@@ -116,6 +120,8 @@ export class Challenge {
     this.section.dataset.mode = 'student';
     this.rulesLine.textContent = this.words(r);
     this.rulesLine.hidden = false;
+    // The rules at the top as well, where a student opening the link looks first (the panel is far down).
+    this.page.pin(`${this.words(r)} (The rules are also under “Class challenge”, further down.)`);
     this.page.setView(r.terrain);
     this.page.setRun({ budget: r.budget, seed: r.seed });
     if (r.body) await this.page.setBody(r.body).catch((error) => this.page.message(`the challenge's body: ${messageOf(error)}`));
@@ -165,7 +171,10 @@ export class Challenge {
     const { state } = read;
     const voxels = state.rows.split('').filter((c) => c === '1').length;
     const brain = state.brain;
-    const named = { ...entry, rows: state.rows, brain: brain ? brain.controller : 'no brain (phase gait)',
+    // A brain that is a pretrained module, unchanged, was not evolved for the challenge: said, for the teacher to judge.
+    const pretrained = brain ? await this.lab.pretrainedWith(brain.genome).catch(() => '') : '';
+    const named = { ...entry, rows: state.rows,
+      brain: brain ? `${brain.controller}${pretrained ? ` (the pretrained module ${pretrained.replace(/\.json$/, '')}, unchanged: not evolved here)` : ''}` : 'no brain (phase gait)',
       genome: brain ? { controller: brain.controller, genome: brain.genome } : null };
     if (read.damaged) return { ...named, problem: `its brain is damaged: ${read.damaged}` };
     if (r.body && state.rows !== r.body) return { ...named, problem: `not the challenge's body (${r.body})` };

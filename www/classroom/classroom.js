@@ -42,11 +42,11 @@ export class Classroom {
   }
 
   /**
-   * Chapter `index`'s task, to go under its text; `notice` (the chapter's “Notice”) is hidden
-   * until the reveal. Null for a chapter without a task.
-   * @param {number} index @param {HTMLElement | null} notice @returns {HTMLElement | null}
+   * Chapter `index`'s task, to go under its text; `revealed` is called once its answer is
+   * shown (the tour then shows what it held back). Null for a chapter without a task.
+   * @param {number} index @param {() => void} revealed @returns {HTMLElement | null}
    */
-  exercise(index, notice) {
+  exercise(index, revealed) {
     const doc = this.doc;
     const ex = exerciseOf(index);
     if (!ex) return null;
@@ -102,7 +102,6 @@ export class Classroom {
     const bar = make(doc, 'div', 'exercise-bar');
     bar.append(reveal, hint);
     box.append(bar, result);
-    if (notice) notice.hidden = true;
     reveal.addEventListener('click', async () => {
       const mine = given();
       if (mine === '') return;
@@ -122,7 +121,8 @@ export class Classroom {
         result.hidden = false;
         box.dataset.state = 'revealed';
         box.dataset.right = String(right);
-        if (notice) notice.hidden = false;
+        revealed();
+        result.scrollIntoView({ block: 'nearest' });
       } catch (error) {
         result.replaceChildren(make(doc, 'p', 'exercise-wrong', `The page could not run it: ${messageOf(error)}`));
         result.hidden = false;

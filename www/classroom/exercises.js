@@ -91,13 +91,13 @@ export const TASKS = [
   {
     chapter: BODY,
     ask: 'Erase the third column of the biped, so that it falls into two pieces. What will the page do?',
-    choices: ['both pieces walk, each on its own', 'the bigger piece walks, the other one is dropped', 'nothing walks until it is one piece again'],
+    choices: ['both pieces walk, each on its own', 'the bigger piece walks, the other one is dropped', 'the cut drawing does not walk: the last whole robot walks on until the drawing is one piece again'],
     try: 'Erase that column (drag with the right mouse button, or press Erase first) and watch.',
     async key(lab) {
       const cut = erase(/** @type {string} */ (setup(BODY).rows), 2);
       const check = await lab.check(cut);
       const answer = check.ok ? 0 : 2;
-      return { answer, shown: answer === 2 ? 'nothing walks until it is one piece again' : 'it walks',
+      return { answer, shown: answer === 2 ? 'the cut drawing does not walk: the last whole robot walks on until the drawing is one piece again' : 'it walks',
         why: `The page's check of the cut drawing (${cut}) finds ${check.pieces.length} pieces${check.ok ? '' : ` and says: “${check.message}”`}. `
           + 'Voxels only push and pull on the voxels they touch, so a piece on its own would be a second robot.' };
     },
@@ -141,7 +141,10 @@ export const TASKS = [
     choices: ['less than 2 times', '2 to 10 times', 'more than 10 times'],
     try: 'Press Evolve, and when it ends press “Race first, middle and last” under “Side by side”.',
     async key(lab) {
-      const own = lab.runBests();
+      // The page's own run counts only if it is this chapter's (a later chapter's run is another question).
+      const run = lab.latestRun();
+      const { rows, controller } = setup(EVOLUTION);
+      const own = run.mode === 'evolve' && run.shape === rows && run.controller === controller ? run.bests : [];
       const bests = own.length >= 2 ? own : await lab.history(moduleOf(BRAIN));
       const source = own.length >= 2 ? 'this page\'s latest run'
         : `the study's best run of this brain on this body (${count(bests[bests.length - 1].evaluations ?? NaN)} evaluations)`;
@@ -231,7 +234,7 @@ export const TASKS = [
   },
   {
     chapter: YOURS,
-    ask: `This new robot (${voxels(/** @type {string} */ (setup(YOURS).rows))} voxels) has no brain yet: the phase gait drives it. Driven by the same gait on the same ground, will it be faster or slower than the biped (the body of chapter 1)?`,
+    ask: `This table (${voxels(/** @type {string} */ (setup(YOURS).rows))} voxels) has no brain: the phase gait drives it. With the same gait on this same hilly ground, will it be faster or slower than the biped of ten voxels?`,
     choices: ['faster', 'slower'],
     try: 'Watch its speed under the robot; then draw your own and compare.',
     async key(lab) {

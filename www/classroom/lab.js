@@ -13,10 +13,11 @@ const ask = requester('classroom/lab-worker.js', 'the classroom\'s measuring wor
 
 /** @typedef {import('./lab-worker.js').Walk} Walk */
 /** @typedef {{generation: number, fitness: number, evaluations?: number}} GenerationBest */
+/** @typedef {{bests: GenerationBest[], shape: string, controller: string, mode: string}} LatestRun  the page's latest run (race.js keeps it) */
 
 export class Lab {
   /**
-   * @param {{defaults: import('../core.js').Defaults, runBests: () => GenerationBest[], raceSeconds: () => number}} page
+   * @param {{defaults: import('../core.js').Defaults, latestRun: () => LatestRun, raceSeconds: () => number}} page
    */
   constructor(page) {
     this.page = page;
@@ -46,6 +47,19 @@ export class Lab {
     return { rows: info.shape, controller: info.controller, genome, seconds: info.seconds, info };
   }
 
+  /**
+   * The pretrained module (its file name) whose best genome is exactly `genome`, or '' if none is.
+   * @param {Float32Array} genome
+   */
+  async pretrainedWith(genome) {
+    const manifest = JSON.parse(await this.file('pretrained/manifest.json'));
+    for (const { file } of /** @type {{file: string}[]} */ (manifest.modules)) {
+      const mod = await this.module(`pretrained/${file}`);
+      if (mod.genome.length === genome.length && mod.genome.every((g, i) => Object.is(g, genome[i]))) return file;
+    }
+    return '';
+  }
+
   /** A run file's best generation by generation. @param {string} path @returns {Promise<GenerationBest[]>} */
   async history(path) {
     const run = JSON.parse(await this.file(path));
@@ -58,8 +72,8 @@ export class Lab {
   /** The core's check of a drawing. @param {string} rows */
   check(rows) { return checkShape(rows); }
 
-  /** The page's latest run, its best of each generation (empty before any run). */
-  runBests() { return this.page.runBests(); }
+  /** The page's latest run: its body, brain, mode and best of each generation (none before any run). */
+  latestRun() { return this.page.latestRun(); }
 
   /** How long the race lasts (s), as its form says. */
   raceSeconds() { return this.page.raceSeconds(); }

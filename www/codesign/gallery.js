@@ -74,6 +74,9 @@ export class Gallery {
     this.drawn = new Map();
     /** The cell loaded last (marked). */
     this.chosen = '';
+    /** The scroll hint above the grid. @type {HTMLElement | null} */
+    this.hint = null;
+    addEventListener('resize', () => this.fitHint());
   }
 
   /** Builds the empty grid for `layout`. @param {Layout} layout */
@@ -107,8 +110,20 @@ export class Gallery {
     }
     const across = document.createElement('p');
     across.className = 'axis-title';
-    across.textContent = 'across: body size (number of voxels) · up: number of feet (separate pieces of the bottom row)';
-    this.box.replaceChildren(grid, across);
+    across.textContent = 'across: body size (number of voxels) · up: number of feet (separate pieces of the bottom row) · '
+      + 'under each body: its speed in training (m/s), the mean of ×this many walks (more walks, a surer speed)';
+    // On a narrow screen the larger bodies are off to the right: said above the grid.
+    const hint = document.createElement('p');
+    hint.className = 'axis-title scroll-hint';
+    hint.textContent = 'Larger bodies are further right: scroll sideways →';
+    this.box.replaceChildren(hint, grid, across);
+    this.hint = hint;
+    this.fitHint();
+  }
+
+  /** Shows the scroll hint only when the grid is wider than its box. */
+  fitHint() {
+    if (this.hint) this.hint.hidden = this.box.scrollWidth <= this.box.clientWidth + 1;
   }
 
   /**
@@ -135,9 +150,10 @@ export class Gallery {
         + `${isNew ? ', new in the latest round' : ''}. Click to watch it walk.`;
       button.setAttribute('aria-label', button.title);
       const [canvas, label] = /** @type {[HTMLCanvasElement, HTMLElement]} */ ([button.children[0], button.children[1]]);
-      label.textContent = decimal(entry.fitness);
+      label.textContent = entry.fitness === null ? decimal(entry.fitness) : `${decimal(entry.fitness)} ×${entry.measurements}`;
       drawBody(canvas, entry.shape, speedColour(entry.fitness, best));
     }
+    this.fitHint();
   }
 
   /** Marks the cell loaded into the editor. @param {[number, number]} cell */

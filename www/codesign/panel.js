@@ -249,19 +249,21 @@ export class CodesignPanel {
       if (!entry) { this.hooks.message(`that body could not be loaded: ${message ?? 'it is no longer in the gallery'}`); return; }
       this.chosen = cell;
       this.gallery.choose(cell);
-      await this.hooks.open(this.brainOf(entry));
+      const shown = this.lastRound?.gallery.find((g) => g.cell[0] === cell[0] && g.cell[1] === cell[1]);
+      await this.hooks.open(this.brainOf(entry, shown?.measurements));
       document.body.dataset.codesignLoaded = entry.shape;
       this.update();
       if (share) this.hooks.share();
     });
   }
 
-  /** @param {Entry} entry @returns {import('../brain.js').Brain} */
-  brainOf(entry) {
+  /** @param {Entry} entry @param {number} [walks] how many walks its speed is the mean of @returns {import('../brain.js').Brain} */
+  brainOf(entry, walks) {
     return {
       controller: entry.controller, genome: new Float32Array(entry.genome), rows: entry.shape, origin: { left: 0, bottom: 0 },
       module: null, source: null, seconds: this.settings?.seconds ?? null,
-      trained: Number.isFinite(entry.fitness) && this.settings ? { speed: entry.fitness, terrain: this.settings.terrain } : null,
+      trained: Number.isFinite(entry.fitness) && this.settings
+        ? { speed: entry.fitness, terrain: this.settings.terrain, walks } : null,
       label: `a body found by the body search (${this.what}): ${Number.isFinite(entry.fitness) ? `${decimal(entry.fitness)} m/s in training` : 'no speed'}`,
     };
   }

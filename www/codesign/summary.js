@@ -23,6 +23,7 @@ export function summaryWords(what, { record, evaluations, gallery, seconds }, en
   const rate = seconds > 0 ? `, ${decimal(evaluations / seconds, 1)} evaluations a second` : '';
   const rounds = record.iteration + 1;
   return `Brain: ${what} · ${gallery.length} kind${gallery.length === 1 ? '' : 's'} of body found (cells filled) in ${rounds} round${rounds === 1 ? '' : 's'}`
-    + (best?.fitness != null ? ` · fastest: ${decimal(best.fitness)} m/s in training, ${best.voxels} voxels with ${best.feet} ${best.feet === 1 ? 'foot' : 'feet'}` : '')
+    + (best?.fitness != null ? ` · fastest: ${decimal(best.fitness)} m/s in training (${best.measurements === 1 ? 'one walk so far' : `the mean of ${best.measurements} walks`}), `
+      + `${best.voxels} voxels with ${best.feet} ${best.feet === 1 ? 'foot' : 'feet'}` : '')
     + ` · ${ended ? 'searched' : 'searching'} for ${decimal(seconds, 0)} s${rate}`;
 }

@@ -36,8 +36,8 @@ export class Tour {
    * @param {Document} doc
    * @param {import('./stage.js').Playground} page
    * @param {{show: (id: string) => void}} study  shows a figure in the study panel
-   * @param {{exercise: (index: number, notice: HTMLElement | null) => HTMLElement | null, tools: () => HTMLElement} | null} [classroom]
-   *   each chapter's task (asked before its “Notice” shows) and the teacher's tools (../classroom/)
+   * @param {{exercise: (index: number, revealed: () => void) => HTMLElement | null, tools: () => HTMLElement} | null} [classroom]
+   *   each chapter's task (asked before its “Notice”, its figure and its race show) and the teacher's tools (../classroom/)
    */
   constructor(doc, page, study, classroom = null) {
     this.doc = doc;
@@ -45,6 +45,8 @@ export class Tour {
     this.study = study;
     this.classroom = classroom;
     this.index = -1;
+    /** Whether the chapter shown keeps its race at the start line until its question is answered. */
+    this.raceHeld = false;
     /** Counts chapter openings, so that a slow one never overwrites a newer one. */
     this.opening = 0;
     this.box = this.build();
@@ -109,6 +111,8 @@ export class Tour {
     this.index = index;
     this.show(CHAPTERS[index]);
     this.box.dataset.state = 'setting';
+    this.page.race.hold(this.raceHeld);
+    this.page.holdAtEpisodeEnd(true);
     try {
       await stage(this.page, CHAPTERS[index]);
       if (ticket !== this.opening) return;
@@ -139,11 +143,19 @@ export class Tour {
     this.fold(false);
     body.scrollTop = 0;
     const notice = paragraph(doc, chapter.notice, 'Notice', 'tour-notice');
+    const figure = chapter.figure ? this.figure(chapter.figure) : null;
+    // A chapter with a question holds back what would answer it (its notice, its figure, its
+    // race) until the answer is revealed.
+    const held = figure ? [notice, figure] : [notice];
     body.replaceChildren(...chapter.text.map((t) => paragraph(doc, t)));
-    const task = this.classroom?.exercise(i, notice);
+    const task = this.classroom?.exercise(i, () => {
+      for (const el of held) el.hidden = false;
+      if (this.index === i) this.page.race.hold(false);
+    });
+    if (task) for (const el of held) el.hidden = true;
+    this.raceHeld = Boolean(task && chapter.setup.race);
     if (task) body.append(task);
-    body.append(paragraph(doc, chapter.task, 'Do', 'tour-task'), notice);
-    if (chapter.figure) body.append(this.figure(chapter.figure));
+    body.append(paragraph(doc, chapter.task, 'Do', 'tour-task'), ...held);
     /** @type {HTMLButtonElement} */ (this.box.querySelector('#tour-back')).disabled = i === 0;
     const next = /** @type {HTMLButtonElement} */ (this.box.querySelector('#tour-next'));
     next.disabled = i === CHAPTERS.length - 1;
@@ -226,6 +238,8 @@ export class Tour {
   /** Leaves the tour: the playground stays as the chapter set it. */
   close() {
     this.opening++;
+    this.page.race.hold(false);
+    this.page.holdAtEpisodeEnd(false);
     this.box.hidden = true;
     this.doc.body.classList.remove('touring');
     for (const el of this.doc.querySelectorAll('.tour-target')) el.classList.remove('tour-target');
