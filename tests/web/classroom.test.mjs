@@ -100,6 +100,9 @@ test('the teacher\'s answer keys: every chapter\'s, the same as a student\'s rev
   assert.ok(shown.length > 0);
   assert.ok(rows[1].startsWith(`Answer: ${shown}.`), `the key of chapter 2 is the student's reveal: ${rows[1]} / ${shown}`);
   assert.match(rows[2], /^Answer: 4 genes\./);
+  const plan = String(await keys.locator('.sheet-plan').textContent());
+  assert.match(plan, /First lesson: chapters 1 \(A voxel and its colours, 5 min\)/, `a lesson plan by chapter: ${plan}`);
+  assert.doesNotMatch(plan, /\b0 \(/, 'every planned chapter is in the tour');
   await byTestId(page, 'teacher-keys').screenshot({ path: path.join(SCREENSHOTS, 'classroom-keys-sheet.png') });
   await screenshot(page, 'classroom-keys.png');
   assert.deepEqual(problems, []);

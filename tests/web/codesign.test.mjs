@@ -142,6 +142,7 @@ test('the panel searches live, the gallery fills, a click loads a body that walk
   // The exported file's best is vsr codesign's with the panel's settings.
   const [download] = await Promise.all([page.waitForEvent('download'), byTestId(page, 'codesign-export').click()]);
   const exported = JSON.parse(await readFile(/** @type {string} */ (await download.path()), 'utf8'));
+  assert.equal(download.suggestedFilename(), `body-search-${exported.config.brain}-seed${exported.config.seed}.json`, 'a name in the panel\'s words');
   const native = await searchNative({ ...TINY, budget: 60, batch: 20 }, path.join(tmp, 'panel.json'));
   assert.deepEqual(result(exported), result(native), 'the panel\'s search is vsr codesign\'s');
 

@@ -110,10 +110,13 @@ export class Classroom {
       reveal.textContent = 'Running it…';
       try {
         const key = await ex.key(this.lab);
-        const right = ex.choices ? Number(mine) === key.answer : Number(mine) === key.answer;
+        const right = Number(mine) === key.answer;
+        // A number guessed within a fifth of the answer (or 1) is close: said so, not marked right.
+        const close = !ex.choices && !right && Math.abs(Number(mine) - key.answer) <= Math.max(1, 0.2 * Math.abs(key.answer));
         const yours = ex.choices ? ex.choices[Number(mine)] : `${mine} ${ex.unit ?? ''}`.trim();
+        const [kind, mark] = right ? ['exercise-right', '✓ Right.'] : close ? ['exercise-close', '≈ Close.'] : ['exercise-wrong', '✗ Not this time.'];
         result.replaceChildren(
-          make(doc, 'p', right ? 'exercise-right' : 'exercise-wrong', `${right ? '✓ Right.' : '✗ Not this time.'} You said: ${yours}.`),
+          make(doc, 'p', kind, `${mark} You said: ${yours}.`),
           make(doc, 'p', 'exercise-key', `The page's answer: ${key.shown}.`),
           make(doc, 'p', 'exercise-why'));
         result.lastElementChild?.append(...withTerms(doc, key.why));
@@ -121,6 +124,7 @@ export class Classroom {
         result.hidden = false;
         box.dataset.state = 'revealed';
         box.dataset.right = String(right);
+        box.dataset.close = String(close);
         revealed();
         result.scrollIntoView({ block: 'nearest' });
       } catch (error) {
@@ -212,7 +216,8 @@ export class Classroom {
     const sheet = this.sheet('teacher-keys', 'Answer keys: predict, then try');
     sheet.dataset.testid = 'teacher-keys';
     sheet.dataset.state = 'computing';
-    sheet.append(make(doc, 'p', 'sheet-how', 'Each answer is computed now by this page, as a student\'s Reveal computes it: the numbers come from walks the page just ran or from the study\'s files.'));
+    sheet.append(make(doc, 'p', 'sheet-how', 'Each answer is computed now by this page, as a student\'s Reveal computes it: the numbers come from walks the page just ran or from the study\'s files.'),
+      make(doc, 'p', 'sheet-plan', lessonPlan()));
     const rows = CHAPTERS.map((chapter, i) => {
       const part = make(doc, 'section', 'sheet-task');
       const key = make(doc, 'p', 'sheet-key', 'computing…');
@@ -238,4 +243,17 @@ export class Classroom {
     }
     sheet.dataset.state = 'done';
   }
+}
+
+/**
+ * A plan for two lessons of about 45 minutes, one device for every two students (a suggestion,
+ * by chapter title, so that it follows the chapters wherever they move).
+ */
+function lessonPlan() {
+  const n = (/** @type {string} */ title) => CHAPTERS.findIndex((c) => c.title === title) + 1;
+  const part = (/** @type {[string, number][]} */ list) => list.map(([t, min]) => `${n(t)} (${t}, ${min} min)`).join(', ');
+  return 'A plan, if you want one: one device for every two students, about 45 minutes a lesson. First lesson: chapters '
+    + `${part([['A voxel and its colours', 5], ['A body', 5], ['One small brain in every voxel', 5], ['Evolution', 10], ['Freeze the attention', 5], ['Your turn', 10]])}. `
+    + `Second lesson: ${part([['Attention, read on one voxel', 10], ['Three brains, side by side', 10], ['Transplant a module', 10], ['Which body for this brain?', 10]])}. `
+    + 'The quick evolution, the fine-tuning and the body search each take a minute or two on a laptop: start them, then talk.';
 }

@@ -15,7 +15,7 @@ import { FromCodesign, ToCodesign } from './protocol.js';
 import { Gallery, paintLegend } from './gallery.js';
 import { BOX_WORDS, planSearch, QUICK } from './plan.js';
 import { count, decimal } from '../format.js';
-import { bestEntry, summaryWords } from './summary.js';
+import { bestEntry, exportName, summaryWords } from './summary.js';
 
 /** The status of a search that could not start (the message at the top says why). */
 const NOT_STARTED = 'The search did not start: the message at the top of the page says why.';
@@ -100,7 +100,7 @@ export class CodesignPanel {
     b.race.addEventListener('click', () => this.raceFirstLast());
     b.share.addEventListener('click', () => { if (this.chosen) this.load(this.chosen, true); });
     b.export.addEventListener('click', () => {
-      if (this.runFile) download(this.runFile, `codesign-${JSON.parse(this.runFile).config.brain ?? 'run'}.json`);
+      if (this.runFile) download(this.runFile, exportName(JSON.parse(this.runFile).config));
     });
     this.brain.addEventListener('change', () => this.update());
   }
@@ -249,8 +249,7 @@ export class CodesignPanel {
       if (!entry) { this.hooks.message(`that body could not be loaded: ${message ?? 'it is no longer in the gallery'}`); return; }
       this.chosen = cell;
       this.gallery.choose(cell);
-      const shown = this.lastRound?.gallery.find((g) => g.cell[0] === cell[0] && g.cell[1] === cell[1]);
-      await this.hooks.open(this.brainOf(entry, shown?.measurements));
+      await this.hooks.open(this.brainOf(entry, this.lastRound?.gallery.find((g) => g.cell.join() === cell.join())?.measurements));
       document.body.dataset.codesignLoaded = entry.shape;
       this.update();
       if (share) this.hooks.share();
@@ -262,8 +261,7 @@ export class CodesignPanel {
     return {
       controller: entry.controller, genome: new Float32Array(entry.genome), rows: entry.shape, origin: { left: 0, bottom: 0 },
       module: null, source: null, seconds: this.settings?.seconds ?? null,
-      trained: Number.isFinite(entry.fitness) && this.settings
-        ? { speed: entry.fitness, terrain: this.settings.terrain, walks } : null,
+      trained: Number.isFinite(entry.fitness) && this.settings ? { speed: entry.fitness, terrain: this.settings.terrain, walks } : null,
       label: `a body found by the body search (${this.what}): ${Number.isFinite(entry.fitness) ? `${decimal(entry.fitness)} m/s in training` : 'no speed'}`,
     };
   }

@@ -1,7 +1,7 @@
 // @ts-check
 /**
- * The body search's summary line, in words: its brain, the kinds of body found, the fastest,
- * and how long it has searched (or, once it ended, how long it took).
+ * The body search in words: its summary line (its brain, the kinds of body found, the fastest,
+ * and how long it has searched, or once it ended how long it took) and its exported file's name.
  */
 import { decimal } from '../format.js';
 
@@ -26,4 +26,12 @@ export function summaryWords(what, { record, evaluations, gallery, seconds }, en
     + (best?.fitness != null ? ` · fastest: ${decimal(best.fitness)} m/s in training (${best.measurements === 1 ? 'one walk so far' : `the mean of ${best.measurements} walks`}), `
       + `${best.voxels} voxels with ${best.feet} ${best.feet === 1 ? 'foot' : 'feet'}` : '')
     + ` · ${ended ? 'searched' : 'searching'} for ${decimal(seconds, 0)} s${rate}`;
+}
+
+/**
+ * The exported search's file name, in the panel's words: `body-search-frozen-seed1.json`.
+ * @param {{brain?: string, seed?: number}} config the run file's
+ */
+export function exportName(config) {
+  return `body-search-${config.brain ?? 'run'}${config.seed === undefined ? '' : `-seed${config.seed}`}.json`;
 }
