@@ -20,6 +20,8 @@ import { Classroom } from './classroom/classroom.js';
 import { Lab } from './classroom/lab.js';
 import { wireWords } from './classroom/simple-words.js';
 import { CodesignPanel } from './codesign/panel.js';
+import { SearchEstimate } from './codesign/estimate.js';
+import { BOX } from './codesign/plan.js';
 import { ModuleList } from './modules.js';
 import { Race } from './race.js';
 import { Robot } from './robot.js';
@@ -113,6 +115,10 @@ const bodySearch = new CodesignPanel(document, {
   share: () => keeper.share(),
   message: showMessage,
 });
+// The body search's estimate: its start body (the drawing stands for the module's own, drawn when it was opened).
+new SearchEstimate(el('codesign-estimate'), () => ({ evaluations: Number(el('codesign-budget').value), seconds: Number(el('codesign-seconds').value),
+  rows: el('codesign-from').value === 'box' ? BOX : drawing.rows(), workers: Number(runs.inputs.workers.value) || 1, running: bodySearch.running }),
+() => estimate.currentPace());
 
 function wire() {
   wireDrawControls(document, defaults, drawing, editor, {

@@ -10,7 +10,7 @@ import { size } from '../format.js';
 /** The quick body search: finishes in about a minute in Chromium on 2 workers (docs/playground.md). */
 export const QUICK = Object.freeze({ budget: 1000, seconds: 10, batch: 20 });
 /** The seed body, a box of 3 × 3 voxels, and its name in words. */
-const BOX = '111-111-111';
+export const BOX = '111-111-111';
 export const BOX_WORDS = `a ${size(3, 3)} box`;
 
 /**
