@@ -106,7 +106,10 @@ const bodySearch = new CodesignPanel(document, {
   module: () => modules.selected(),
   controller: () => controllerSelect.value,
   run: () => ({ seed: runs.inputs.seed.value, terrain: runs.inputs.terrain.value, workers: runs.inputs.workers.value }),
-  open: (brain) => robot.openBrain(() => brain),
+  open: async (brain) => { // the body found walks above: brought into view to be watched
+    await robot.openBrain(() => brain);
+    el('scene').scrollIntoView({ block: 'nearest', behavior: 'instant' });
+  },
   race: (racers) => {
     race.clear();
     for (const racer of racers) race.add(racer);
