@@ -118,10 +118,17 @@ const bodySearch = new CodesignPanel(document, {
   share: () => keeper.share(),
   message: showMessage,
 });
+/** The body search's brain, in words, before it starts. */
+function searchBrain() {
+  const kind = el('codesign-brain').value;
+  if (kind === 'scratch') return `a new ${controllerSelect.value} brain, evolved from scratch with the body`;
+  const option = modules.select.selectedOptions[0];
+  return option?.value ? `the module ${option.text.replace(/ · .*$/, '')}, ${kind === 'frozen' ? 'its attention frozen' : 'fine-tuned'}` : 'no module chosen yet (under “3 · Give it a brain”)';
+}
 // The body search's estimate: its start body (the drawing stands for the module's own, drawn when it was opened).
 new SearchEstimate(el('codesign-estimate'), () => ({ evaluations: Number(el('codesign-budget').value), seconds: Number(el('codesign-seconds').value),
-  rows: el('codesign-from').value === 'box' ? BOX : drawing.rows(), workers: Number(runs.inputs.workers.value) || 1, running: bodySearch.running }),
-() => estimate.currentPace());
+  rows: el('codesign-from').value === 'box' ? BOX : drawing.rows(), workers: Number(runs.inputs.workers.value) || 1, running: bodySearch.running,
+  brain: searchBrain() }), () => estimate.currentPace());
 
 function wire() {
   wireDrawControls(document, defaults, drawing, editor, {
