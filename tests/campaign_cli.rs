@@ -129,7 +129,9 @@ fn plan_run_merge_report_and_resume() {
         "{lost}"
     );
     assert!(
-        lost.contains("left: 12 evaluations, about") && lost.contains("hours on 1 cores"),
+        lost.contains("left: 12 evaluations, about")
+            && lost.contains("finished runs of its controller)")
+            && lost.contains("hours on 1 cores"),
         "the source run's 12 evaluations (4 + 2 x 4: the budget 8 passed): {lost}"
     );
     assert_eq!(

@@ -2,13 +2,18 @@
 //! runs nothing): its evolutionary runs finished, in flight (a checkpoint, with the
 //! evaluations it has reached) and not started; its other jobs done; and an estimate of the
 //! core-hours left, from the generation times of the runs finished last (the median seconds
-//! per evaluation on one thread: a run paused or slowed for a while moves it little).
+//! per evaluation on one thread: a run paused or slowed for a while moves it little). The time
+//! is taken per voxel and simulated second, and per controller (MLP-Comm's controller and
+//! sensors run every step, the others' every 20), so a body or a controller not run yet is
+//! estimated from the runs most like it.
 
 use std::fs;
 use std::path::Path;
 
+use vsr::controllers::ControllerKind;
 use vsr::experiment::planned_evaluations;
-use vsr::study::campaign::{Job, Task};
+use vsr::simulation::Shape;
+use vsr::study::campaign::{Job, RunTask, Task};
 use vsr::study::statistics;
 use vsr::{Error, Result};
 
@@ -90,6 +95,13 @@ fn seconds_per_evaluation(out: &Path) -> Option<f64> {
     median(per)
 }
 
+/// A run's work per evaluation, in voxel-seconds: its body's voxels times its episode's
+/// seconds (1 voxel for a shape that does not parse: its run would fail anyway).
+fn work(run: &RunTask) -> f64 {
+    let voxels = Shape::parse(&run.shape).map_or(1, |s| s.voxel_count());
+    voxels as f64 * run.seconds
+}
+
 /// The median, if there are values.
 fn median(v: Vec<f64>) -> Option<f64> {
     (!v.is_empty()).then(|| statistics::median(&v))
@@ -98,7 +110,10 @@ fn median(v: Vec<f64>) -> Option<f64> {
 /// The status text.
 fn status(jobs: &[Job], cores: usize) -> String {
     let (mut finished, mut flying, mut waiting) = (0, Vec::new(), 0);
-    let (mut left, mut rates) = (0u64, Vec::new());
+    // Evaluations left, and per run left: its controller, evaluations left and work.
+    let (mut left, mut todo) = (0u64, Vec::new());
+    // Per finished run: when written, its controller, seconds per evaluation per voxel-second.
+    let mut rates = Vec::new();
     // (done, planned) of the body searches and of the assessments.
     let (mut searches, mut assessments) = ((0, 0), (0, 0));
     for job in jobs {
@@ -120,15 +135,24 @@ fn status(jobs: &[Job], cores: usize) -> String {
             RunState::Finished => {
                 finished += 1;
                 let written = fs::metadata(&job.out).and_then(|m| m.modified()).ok();
-                rates.extend(seconds_per_evaluation(&job.out).map(|r| (written, r)));
+                rates.extend(
+                    seconds_per_evaluation(&job.out)
+                        .map(|r| (written, run.controller, r / work(run))),
+                );
             }
             RunState::InFlight { evaluations } => {
                 left += budget.saturating_sub(evaluations);
+                todo.push((
+                    run.controller,
+                    budget.saturating_sub(evaluations),
+                    work(run),
+                ));
                 flying.push((job.out.clone(), evaluations, budget));
             }
             RunState::NotStarted => {
                 waiting += 1;
                 left += budget;
+                todo.push((run.controller, budget, work(run)));
             }
         }
     }
@@ -158,28 +182,49 @@ fn status(jobs: &[Job], cores: usize) -> String {
     if runs == 0 {
         return text;
     }
-    // The runs finished last: the machine and the code as they are now.
-    rates.sort_by_key(|&(written, _)| written);
-    let recent: Vec<f64> = rates.iter().rev().take(RECENT).map(|&(_, r)| r).collect();
-    match median(recent) {
-        _ if left == 0 => text += "every evolutionary run is finished\n",
-        Some(s) => {
-            let hours = left as f64 * s / 3600.0;
-            text += &format!(
-                "left: {left} evaluations, about {hours:.1} core-hours at {:.1} ms per evaluation \
-                 on one thread (the median of the last {} finished runs); about {:.1} hours on \
-                 {cores} cores\n",
-                s * 1e3,
-                rates.len().min(RECENT),
-                hours / cores as f64
-            );
-        }
-        None => {
-            text += &format!(
-                "left: {left} evaluations; no finished one-thread run yet to estimate their \
-                 time from\n"
-            )
-        }
+    if left == 0 {
+        return text + "every evolutionary run is finished\n";
     }
+    // The runs finished last: the machine and the code as they are now.
+    rates.sort_by_key(|&(written, _, _)| written);
+    let recent = |kind: Option<ControllerKind>| {
+        let of_kind = rates
+            .iter()
+            .rev()
+            .filter(|r| kind.map_or(true, |k| r.1 == k));
+        median(of_kind.take(RECENT).map(|r| r.2).collect())
+    };
+    let Some(overall) = recent(None) else {
+        return text
+            + &format!(
+                "left: {left} evaluations; no finished one-thread run yet to estimate their time from\n"
+            );
+    };
+    let (mut seconds, mut borrowed) = (0.0, Vec::new());
+    for &(kind, evaluations, work) in &todo {
+        let unit = recent(Some(kind)).unwrap_or_else(|| {
+            if !borrowed.contains(&kind) {
+                borrowed.push(kind);
+            }
+            overall
+        });
+        seconds += evaluations as f64 * unit * work;
+    }
+    let hours = seconds / 3600.0;
+    let borrowed = if borrowed.is_empty() {
+        String::new()
+    } else {
+        let names: Vec<&str> = borrowed.iter().map(|k| k.name()).collect();
+        format!(
+            "; {} not finished yet, so from every controller's",
+            names.join(", ")
+        )
+    };
+    text += &format!(
+        "left: {left} evaluations, about {hours:.1} core-hours on one thread (each run at the \
+         median time per evaluation, voxel and simulated second of the last {RECENT} finished runs \
+         of its controller{borrowed}); about {:.1} hours on {cores} cores\n",
+        hours / cores as f64
+    );
     text
 }
