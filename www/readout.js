@@ -41,6 +41,8 @@ export class Readout {
     this.origin = NaN;
     /** Whether the viewer holds a walk at its episode's end (the words after it say so). */
     this.holdsAtEnd = false;
+    /** Whether it holds this walk there now. */
+    this.held = false;
   }
 
   /**
@@ -90,7 +92,7 @@ export class Readout {
     const x = this.episode.edited && Number.isFinite(this.origin) ? frame.centreX - this.origin : frame.distance;
     const ended = Number.isFinite(frame.episodeSpeed);
     // Past the episode the clock runs on: said beside it, so "275 s" never stands against "10-s episode".
-    show(this.fields.time, frame.time, ended ? `${decimal(frame.time)} s (its ${seconds}-s episode is over; ${this.holdsAtEnd ? 'Play walks on, Restart walks it again' : 'it walks on'})`
+    show(this.fields.time, frame.time, ended ? `${decimal(frame.time)} s (its ${seconds}-s episode is over; ${this.held ? 'Play walks on, Restart walks it again' : this.holdsAtEnd ? 'walking on past it; Restart walks it again' : 'it walks on'})`
       : `${decimal(frame.time)} s`);
     show(this.fields.x, x, `${decimal(x)} m`);
     const speed = ended ? frame.episodeSpeed : frame.velocity;

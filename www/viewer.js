@@ -61,7 +61,7 @@ export class Viewer {
 
   wire() {
     const { buttons } = this;
-    buttons.play.addEventListener('click', () => { this.heldAtEnd = false; this.worker.postMessage({ type: ToWorker.START }); });
+    buttons.play.addEventListener('click', () => { this.held(false); this.worker.postMessage({ type: ToWorker.START }); });
     buttons.hold.addEventListener('click', () => this.worker.postMessage({ type: ToWorker.PAUSE }));
     buttons.restart.addEventListener('click', () => { this.worker.postMessage({ type: ToWorker.RESET }); this.goOn(); });
     this.speed.addEventListener('change', () => this.worker.postMessage({ type: ToWorker.SPEED, speed: Number(this.speed.value) }));
@@ -117,8 +117,14 @@ export class Viewer {
   /** Walks on if the viewer held the walk at its episode's end. */
   goOn() {
     if (!this.heldAtEnd) return;
-    this.heldAtEnd = false;
+    this.held(false);
     this.worker.postMessage({ type: ToWorker.START });
+  }
+
+  /** Whether the viewer holds the walk at its episode's end now (the readout says so). @param {boolean} on */
+  held(on) {
+    this.heldAtEnd = on;
+    this.readout.held = on;
   }
 
   /** The episode's length from now on, without restarting the walk. @param {number} seconds */
@@ -145,7 +151,7 @@ export class Viewer {
       case FromWorker.FRAME:
         if (frameIsConsistent(msg)) {
           if (this.holdsAtEnd && this.running && !this.heldAtEnd && !this.readout.ended && Number.isFinite(msg.episodeSpeed)) {
-            this.heldAtEnd = true;
+            this.held(true);
             this.worker.postMessage({ type: ToWorker.PAUSE });
           }
           this.renderer.setFrame(msg); this.readout.update(msg); this.attention.setFrame(msg);

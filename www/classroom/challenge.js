@@ -108,8 +108,8 @@ export class Challenge {
   /** The rules in words. @param {Rules} r */
   words(r) {
     const body = r.body ? `the body ${r.body}` : r.voxels ? `any body of at most ${r.voxels} voxels` : 'any body';
-    return `Challenge: ${body}; speed measured over ${r.seconds} s on ${r.terrain}; evolve with ${Number.isFinite(Number(r.budget)) ? count(Number(r.budget)) : r.budget} evaluations, seed ${r.seed}. `
-      + `The teacher's page walks your robot again for ${r.seconds} s on ${r.terrain}, so its speed there may differ from the one under your robot. `
+    return `Challenge: ${body}; speed measured over ${r.seconds} s on ${r.terrain}; evolve with ${Number.isFinite(Number(r.budget)) ? count(Number(r.budget)) : r.budget} evaluations, seed ${r.seed} (the number that fixes evolution's random draws). `
+      + `Under your robot the speed is over the page's episode; your teacher measures it again over ${r.seconds} s on ${r.terrain}, so it may differ. `
       + 'When your robot walks, press “Share link” and send the link to your teacher.';
   }
 

@@ -253,7 +253,7 @@ function lessonPlan() {
   const n = (/** @type {string} */ title) => CHAPTERS.findIndex((c) => c.title === title) + 1;
   const part = (/** @type {[string, number][]} */ list) => list.map(([t, min]) => `${n(t)} (${t}, ${min} min)`).join(', ');
   return 'A plan, if you want one: one device for every two students, about 45 minutes a lesson. First lesson: chapters '
-    + `${part([['A voxel and its colours', 5], ['A body', 5], ['One small brain in every voxel', 5], ['Evolution', 10], ['Freeze the attention', 5], ['Your turn', 10]])}. `
-    + `Second lesson: ${part([['Attention, read on one voxel', 10], ['Three brains, side by side', 10], ['Transplant a module', 10], ['Which body for this brain?', 10]])}. `
+    + `${part([['A voxel and its colours', 5], ['A body', 5], ['One small brain in every voxel', 5], ['Attention, read on one voxel', 10], ['Evolution', 10], ['Three brains, side by side', 10]])}. `
+    + `Second lesson: ${part([['Freeze the attention', 5], ['Transplant a module', 10], ['Which body for this brain?', 10], ['Your turn', 15]])}. `
     + 'The quick evolution, the fine-tuning and the body search each take a minute or two on a laptop: start them, then talk.';
 }

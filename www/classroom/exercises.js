@@ -91,13 +91,13 @@ export const TASKS = [
   {
     chapter: BODY,
     ask: 'Erase the third column of the biped, so that it falls into two pieces. What will the page do?',
-    choices: ['both pieces walk, each on its own', 'the bigger piece walks, the other one is dropped', 'the cut drawing does not walk: the last whole robot walks on until the drawing is one piece again'],
+    choices: ['both pieces walk, each on its own', 'the bigger piece walks, the other one is dropped', 'neither piece walks: the robot before the cut walks on'],
     try: 'Erase that column (drag with the right mouse button, or press Erase first) and watch.',
     async key(lab) {
       const cut = erase(/** @type {string} */ (setup(BODY).rows), 2);
       const check = await lab.check(cut);
       const answer = check.ok ? 0 : 2;
-      return { answer, shown: answer === 2 ? 'the cut drawing does not walk: the last whole robot walks on until the drawing is one piece again' : 'it walks',
+      return { answer, shown: answer === 2 ? 'neither piece walks: the robot before the cut walks on until the drawing is one piece again' : 'it walks',
         why: `The page's check of the cut drawing (${cut}) finds ${check.pieces.length} pieces${check.ok ? '' : ` and says: “${check.message}”`}. `
           + 'Voxels only push and pull on the voxels they touch, so a piece on its own would be a second robot.' };
     },
@@ -175,8 +175,8 @@ export const TASKS = [
       const win = speeds.reduce((a, b) => (b.speed > a.speed ? b : a));
       const answer = ['attention', 'mlp-comm', 'mlp'].indexOf(win.controller);
       return { answer, shown: win.controller,
-        why: `The page just ran the race's ${seconds} s on ${setup(THREE).terrain}: ${speeds.map((s) => `${s.controller} ${ms(s.speed)}`).join(', ')} `
-          + '(the speeds the race shows at its finish). One race is one terrain and one run of each brain: the figure below compares every run on ten terrains.' };
+        why: `The page has just run this race to its end on its own (${seconds} s on ${setup(THREE).terrain}): ${speeds.map((s) => `${s.controller} ${ms(s.speed)}`).join(', ')}; `
+          + 'watch it below: its finish shows these speeds. One race is one terrain and one run of each brain: the figure below compares every run on ten terrains.' };
     },
   },
   {
@@ -234,7 +234,7 @@ export const TASKS = [
   },
   {
     chapter: YOURS,
-    ask: `This table (${voxels(/** @type {string} */ (setup(YOURS).rows))} voxels) has no brain: the phase gait drives it. With the same gait on this same hilly ground, will it be faster or slower than the biped of ten voxels?`,
+    ask: `This table (${voxels(/** @type {string} */ (setup(YOURS).rows))} voxels) has no brain: the phase gait drives it. With the same gait on this same hilly ground, will it be faster or slower than the biped of ten voxels (chapter 1's robot)?`,
     choices: ['faster', 'slower'],
     try: 'Watch its speed under the robot; then draw your own and compare.',
     async key(lab) {

@@ -103,11 +103,11 @@ export const CHAPTERS = [
       'Three kinds of brain on the same body: attention (the paper\'s); mlp, the same small network without attention; and mlp-comm, a network whose voxels do send messages to their neighbours.',
       'Each was evolved in our study with 30,000 evaluations. Below, they race on one terrain for 30 s, all started together.',
     ],
-    task: 'Watch the race under the playground to the end.',
+    task: 'Answer first: the race under “Side by side” starts when you reveal your answer. Then watch it to the end.',
     notice: 'The paper found attention the fastest, even against voxels that talk. Our study, with ten runs of each brain, finds attention faster than mlp, on this biped and on the comb, but cannot separate attention from mlp-comm: the voxels that talk keep up. '
       + 'One race is one terrain and one run of each: the figure is the fair comparison, every run of each brain on ten terrains it never trained on (it shows our first five runs of each).',
     setup: { rows: BIPED, brain: { module: ATTENTION, on: 'own' }, terrain: VIEW,
-      race: [ATTENTION, 'pretrained/biped-4x3-mlp-comm.json', 'pretrained/biped-4x3-mlp.json'] },
+      race: ['pretrained/biped-4x3-mlp.json', 'pretrained/biped-4x3-mlp-comm.json', ATTENTION] }, // not in the order they finish
     target: '#race-panel',
     figure: 'validation-biped',
   },
@@ -128,10 +128,10 @@ export const CHAPTERS = [
     text: [
       'A module is a brain evolved before, kept in a file. Here the small biped\'s brain is transplanted onto a larger biped of 18 voxels: its attention (32 numbers, the same for any body) is kept.',
       'Its last step, the four weights of each voxel\'s place, belonged to the old body, so they are drawn at random for the new one. Walking at once with them, before any training, is a one-shot transplant.',
-      'Fine-tuning evolves only those weights and keeps the attention. In the paper (its Fig. 7) and our study it gets fast sooner than a brain evolved from scratch: in our study it was ahead after 2,500 evaluations on all four bodies we tried, and by the end of 30,000 the two were level (no difference detected).',
+      'Fine-tuning evolves only those weights and keeps the attention. In the paper (its Fig. 7) and our study it gets fast sooner than a brain evolved from scratch: in our study it was ahead after 2,500 evaluations on all four bodies we tried, and by the end of their budgets (10,000 evaluations of fine-tuning, 30,000 from scratch) the two were level (no difference detected).',
     ],
-    task: 'See how slowly it walks (the line under the robot gives its one-shot speed), then press Fine-tune: a run from scratch with the same budget follows by itself.',
-    notice: 'One-shot, the robot hardly moves: a brain is made for its body. Each run takes a minute or so: the figures above the chart say which one is running and how long it has left. The chart draws fine-tuning, then from scratch as a dashed line: compare them over the first few hundred evaluations, where fine-tuning starts from a brain that already works. By the end of this short run either may lead: one run is one sample; the study\'s figure has five runs of each.',
+    task: 'Read its one-shot speed on the line under the robot, then press Fine-tune: a run from scratch with the same budget follows by itself.',
+    notice: 'One-shot, the robot hardly moves: a brain is made for its body. Each run takes a minute or so: the numbers above the chart say which one is running and how long it has left. The chart draws fine-tuning, then from scratch as a dashed line: compare them over the first few hundred evaluations, where fine-tuning starts from a brain that already works. By the end of this short run either may lead: one run is one sample; the study\'s figure has five runs of each.',
     setup: { rows: BIPED_LARGE, brain: { module: ATTENTION, on: 'drawn' }, terrain: VIEW, run: QUICK, compare: true },
     target: '#scene, #run-finetune',
     figure: 'finetune-biped-large',
@@ -153,10 +153,10 @@ export const CHAPTERS = [
   {
     title: 'Your turn',
     text: [
-      'This table of 8 voxels walks on the phase gait, with no brain. Now draw a robot of your own: a long worm, a taller table, a creature with three legs.',
+      'This table of 8 voxels is driven by the phase gait, with no brain. Now draw a robot of your own: a long worm, a taller table, a creature with three legs.',
       'Give it a brain: evolve one, or choose a module under “3 · Give it a brain”, load it onto your robot and fine-tune it. Every figure of the study is under “The study”, further down the page, each with its robots to watch.',
     ],
-    task: 'When it walks, press “Share link” and send the link: it opens your robot, its brain and its settings.',
+    task: 'When your own robot walks, press “Share link” and send the link: it opens your robot, its brain and its settings.',
     notice: 'This tour has a link for every chapter too (the address bar shows it), to send one chapter to a class.',
     setup: { rows: '11111-10101', brain: null, terrain: VIEW, run: QUICK, controller: 'attention' },
     target: '#share',
