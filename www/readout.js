@@ -16,8 +16,12 @@ const VELOCITY_WINDOW_S = 1;
 const SHOW_INTERVAL_MS = 200;
 
 export class Readout {
-  /** @param {Document} doc */
-  constructor(doc) {
+  /**
+   * @param {Document} doc
+   * @param {{ atEnd: boolean, now: boolean }} hold the viewer's hold at the episode's end (whether
+   *   a walk holds there, and whether it holds now): read here for the words after the clock
+   */
+  constructor(doc, hold) {
     this.fields = {
       time: field(doc, 'sim-time'),
       x: field(doc, 'robot-x'),
@@ -39,10 +43,7 @@ export class Readout {
      * NaN until then. Edits of the walking robot keep it, so the distance runs on across them.
      */
     this.origin = NaN;
-    /** Whether the viewer holds a walk at its episode's end (the words after it say so). */
-    this.holdsAtEnd = false;
-    /** Whether it holds this walk there now. */
-    this.held = false;
+    this.hold = hold;
   }
 
   /**
@@ -92,7 +93,7 @@ export class Readout {
     const x = this.episode.edited && Number.isFinite(this.origin) ? frame.centreX - this.origin : frame.distance;
     const ended = Number.isFinite(frame.episodeSpeed);
     // Past the episode the clock runs on: said beside it, so "275 s" never stands against "10-s episode".
-    show(this.fields.time, frame.time, ended ? `${decimal(frame.time)} s (its ${seconds}-s episode is over; ${this.held ? 'Play walks on, Restart walks it again' : this.holdsAtEnd ? 'walking on past it; Restart walks it again' : 'it walks on'})`
+    show(this.fields.time, frame.time, ended ? `${decimal(frame.time)} s (its ${seconds}-s episode is over; ${this.hold.now ? 'Play walks on, Restart walks it again' : this.hold.atEnd ? 'walking on past it; Restart walks it again' : 'it walks on'})`
       : `${decimal(frame.time)} s`);
     show(this.fields.x, x, `${decimal(x)} m`);
     const speed = ended ? frame.episodeSpeed : frame.velocity;

@@ -31,7 +31,13 @@ export class Viewer {
     this.hooks = hooks;
     this.canvas = /** @type {HTMLCanvasElement} */ (el('scene'));
     this.renderer = new Renderer(this.canvas);
-    this.readout = new Readout(doc);
+    /**
+     * The hold at an episode's end: whether every walk holds there ({@link Viewer#holdAtEnd}),
+     * and whether this walk is held there now (a new walk, Play or Restart goes on). The readout
+     * reads it for its words.
+     */
+    this.hold = { atEnd: false, now: false };
+    this.readout = new Readout(doc, this.hold);
     this.attention = new AttentionPanel(el('attention-panel'), el('attention'));
     this.reader = new AttentionReader(doc, (voxel) => { this.renderer.highlight = voxel; this.attention.selected = voxel; this.attention.dirty = true; });
     this.freeze = new FreezeControl(doc, (frozen) => this.worker.postMessage({ type: ToWorker.FREEZE, frozen }));
@@ -45,10 +51,6 @@ export class Viewer {
     /** The episode asked for last (kept across a worker restart). @type {import('./protocol.js').EpisodeParams | null} */
     this.wanted = null;
     this.running = true;
-    /** Whether a walk holds when its episode ends ({@link Viewer#holdAtEnd}). */
-    this.holdsAtEnd = false;
-    /** Whether the viewer held this walk at its episode's end (a new walk or Restart goes on). */
-    this.heldAtEnd = false;
     this.restarts = 0;
     this.worker = this.startWorker();
     this.wire();
@@ -109,22 +111,20 @@ export class Viewer {
    * @param {boolean} on
    */
   holdAtEnd(on) {
-    this.holdsAtEnd = on;
-    this.readout.holdsAtEnd = on;
+    this.hold.atEnd = on;
     if (!on) this.goOn();
   }
 
   /** Walks on if the viewer held the walk at its episode's end. */
   goOn() {
-    if (!this.heldAtEnd) return;
+    if (!this.hold.now) return;
     this.held(false);
     this.worker.postMessage({ type: ToWorker.START });
   }
 
   /** Whether the viewer holds the walk at its episode's end now (the readout says so). @param {boolean} on */
   held(on) {
-    this.heldAtEnd = on;
-    this.readout.held = on;
+    this.hold.now = on;
   }
 
   /** The episode's length from now on, without restarting the walk. @param {number} seconds */
@@ -150,7 +150,7 @@ export class Viewer {
         break;
       case FromWorker.FRAME:
         if (frameIsConsistent(msg)) {
-          if (this.holdsAtEnd && this.running && !this.heldAtEnd && !this.readout.ended && Number.isFinite(msg.episodeSpeed)) {
+          if (this.hold.atEnd && this.running && !this.hold.now && !this.readout.ended && Number.isFinite(msg.episodeSpeed)) {
             this.held(true);
             this.worker.postMessage({ type: ToWorker.PAUSE });
           }

@@ -96,6 +96,22 @@ async function checkSetup(page, n) {
     assert.deepEqual(raced, setup.race.map((m) => best(m).controller), `chapter ${n}: the race`);
   }
   assert.ok(await page.locator('.tour-target').count() >= 1, `chapter ${n}: the control it asks about is outlined`);
+  // In view, above the tour's sheet on a phone: the control to use (the last outlined) whole, once the
+  // page has settled (the tour points again a second after the chapter opens).
+  const inView = () => {
+    const sheet = /** @type {HTMLElement} */ (document.getElementById('tour-box')).getBoundingClientRect();
+    const bottom = sheet.top > innerHeight / 3 ? sheet.top : innerHeight;
+    const rects = [...document.querySelectorAll('.tour-target')].map((el) => el.getBoundingClientRect());
+    const last = rects[rects.length - 1];
+    return { bottom, tops: rects.map((r) => Math.round(r.top)), ends: rects.map((r) => Math.round(r.bottom)),
+      ok: last.top >= -1 && (last.bottom <= bottom || last.top < bottom - 100) };
+  };
+  let seen = await page.evaluate(inView);
+  for (let waited = 0; !seen.ok && waited < 3000; waited += 100) {
+    await page.waitForTimeout(100);
+    seen = await page.evaluate(inView);
+  }
+  assert.ok(seen.ok, `chapter ${n}: the control it asks about is in view (${JSON.stringify(seen)})`);
 }
 
 for (const [width, height] of [[1400, 900], [420, 860]]) {

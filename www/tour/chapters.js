@@ -108,7 +108,7 @@ export const CHAPTERS = [
       + 'One race is one terrain and one run of each: the figure is the fair comparison, every run of each brain on ten terrains it never trained on (it shows our first five runs of each).',
     setup: { rows: BIPED, brain: { module: ATTENTION, on: 'own' }, terrain: VIEW,
       race: ['pretrained/biped-4x3-mlp.json', 'pretrained/biped-4x3-mlp-comm.json', ATTENTION] }, // not in the order they finish
-    target: '#race-panel',
+    target: '#race-status, #race-lanes', // the lanes the class watches, above the sheet on a phone
     figure: 'validation-biped',
   },
   {

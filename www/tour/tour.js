@@ -15,6 +15,8 @@ import { stage } from './stage.js';
 
 /** How long after a chapter opens its controls are brought into view again, once the page has settled (ms). */
 const SETTLE_MS = 1000;
+/** Room kept under a control the tour points to (px): the page settles, and lines above it grow. */
+const SLACK_PX = 48;
 /** Where the box is a sheet at the bottom of the screen (tour.css says the same width). */
 const SHEET_MEDIA = '(max-width: 860px)';
 
@@ -193,7 +195,9 @@ export class Tour {
 
   /**
    * Outlines the controls a chapter asks about (a folded <details> among them is opened) and
-   * brings them into view: all of them when they fit on the screen together, else the first.
+   * brings them into view (above the sheet on a phone): all of them when they fit on the screen
+   * together, else the last (the control to use) with as much of the others above it as fits, or
+   * the first if it stands alone.
    * @param {string} selector
    */
   point(selector) {
@@ -211,15 +215,16 @@ export class Tour {
     const top = Math.min(...rects.map((r) => r.top));
     const end = Math.max(...rects.map((r) => r.bottom));
     const margin = 12;
-    if (top >= 0 && end <= bottom) return; // all in view
-    if (end - top <= bottom - 2 * margin) {
-      scrollBy({ top: top >= 0 ? end - bottom + margin : top - margin, behavior: 'instant' });
+    // All in view, and not at the very bottom, where a line the page adds above can push it under.
+    if (top >= 0 && end <= bottom - SLACK_PX) return;
+    if (end - top <= bottom - 2 * margin) { // they fit: in the middle of what shows
+      scrollBy({ top: (top + end) / 2 - bottom / 2, behavior: 'instant' });
       return;
     }
     const last = rects[rects.length - 1];
-    const shift = last.bottom - bottom + margin; // the control to use at the bottom, if the first stays half in view
-    if (rects.length > 1 && rects[0].bottom - shift > rects[0].height / 2) {
-      scrollBy({ top: shift, behavior: 'instant' });
+    if (rects.length > 1 && last.height <= bottom - SLACK_PX - margin) {
+      // The control to use (the last) near the bottom; above it, as much of the others as fits.
+      scrollBy({ top: last.bottom - bottom + SLACK_PX, behavior: 'instant' });
       return;
     }
     const rect = rects[0];
