@@ -9,7 +9,8 @@
  *
  * The latest state wins: a link in the address bar is read once. Once opened (or refused) it
  * leaves the address bar, and Share's link leaves it at the next change, so that a reload
- * shows the kept state, with every later edit, never an older link.
+ * shows the kept state, with every later edit, never an older link; the link shown beside Share
+ * goes too.
  */
 import { plain } from './message.js';
 import { decodeState, encodeState } from './share.js';
@@ -48,6 +49,12 @@ export class Keeper {
       const problem = keep(state);
       if (problem) this.hooks.say(problem);
       else if (location.hash.length > 1 && location.hash.slice(1) !== state) dropLink();
+      // A shown link that no longer opens this robot goes: nobody copies an older robot by mistake.
+      if (!this.linkField.hidden && !this.linkField.value.endsWith(`#${state}`)) {
+        this.linkField.hidden = true;
+        this.linkField.value = '';
+        delete this.linkField.dataset.value;
+      }
     }, KEEP_DELAY_MS);
   }
 

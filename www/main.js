@@ -56,6 +56,8 @@ const controllerSelect = /** @type {HTMLSelectElement} */ (el('controller'));
 let robot;
 /** @type {RunFollower} */
 let follower;
+/** @type {Challenge | null} a challenge link's rules, checked as the student draws (made below) */
+let challenge = null;
 const editor = new Editor(el('editor'), drawing, {
   onPaint: () => robot.updateCheck(),
   onStroke: () => robot.bodyChanged(),
@@ -99,7 +101,8 @@ const runs = new RunPanel(document, defaults, {
 const estimate = new RunEstimate(/** @type {HTMLElement} */ (document.getElementById('run-estimate')), runs.form, () => runs.pace, () => drawing.rows(), defaults.quick,
   () => runs.compare.checked);
 runs.compare.addEventListener('change', () => estimate.refresh());
-robot = new Robot(document, { defaults, drawing, editor, viewer, messages, speedNote, runs, keep: () => keeper.schedule() });
+robot = new Robot(document, { defaults, drawing, editor, viewer, messages, speedNote, runs,
+  keep: () => { keeper.schedule(); challenge?.watch(drawing.rows()); } });
 follower = new RunFollower(robot, modules, () => runs.mode === 'finetune');
 const bodySearch = new CodesignPanel(document, {
   body: () => ({ rows: drawing.rows(), ok: robot.check.ok, message: robot.check.message }),
@@ -107,7 +110,11 @@ const bodySearch = new CodesignPanel(document, {
   controller: () => controllerSelect.value,
   run: () => ({ seed: runs.inputs.seed.value, terrain: runs.inputs.terrain.value, workers: runs.inputs.workers.value }),
   open: async (brain) => { // the body found walks above: brought into view to be watched
+    const drawn = drawing.rows();
     await robot.openBrain(() => brain);
+    if (drawn !== brain.rows && drawing.rows() === brain.rows) {
+      showMessage('The body you clicked now stands in “1 · Draw” in place of your drawing: Undo there brings your drawing back.', 'note');
+    }
     el('scene').scrollIntoView({ block: 'nearest', behavior: 'instant' });
   },
   race: (racers) => {
@@ -123,7 +130,7 @@ function searchBrain() {
   const kind = el('codesign-brain').value;
   if (kind === 'scratch') return `a new ${controllerSelect.value} brain, evolved from scratch with the body`;
   const option = modules.select.selectedOptions[0];
-  return option?.value ? `the module ${option.text.replace(/ · .*$/, '')}, ${kind === 'frozen' ? 'its attention frozen' : 'fine-tuned'}` : 'no module chosen yet (under “3 · Give it a brain”)';
+  return option?.value ? `the module ${option.text.replace(/ · .*$/, '')}, ${kind === 'frozen' ? 'its attention kept' : 'every gene evolving from it'}` : 'no module chosen yet (under “3 · Give it a brain”)';
 }
 // The body search's estimate: its start body (the drawing stands for the module's own, drawn when it was opened).
 new SearchEstimate(el('codesign-estimate'), () => ({ evaluations: Number(el('codesign-budget').value), seconds: Number(el('codesign-seconds').value),
@@ -214,7 +221,7 @@ study.loaded.then(() => modules.setStudyRuns(study.runs));
 const tour = new Tour(document, playground, study, new Classroom(document, lab));
 fillResults(el('results-plain-body'), (id) => study.show(id));
 wireWords(document);
-const challenge = new Challenge(document, lab, {
+challenge = new Challenge(document, lab, {
   defaults, rows: () => drawing.rows(), race, message: showMessage, pin: (text) => messages.show(text, 'pinned'),
   setView: (terrain) => { viewer.terrain.value = terrain; viewer.terrain.dispatchEvent(new Event('change')); },
   setRun: (values) => { runs.setValues(values); keeper.schedule(); },

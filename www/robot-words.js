@@ -44,7 +44,7 @@ export function walkingWords(brain, walkingRows) {
 export function driverWords(brain, check, walkingRows) {
   const drives = brain ? `Driven by: ${brain.label} (${brain.controller}, ${brain.genome.length} genes).`
     : 'Driven by: the phase gait (no brain yet: evolve one, or load a module).';
-  const drawn = check.voxels > 0 && !check.ok && walkingRows
-    ? ` Your drawing (${check.voxels} voxels) is not a robot yet, so ${walkingWords(brain, walkingRows)}.` : '';
+  const yours = check.voxels > 0 ? `Your drawing (${check.voxels} voxels) is not a robot yet` : 'Your drawing is empty';
+  const drawn = !check.ok && walkingRows ? ` ${yours}, so ${walkingWords(brain, walkingRows)}.` : '';
   return drives + drawn;
 }

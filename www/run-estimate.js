@@ -64,6 +64,7 @@ export class RunEstimate {
     /** The quick budget made lighter for this computer, and the core's (null: not lighter). @type {{budget: number, from: number} | null} */
     this.lighter = null;
     form.quick = (p) => this.fitQuick(p);
+    form.planChanged = () => this.refresh(); // at once: the estimate never stands beside another budget's
     this.timer = setInterval(() => this.refresh(), REFRESH_MS);
   }
 

@@ -40,6 +40,8 @@ export class RunSettings {
     this.planned = NaN;
     /** The quick settings for this computer (run-estimate.js may make them lighter); the core's until then. */
     this.quick = (/** @type {import('./core.js').RunPreset} */ p) => p;
+    /** Called when the evaluations planned change (run-estimate.js says how long they take). */
+    this.planChanged = () => {};
     /** The form holds what the page opened with: nothing typed, chosen, restored or set up since. */
     this.untouched = true;
     this.inputs.seed.value = '1';
@@ -65,6 +67,7 @@ export class RunSettings {
       const words = problem ? null : await planWords(Number(this.inputs.population.value), Number(this.inputs.budget.value));
       if (ticket !== this.plans) return;
       this.planned = words?.planned ?? NaN;
+      this.planChanged();
       this.plan.textContent = problem ? `Not valid yet: ${problem}. Evolve is off until it is fixed.` : words?.text ?? '';
       this.plan.dataset.invalid = String(problem !== '');
       if (!problem) this.message('');

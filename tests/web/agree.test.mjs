@@ -113,6 +113,9 @@ test('numbers that agree: a drawing in pieces, the robot still walking, the cloc
   assert.match(driver, new RegExp(`Your drawing \\(8 voxels\\) is not a robot yet, so the robot walking is your last whole drawing: ${walking} voxels, ${drivenGenes} genes\\.$`));
   assert.equal(Number(/^(\d+) genes/.exec(genes)?.[1]), await figure(page, 'param-count'));
   assert.match(genes, new RegExp(`^\\d+ genes \\(for your drawing of 8 voxels, once it is one piece; the robot walking is your last whole drawing: ${walking} voxels, ${drivenGenes} genes\\)`));
+  await page.locator('#clear').click(); // empty: the same words for the robot that walks on
+  await waitForText(page, 'shape-status', /no voxels/);
+  await waitForText(page, 'driver', /Your drawing is empty, so the robot walking is your last whole drawing: 10 voxels/);
   assert.deepEqual(problems, []);
   await context.close();
 });

@@ -276,4 +276,13 @@ test('a class challenge: its link sets the rules; three entries ranked by the pa
   assert.equal(await student.page.locator('#run-budget').inputValue(), '2000');
   assert.deepEqual(student.problems, []);
   await student.page.context().close();
+
+  // A challenge of at most 12 voxels: a student's drawing of 13 is told at once, in the page's own words for the teacher's table.
+  const small = await openPage(env.browser, `${env.url}?challenge=1&terrain=hilly-1-10-0&voxels=12`, { width: 1400, height: 900 });
+  await waitForText(small.page, 'challenge-rules', /any body of at most 12 voxels/);
+  await small.page.locator('#rows').fill('11111-11111-11100');
+  await small.page.locator('#rows').press('Enter');
+  await waitForText(small.page, 'message', /breaks the challenge's rules: 13 voxels, more than the challenge's 12\. Your teacher's ranking will not count it/, 5_000);
+  assert.deepEqual(small.problems, []);
+  await small.page.context().close();
 });

@@ -124,7 +124,7 @@ test('the panel searches live, the gallery fills, a click loads a body that walk
     new PerformanceObserver((list) => { for (const e of list.getEntries()) w.longTasks.push(e.duration); }).observe({ type: 'longtask' });
   });
   // Before it starts, the panel says about how long it will take (once the page has measured this computer's speed).
-  await waitForText(page, 'codesign-estimate', /^Brain: the module .*, its attention frozen\. At this computer's speed, about .* on 2 workers \(larger bodies take longer/, 30_000);
+  await waitForText(page, 'codesign-estimate', /^Brain: the module .*, its attention kept\. At this computer's speed, about .* on 2 workers \(larger bodies take longer/, 30_000);
   const estimated = Number(await byTestId(page, 'codesign-estimate').getAttribute('data-value'));
   const started = Date.now();
   await byTestId(page, 'codesign').click();

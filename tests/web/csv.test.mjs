@@ -4,7 +4,7 @@
  * best, its median, the evaluations so far) parses and holds the run file's own figures, the
  * same run Export run downloads; a race's table (every half second, each robot's distance from
  * the start line) parses, starts at 0 m and ends at the distance and speed the lanes show at
- * the finish. Both buttons are `export-csv`. Saves screenshots/csv-run.png and csv-race.png.
+ * the finish. The buttons are `run-csv` and `race-csv`. Saves screenshots/csv-run.png and csv-race.png.
  */
 import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
@@ -52,7 +52,7 @@ async function download(page, button) {
 
 test('a run\'s CSV: per generation its best, median and evaluations, as in its run file', async () => {
   const { page, problems, context } = await openPage(env.browser, env.url, { width: 1400, height: 900 });
-  const csvButton = page.locator('#run-progress').locator('..').locator('[data-testid="export-csv"]');
+  const csvButton = byTestId(page, 'run-csv');
   assert.equal(await csvButton.isDisabled(), true, 'nothing to download before a run');
   for (const [key, value] of Object.entries({ population: '6', seconds: '2', budget: '30', seed: '7', terrain: 'flat', workers: '2' })) {
     await page.locator(`#run-${key}`).fill(value);
@@ -81,7 +81,7 @@ test('a run\'s CSV: per generation its best, median and evaluations, as in its r
 test('a race\'s CSV: every half second each robot\'s distance, ending where the lanes end', async () => {
   const { page, problems, context } = await openPage(env.browser, env.url, { width: 1400, height: 900 });
   const race = page.locator('#race-panel');
-  const csvButton = race.locator('[data-testid="export-csv"]');
+  const csvButton = byTestId(page, 'race-csv');
   assert.equal(await csvButton.isDisabled(), true, 'no race, nothing to download');
   await page.locator('#race-seconds').fill('4');
   for (const module of ['pretrained/biped-4x3-attention.json', 'pretrained/biped-4x3-mlp.json']) {

@@ -2,7 +2,7 @@
 /**
  * Browser test of keeping and sharing (node --test): Share puts the drawing, controller,
  * settings and genome in a link that a fresh browser opens to the same robot and genome;
- * a reload finds the drawing; a damaged link (disconnected shape, unknown controller, larger
+ * a reload finds the drawing; the link shown goes once the robot changes; a damaged link (disconnected shape, unknown controller, larger
  * than the grid, bad settings) shows a readable message and changes nothing kept; at 420 px
  * on a touch screen the page does not scroll sideways, no button is cut, and a finger draws
  * and erases; while evolving, no main-thread task reaches 50 ms
@@ -50,6 +50,10 @@ test('a shared link opens the same robot, settings and genome in a fresh browser
   assert.equal(new URL(again).hash, new URL(link).hash, 'the same state, genome bit for bit');
   assert.equal(await byTestId(fresh.page, 'finetune').isEnabled(), true, 'the pretrained source came back: it can be fine-tuned');
   await screenshot(fresh.page, 'shared.png');
+  await fresh.page.waitForTimeout(600); // the page keeps its state: the link still opens this robot
+  assert.equal(await fresh.page.locator('#share-link').isVisible(), true, 'the link stays while it is this robot\'s');
+  await clickCells(fresh.page, [[2, 1]]);
+  await fresh.page.locator('#share-link').waitFor({ state: 'hidden', timeout: 5_000 }); // an older robot's link goes
 
   await page.goto(env.url); // the same browser, no link: what was kept
   await waitForText(page, 'status', /^7 voxels, attention$/);

@@ -66,6 +66,17 @@ export function linesOf(text) {
   });
 }
 
+/**
+ * Why a body breaks the rules `r` ('' when it keeps them): the one check of the teacher's
+ * ranking and of the student's drawing. @param {string} rows @param {Rules} r
+ */
+export function bodyProblem(rows, r) {
+  const voxels = rows.split('').filter((c) => c === '1').length;
+  if (r.body && rows !== r.body) return `not the challenge's body (${r.body})`;
+  if (r.voxels && voxels > r.voxels) return `${voxels} voxels, more than the challenge's ${r.voxels}`;
+  return '';
+}
+
 export class Challenge {
   /**
    * @param {Document} doc @param {import('./lab.js').Lab} lab
@@ -89,6 +100,8 @@ export class Challenge {
     /** @type {Entry[]} */
     this.ranked = [];
     this.rules = rulesOf(location.search);
+    /** The rule the student's drawing breaks, as last said ('' when it keeps them). */
+    this.warned = '';
     el('challenge-make').addEventListener('click', () => this.make());
     el('challenge-rank').addEventListener('click', () => this.rank());
     this.raceButton.addEventListener('click', () => this.raceBest());
@@ -125,6 +138,19 @@ export class Challenge {
     this.page.setView(r.terrain);
     this.page.setRun({ budget: r.budget, seed: r.seed });
     if (r.body) await this.page.setBody(r.body).catch((error) => this.page.message(`the challenge's body: ${messageOf(error)}`));
+  }
+
+  /**
+   * A student's drawing changed: a body that breaks the challenge's rules is said at once (once
+   * for each way it breaks them), not only in the teacher's table. @param {string} rows
+   */
+  watch(rows) {
+    if (!this.rules || this.section.dataset.mode !== 'student') return;
+    const problem = rows ? bodyProblem(rows, this.rules) : '';
+    if (problem && problem !== this.warned) {
+      this.page.message(`Your robot breaks the challenge's rules: ${problem}. Your teacher's ranking will not count it: change the drawing (Undo under “1 · Draw”).`);
+    }
+    this.warned = problem;
   }
 
   /** Makes the challenge link of the form's rules. */
@@ -169,7 +195,6 @@ export class Challenge {
     const read = await decodeState(link.slice(hash), this.page.defaults.controllers, this.page.defaults.grid);
     if ('error' in read) return { ...entry, problem: `damaged link: ${read.error}` };
     const { state } = read;
-    const voxels = state.rows.split('').filter((c) => c === '1').length;
     const brain = state.brain;
     // A brain that is a pretrained module, unchanged, was not evolved for the challenge: said, for the teacher to judge.
     const pretrained = brain ? await this.lab.pretrainedWith(brain.genome).catch(() => '') : '';
@@ -177,8 +202,8 @@ export class Challenge {
       brain: brain ? `${brain.controller}${pretrained ? ` (the pretrained module ${pretrained.replace(/\.json$/, '')}, unchanged: not evolved here)` : ''}` : 'no brain (phase gait)',
       genome: brain ? { controller: brain.controller, genome: brain.genome } : null };
     if (read.damaged) return { ...named, problem: `its brain is damaged: ${read.damaged}` };
-    if (r.body && state.rows !== r.body) return { ...named, problem: `not the challenge's body (${r.body})` };
-    if (r.voxels && voxels > r.voxels) return { ...named, problem: `${voxels} voxels, more than the challenge's ${r.voxels}` };
+    const broken = bodyProblem(state.rows, r);
+    if (broken) return { ...named, problem: broken };
     try {
       const walk = await this.lab.walk({ rows: state.rows, terrain: r.terrain, seconds: r.seconds,
         ...(named.genome ? { brain: named.genome } : { gait: this.page.defaults.gait }) });

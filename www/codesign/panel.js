@@ -13,7 +13,7 @@ import { messageOf, spawn } from '../kit.js';
 import { plain } from '../message.js';
 import { FromCodesign, ToCodesign } from './protocol.js';
 import { Gallery, paintLegend } from './gallery.js';
-import { BOX_WORDS, planSearch, QUICK } from './plan.js';
+import { BOX_WORDS, BRAIN_WORDS, planSearch, QUICK } from './plan.js';
 import { count, decimal } from '../format.js';
 import { bestEntry, exportName, summaryWords } from './summary.js';
 
@@ -44,6 +44,7 @@ export class CodesignPanel {
     };
     this.hooks = hooks;
     this.brain = /** @type {HTMLSelectElement} */ (el('codesign-brain'));
+    for (const option of this.brain.options) option.textContent = BRAIN_WORDS[/** @type {keyof BRAIN_WORDS} */ (option.value)].menu;
     this.from = /** @type {HTMLSelectElement} */ (el('codesign-from'));
     const box = this.from.querySelector('option[value="box"]');
     if (box) box.textContent = BOX_WORDS;
@@ -141,7 +142,7 @@ export class CodesignPanel {
     this.settings = settings;
     const from = { box: `from ${BOX_WORDS}`, drawing: 'from your drawing', module: 'from the module\'s own body' }[this.from.value] ?? '';
     this.what = `${settings.brain === 'scratch' ? `${settings.controller} from scratch`
-      : `${settings.brain === 'frozen' ? 'frozen' : 'fine-tuned'} ${module?.label.replace(/ \([^()]*\)$/, '')}`}, bodies ${from}`;
+      : `${module?.label.replace(/ \([^()]*\)$/, '')}, ${BRAIN_WORDS[settings.brain].short}`}, bodies ${from}`;
     const coordinator = spawn('codesign/coordinator.js', (msg) => this.onMessage(coordinator, msg),
       (text) => this.end(coordinator, `the body search stopped: ${text}`, 'failed'));
     this.coordinator = coordinator;

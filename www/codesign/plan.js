@@ -12,6 +12,16 @@ export const QUICK = Object.freeze({ budget: 1000, seconds: 10, batch: 20 });
 /** The seed body, a box of 3 × 3 voxels, and its name in words. */
 export const BOX = '111-111-111';
 export const BOX_WORDS = `a ${size(3, 3)} box`;
+/**
+ * The search's brains in words (the menu's, the estimate's and the gallery's): `frozen` keeps the
+ * module's attention as the Fine-tune button does; `finetune` starts from the module and lets
+ * every gene change (`vsr codesign --brain`'s names).
+ */
+export const BRAIN_WORDS = Object.freeze({
+  frozen: { menu: 'the chosen module, its attention kept', short: 'attention kept' },
+  finetune: { menu: 'the chosen module as a start, every gene evolving', short: 'every gene evolving' },
+  scratch: { menu: 'a new brain, from scratch', short: 'from scratch' },
+});
 
 /**
  * The search the panel's form describes, or what is wrong, in words.

@@ -140,7 +140,7 @@ export const CHAPTERS = [
     title: 'Which body for this brain?',
     text: [
       'So far you chose a body and evolved a brain for it. Now turn it around: keep the brain and let evolution search the body.',
-      `The brain is the small biped's attention module, frozen: its attention stays exactly as it was evolved. The search starts from a plain ${size(3, 3)} box, adds and removes voxels, and keeps the fastest body of each size and each number of feet.`,
+      `The brain is the small biped's attention module, its attention kept exactly as it was evolved (as Fine-tune keeps it); only each voxel's four output weights evolve with the body. The search starts from a plain ${size(3, 3)} box, adds and removes voxels, and keeps the fastest body of each size and each number of feet.`,
       'The attention is the same for any body, so one brain can be tried on many bodies without starting again: this is what the paper means by a brain that can be taken apart and put together in other forms.',
     ],
     task: 'Under “Search bodies for this brain”, press “Search bodies”. When the gallery fills, click a green body to watch it walk.',
