@@ -8,6 +8,7 @@
  */
 import { describeRun } from './core.js';
 import { fetchOk, messageOf } from './kit.js';
+import { BRAIN_WORDS } from './codesign/plan.js';
 import { lineageNote } from './tour/lineage.js';
 import { count, decimal } from './format.js';
 
@@ -259,8 +260,8 @@ export function unseenWords(mean) {
  * condition in the campaign (`frozen`, `finetune`, `scratch-CONTROLLER`). @param {string} condition
  */
 function brainWords(condition) {
-  if (condition === 'frozen') return { long: 'module frozen', short: 'frozen' };
-  if (condition === 'finetune') return { long: 'module fine-tuned', short: 'fine-tuned' };
-  if (condition.startsWith('scratch-')) return { long: 'brain from scratch', short: 'from scratch' };
-  return { long: `brain (${condition})`, short: condition };
+  const kind = condition.startsWith('scratch-') ? 'scratch' : condition;
+  if (!(kind in BRAIN_WORDS)) return { long: `brain (${condition})`, short: condition };
+  const { short } = BRAIN_WORDS[/** @type {keyof BRAIN_WORDS} */ (kind)];
+  return kind === 'scratch' ? { long: 'brain from scratch', short } : { long: `module, ${short}`, short: `module, ${short}` };
 }

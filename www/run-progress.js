@@ -12,8 +12,8 @@ import { count, decimal as fixed } from './format.js';
 const STYLE = {
   best: { label: 'best of generation', colour: 'rgb(200, 45, 40)' },
   median: { label: 'median', colour: 'rgb(49, 99, 190)' },
-  finetune: { label: 'fine-tune (best)', colour: 'rgb(200, 45, 40)' },
-  scratch: { label: 'from scratch (best)', colour: 'rgb(90, 90, 90)', dashed: true },
+  finetune: { label: 'fine-tune (best so far)', colour: 'rgb(200, 45, 40)' },
+  scratch: { label: 'from scratch (best so far)', colour: 'rgb(90, 90, 90)', dashed: true },
 };
 
 /** Which run of a fine-tune and its comparison the figures are, shown before them. @type {Record<string, string>} */
@@ -55,7 +55,11 @@ export class RunProgress {
    */
   started(planned, mode) {
     if (mode !== 'scratch') { this.chart.clear(planned); this.table = []; } else this.chart.extend(planned);
-    this.out.phase.textContent = PHASE[mode] ?? '';
+    // The comparison's figures replace the fine-tuning's: its result stays in words beside them.
+    const tuned = mode === 'scratch' ? this.table.filter((row) => row[0] === RUN_WORDS.finetune).at(-1) : undefined;
+    this.out.phase.textContent = tuned
+      ? `From scratch, the comparison (fine-tuning reached ${fixed(Number(tuned[5]))} m/s, its best so far, in ${count(Number(tuned[2]))} evaluations):`
+      : PHASE[mode] ?? '';
     this.out.phase.hidden = !this.out.phase.textContent;
     show(this.out.evaluations, 0, `0 / ${count(planned)}`);
   }

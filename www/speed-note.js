@@ -56,7 +56,8 @@ export class SpeedNote {
    * @returns {Promise<string>}
    */
   async words(brain, speed, terrain, seconds) {
-    const here = `Speed here: ${decimal(speed)} m/s over a ${seconds}-s episode on ${terrain}.`;
+    // Measured at once, on a walk of its own: a freeze or an edit of the walk on screen changes that walk's figures, not this.
+    const here = `Speed here: ${decimal(speed)} m/s over a ${seconds}-s episode on ${terrain} (measured at once, on a walk with no freeze or edit).`;
     if (brain.oneShot) {
       return `${here} That is its one-shot speed, before any training for this body. Its attention fits any body, but the `
         + 'weights that turn each voxel\'s readings into a squeeze were made for the old body\'s voxels, so your robot\'s are '

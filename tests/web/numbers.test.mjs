@@ -127,7 +127,7 @@ test('a transplant reloaded, or opened from its link, still says it walks one-sh
   await page.locator('#terrain').press('Enter');
   await attentionOnWorm(page); // the biped's attention on a 5-voxel worm
   const before = await speedNote(page);
-  assert.match(before, /over a 30-s episode on hilly-1-10-7\. That is its one-shot speed.*press Fine-tune/);
+  assert.match(before, /over a 30-s episode on hilly-1-10-7 \(measured at once, on a walk with no freeze or edit\)\. That is its one-shot speed.*press Fine-tune/);
   await page.waitForFunction(() => /one-shot=1/.test(localStorage.getItem('vsr-playground/state/v1') ?? ''), undefined, { timeout: 20_000 });
   await page.reload();
   await waitForText(page, 'status', /^5 voxels, attention$/);
@@ -144,7 +144,7 @@ test('a transplant reloaded, or opened from its link, still says it walks one-sh
   await opened.context.close();
   const older = await openPage(env.browser, variant((p) => p.delete('one-shot')));
   const words = await speedNote(older.page);
-  assert.match(words, /^Speed here: .* over a 30-s episode on hilly-1-10-7\.$/, 'an older link: its speed, no one-shot note (not kept then)');
+  assert.match(words, /^Speed here: .* over a 30-s episode on hilly-1-10-7 \(measured at once, on a walk with no freeze or edit\)\.$/, 'an older link: its speed, no one-shot note (not kept then)');
   assert.deepEqual([...opened.problems, ...older.problems], []);
   await older.context.close();
   const bad = await openPage(env.browser, variant((p) => p.set('one-shot', 'yes')));

@@ -67,6 +67,8 @@ test('Fine-tune runs live, keeps the 32 attention genes, and the from-scratch li
   await waitForText(page, 'run-status', /^from scratch/, 60_000);
   const finetuneSeconds = (Date.now() - started) / 1000;
   assert.match(String(await byTestId(page, 'evaluations').textContent()), /\/ 30$/, 'the same budget from scratch');
+  assert.match(String(await byTestId(page, 'run-phase').textContent()),
+    /^From scratch, the comparison \(fine-tuning reached [−-]?\d+\.\d\d m\/s, its best so far, in 30 evaluations\):$/, 'the fine-tuning\'s result stays beside the comparison\'s figures');
   await waitForText(page, 'run-status', /^from scratch: finished$/, 120_000);
   assert.equal(await byTestId(page, 'fitness-chart').getAttribute('data-series'), 'finetune,scratch');
   await waitForText(page, 'driver', /the fine-tuned run's result/);

@@ -218,7 +218,7 @@ export const TASKS = [
   },
   {
     chapter: BODIES,
-    ask: 'The body search keeps the brain\'s attention frozen while it changes the body. Of the brain\'s numbers (its genes), how many stay exactly the same on every body it tries?',
+    ask: 'The body search keeps the brain\'s attention module exactly as it is while it changes the body. Of the brain\'s numbers (its genes), how many stay exactly the same on every body it tries?',
     unit: 'genes',
     try: 'Press “Search bodies” and read the gene count of the bodies it finds.',
     async key(lab) {
