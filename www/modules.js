@@ -8,6 +8,7 @@
  */
 import { describeRun } from './core.js';
 import { fetchOk, messageOf } from './kit.js';
+import { keepModules, loadKeptModules } from './storage.js';
 import { BRAIN_WORDS } from './codesign/plan.js';
 import { lineageNote } from './tour/lineage.js';
 import { count, decimal } from './format.js';
@@ -53,6 +54,8 @@ export class ModuleList {
     this.studyRunOf = new Map();
     /** The study's runs, once listed (study.js), to say beside a module where its run stopped at another budget. */
     this.studyRuns = /** @type {import('./tour/study.js').StudyRun[]} */ ([]);
+    /** Whether the page said that storage could not keep its modules (said once). */
+    this.keepWarned = false;
     /** Resolves once the pretrained modules are listed (or could not be). */
     this.listed = new Promise((resolve) => { this.doneListing = resolve; });
     el('module-load').addEventListener('click', () => this.withSelected(hooks.loadOnto));
@@ -93,7 +96,18 @@ export class ModuleList {
     } catch (error) {
       this.hooks.message(`could not list the pretrained modules: ${messageOf(error)}`);
     }
+    // The modules made here on earlier visits, after the pretrained ones (a damaged one is left out).
+    for (const module of loadKeptModules()) await this.add(module, false, false).catch(() => {});
     this.doneListing?.(undefined);
+  }
+
+  /** Keeps the modules made on the page (runs, imported files) for the next visit; a problem is said once. */
+  keepMine() {
+    const mine = [...this.held.values()].filter((m) => /^(run|disk):/.test(m.key))
+      .map(({ key, label, short, text }) => ({ key, label, short, text }));
+    const problem = keepModules(mine);
+    if (problem && !this.keepWarned) this.hooks.message(problem);
+    this.keepWarned ||= problem !== '';
   }
 
   /**
@@ -127,13 +141,16 @@ export class ModuleList {
 
   /**
    * Adds (or replaces) a module held in the page and, unless `choose` is false, selects it;
-   * rejects with a readable Error (adding nothing) when its run file is malformed.
-   * @param {Module} module @param {boolean} [choose] @returns {Promise<void>}
+   * rejects with a readable Error (adding nothing) when its run file is malformed. A module made
+   * on the page (a run, an imported file) is kept for the next visit, unless `keep` is false.
+   * @param {Module} module @param {boolean} [choose] @param {boolean} [keep] @returns {Promise<void>}
    */
-  async add(module, choose = true) {
+  async add(module, choose = true, keep = true) {
     await describeRun(module.text);
+    this.held.delete(module.key); // a module made again is the newest
     this.held.set(module.key, module);
     this.list(module.key, module.label, module.short ?? module.label, 'opened, imported or run here');
+    if (keep) this.keepMine();
     if (!choose) return;
     this.select.value = module.key;
     this.describe();

@@ -149,6 +149,18 @@ test('Evolve runs live on the chosen workers, the best walks, Export and Import 
   await waitForText(page, 'message', /broken.json is not a run file/);
   assert.match(String(await page.locator('#status').textContent()), /^10 voxels, attention$/, 'the robot keeps walking');
   await screenshot(page, 'evolve.png');
+  // The next visit (a new tab, the same browser) lists the modules made here: the run and the imported file, not the broken file.
+  const mine = (/** @type {import('playwright-core').Page} */ p) => p.locator('#module optgroup[label="opened, imported or run here"] option')
+    .evaluateAll((os) => os.map((o) => o.textContent));
+  const before = await mine(page);
+  assert.equal(before.length, 2, `the run and the file: ${before}`);
+  assert.match(String(before[0]), / m\/s in training$/, 'a run made here says its speed is its training\'s');
+  const next = await page.context().newPage();
+  await next.goto(env.url);
+  await waitForText(next, 'status', /voxels/);
+  await next.waitForFunction(() => document.querySelectorAll('#module optgroup[label="opened, imported or run here"] option').length === 2, undefined, { timeout: 10_000 });
+  assert.deepEqual(await mine(next), before, 'listed again on the next visit');
+  await next.close();
   assert.deepEqual(problems, []);
 });
 
