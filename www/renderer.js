@@ -204,7 +204,9 @@ export class Renderer {
     ctx.fillStyle = 'rgba(30, 50, 70, 0.8)';
     ctx.font = `${12 * dpr}px system-ui, sans-serif`;
     for (let d = Math.ceil((view.left - this.origin) / 10) * 10; this.origin + d <= view.right; d += 10) {
-      ctx.fillText(d === 0 ? 'start' : `${plainNumber(d)} m`, (this.origin + d - view.left) * view.s + 3 * dpr, 14 * dpr);
+      const text = d === 0 ? 'start' : `${plainNumber(d)} m`;
+      const x = (this.origin + d - view.left) * view.s + 3 * dpr;
+      if (x + ctx.measureText(text).width <= canvas.width) ctx.fillText(text, x, 14 * dpr); // a label cut by the edge is left out
     }
     const metres = niceLength(120 * dpr / view.s);
     const px = metres * view.s;
