@@ -57,6 +57,15 @@ fn plan_run_merge_report_and_resume() {
     assert_eq!(files_in(&out.join("runs")).len(), 15);
     assert_eq!(files_in(&out.join("validation")).len(), 30);
     assert_eq!(files_in(&out.join("ablation")).len(), 6);
+    // A log per job: a run and its ablation share a file name, not a log.
+    assert_eq!(files_in(&out.join("logs")).len(), 51);
+    let log = |name: &str| fs::read_to_string(out.join("logs").join(name)).unwrap();
+    let (run_log, ablation_log) = (
+        log("runs-worm-3x1-attention-8-s1.json.log"),
+        log("ablation-worm-3x1-attention-8-s1.json.log"),
+    );
+    assert!(run_log.contains("generation"), "{run_log}");
+    assert_ne!(run_log, ablation_log);
     let pending = vsr(&["campaign", "plan", &file, "--pending"]);
     assert_eq!(text(&pending), "", "nothing left to do");
 
@@ -239,6 +248,33 @@ fn bad_campaign_files_exit_with_code_2() {
     let out = vsr(&["campaign", "plan", &file]);
     assert_eq!(out.status.code(), Some(2));
     assert!(text(&out).contains("seeds"), "{}", text(&out));
+    // The file is named, the kind of error said once.
+    fs::write(&file, "output = \"o\"\nseedz = [1]\n").unwrap();
+    let typo = text(&vsr(&["campaign", "plan", &file]));
+    assert!(
+        typo.starts_with(&format!(
+            "vsr: invalid input: {file}: the campaign file is not valid: "
+        )) && typo.matches("invalid input").count() == 1,
+        "{typo}"
+    );
+    // A budget below one population would fail every job: refused when planned, as by evolve.
+    let grid = "[[evolve]]\nname = \"g\"\nshapes = [\"worm-3x1\"]\ncontrollers = [\"mlp\"]\n";
+    fs::write(
+        &file,
+        format!("output = \"o\"\nseeds = [1]\n{grid}evals = [50]\n"),
+    )
+    .unwrap();
+    for command in ["plan", "run"] {
+        let small = vsr(&["campaign", command, &file]);
+        assert_eq!(small.status.code(), Some(2));
+        assert!(
+            text(&small).contains(
+                "group 'g': an evaluation budget of 50 is less than one population of 100"
+            ),
+            "{}",
+            text(&small)
+        );
+    }
     let missing = vsr(&["campaign", "run", "/no/such/campaign.toml"]);
     assert_eq!(missing.status.code(), Some(2));
     let (smoke_dir, smoke_file) = smoke("only");

@@ -85,6 +85,21 @@ fn a_tiny_run_is_the_same_on_one_and_two_threads() {
 }
 
 #[test]
+fn the_summary_says_1_generation_on_1_thread() {
+    let out = scratch("one-generation.json");
+    let run = vsr_line(&format!(
+        "evolve --shape worm-3x1 --controller mlp --evals 4 --seed 1 --population 4 \
+         --seconds 1 --threads 1 --out {out}"
+    ));
+    let summary = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        summary.contains("after 4 evaluations (1 generation) in ")
+            && summary.contains(" s on 1 thread; wrote "),
+        "{summary}"
+    );
+}
+
+#[test]
 fn a_run_file_can_be_evaluated_validated_ablated_and_fine_tuned() {
     let g = scratch("source.json");
     tiny_run("attention", 2, &g);
@@ -97,6 +112,27 @@ fn a_run_file_can_be_evaluated_validated_ablated_and_fine_tuned() {
         "ablate --genome {g} --seconds 1 --last-second 2 --json"
     ));
     assert_eq!(points.as_array().unwrap().len(), 3);
+    // Without --seconds, the run's own 2-s episodes (121 steps), not 30 s.
+    let evaluate =
+        |seconds: &str| json_of(&format!("evaluate --genome {g} --terrain flat{seconds}"));
+    let own = evaluate("");
+    assert_eq!(own["steps"].as_u64(), Some(121));
+    assert_eq!(own, evaluate(" --seconds 2"));
+    assert_eq!(
+        evaluate(" --seconds 3")["steps"].as_u64(),
+        Some(181),
+        "an explicit length is kept"
+    );
+    let at = |line: &str| json_of(&format!("{line} --genome {g} --json"));
+    assert_eq!(
+        at("validate"),
+        at("validate --seconds 2"),
+        "validated at the run's 2 s"
+    );
+    assert_eq!(
+        at("ablate --last-second 1"),
+        at("ablate --last-second 1 --seconds 2")
+    );
     let tuned = scratch("tuned.json");
     let out = vsr_line(&format!(
         "finetune --from {g} --shape comb-7x2 --evals 30 --seed 4 --population 10 \

@@ -64,8 +64,10 @@ def main():
           f"median {result['median']:.3f}, min {validation.min():.3f}, "
           f"max {validation.max():.3f}")
     if args.out:
+        # its episodes as evolved: `seconds` long on the hilly-1-10 family's terrains
         run = vsr.new_run(mean, args.shape, args.controller, fitness=result["mean"],
-                          seed=args.seed, evaluations=evaluations)
+                          seed=args.seed, evaluations=evaluations, seconds=args.seconds,
+                          terrain="hilly-1-10")
         vsr.save_run(args.out, run)
         print(f"wrote {args.out}")
 

@@ -4,7 +4,7 @@
 use numpy::PyReadonlyArray2;
 use pyo3::prelude::*;
 use vsr::controllers::ControllerKind;
-use vsr::experiment::config::MAX_SECONDS;
+use vsr::experiment::config::check_seconds;
 use vsr::simulation::{Shape, Terrain};
 
 use crate::errors::{input, to_py};
@@ -32,14 +32,47 @@ pub fn terrain(name: &str) -> PyResult<Terrain> {
     Terrain::parse(name).map_err(to_py)
 }
 
-/// An episode length, in the range the command line accepts.
+/// An episode length, checked as the command line checks it (the same message).
 pub fn seconds(seconds: f64) -> PyResult<f64> {
-    if seconds > 0.0 && seconds <= MAX_SECONDS {
-        return Ok(seconds);
+    check_seconds(seconds).map_err(to_py)?;
+    Ok(seconds)
+}
+
+/// A whole-number argument (a seed, a count, a number of threads) named `name`: an integer
+/// in [0, 2^64 - 1], anything else (-1, 2.5, "3") a `ValueError` that names it, not the
+/// `OverflowError` or `TypeError` of a plain conversion.
+pub fn whole(value: &Bound<'_, PyAny>, name: &str) -> PyResult<u64> {
+    value.extract::<u64>().map_err(|_| {
+        input(format!(
+            "{name} must be an integer in [0, 2^64 - 1], got {}",
+            describe(value)
+        ))
+    })
+}
+
+/// [`whole`] as a `usize` (a count of threads, of bodies).
+pub fn whole_usize(value: &Bound<'_, PyAny>, name: &str) -> PyResult<usize> {
+    let n = whole(value, name)?;
+    usize::try_from(n).map_err(|_| input(format!("{name} is too large: {n}")))
+}
+
+/// An optional [`whole_usize`] (None when not given).
+pub fn optional_usize(value: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Option<usize>> {
+    value
+        .filter(|v| !v.is_none())
+        .map(|v| whole_usize(v, name))
+        .transpose()
+}
+
+/// A short description of a Python value for a message: its repr, cut at 40 characters.
+pub fn describe(value: &Bound<'_, PyAny>) -> String {
+    let text = value
+        .repr()
+        .map_or_else(|_| "?".to_string(), |r| r.to_string());
+    match text.char_indices().nth(40) {
+        Some((cut, _)) => format!("{}...", &text[..cut]),
+        None => text,
     }
-    Err(input(format!(
-        "seconds must be in (0, {MAX_SECONDS}], got {seconds}"
-    )))
 }
 
 /// The rows of a C-contiguous float32 matrix, in place (the Python half hands them so).

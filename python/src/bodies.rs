@@ -8,13 +8,13 @@ use rayon::prelude::*;
 use vsr::experiment::evaluate::fitness;
 use vsr::simulation::Shape;
 
-use crate::args::{seconds as check_seconds, terrain};
+use crate::args::{optional_usize, seconds as check_seconds, terrain, whole};
 use crate::errors::{input, to_py};
 
 /// Velocities (m/s) of `genomes[i]` driving `controller` on `shapes[i]`; NaN where the episode
 /// exploded. A length mismatch, a bad shape or a non-finite gene names its robot.
 #[pyfunction]
-#[pyo3(signature = (shapes, genomes, controller, terrain_name, seconds=30.0, threads=None, noise_seed=0))]
+#[pyo3(signature = (shapes, genomes, controller, terrain_name, seconds, threads, noise_seed))]
 #[allow(clippy::too_many_arguments)]
 pub fn evaluate_bodies<'py>(
     py: Python<'py>,
@@ -23,9 +23,11 @@ pub fn evaluate_bodies<'py>(
     controller: &str,
     terrain_name: &str,
     seconds: f64,
-    threads: Option<usize>,
-    noise_seed: u64,
+    threads: Option<Bound<'py, PyAny>>,
+    noise_seed: Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    let threads = optional_usize(threads.as_ref(), "threads")?;
+    let noise_seed = whole(&noise_seed, "noise_seed")?;
     if shapes.len() != genomes.len() {
         return Err(input(format!(
             "{} shapes but {} genomes: give one shape per genome",

@@ -10,6 +10,7 @@ use vsr::controllers::ControllerKind;
 use vsr::experiment::codesign::source_in_file;
 use vsr::experiment::{BrainMode, Codesign, CodesignConfig, Job, Timing, TrainingTerrain};
 
+use crate::args::{optional_usize, whole};
 use crate::errors::to_py;
 use crate::evaluate::pool;
 
@@ -22,8 +23,8 @@ use crate::evaluate::pool;
 pub fn codesign(
     py: Python<'_>,
     brain: &str,
-    evals: u64,
-    seed: u64,
+    evals: Bound<'_, PyAny>,
+    seed: Bound<'_, PyAny>,
     module: Option<&str>,
     controller: &str,
     start: Option<&str>,
@@ -31,9 +32,12 @@ pub fn codesign(
     terrain: &str,
     grid: Option<(usize, usize)>,
     voxels: Option<(usize, usize)>,
-    batch: Option<usize>,
-    threads: Option<usize>,
+    batch: Option<Bound<'_, PyAny>>,
+    threads: Option<Bound<'_, PyAny>>,
 ) -> PyResult<String> {
+    let (evals, seed) = (whole(&evals, "evals")?, whole(&seed, "seed")?);
+    let batch = optional_usize(batch.as_ref(), "batch")?;
+    let threads = optional_usize(threads.as_ref(), "threads")?;
     let brain: BrainMode = brain.parse().map_err(to_py)?;
     let controller: ControllerKind = controller.parse().map_err(to_py)?;
     let module = match module {

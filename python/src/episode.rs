@@ -17,7 +17,7 @@ use vsr::simulation::constants::ACTUATION_HOLD_STEPS;
 use vsr::simulation::sensors::READING_BOUNDS;
 use vsr::simulation::{Shape, Terrain};
 
-use crate::args::{seconds as check_seconds, terrain as parse_terrain};
+use crate::args::{describe, seconds as check_seconds, terrain as parse_terrain, whole};
 use crate::errors::{input, to_py};
 
 type Engine = vsr::experiment::Episode;
@@ -36,9 +36,19 @@ pub struct Episode {
 #[pymethods]
 impl Episode {
     #[new]
-    #[pyo3(signature = (shape, terrain, seconds=30.0, noise_seed=0))]
-    fn new(shape: &str, terrain: &str, seconds: f64, noise_seed: u64) -> PyResult<Self> {
+    #[pyo3(signature = (shape, terrain, seconds=30.0, noise_seed=None))]
+    #[pyo3(text_signature = "(shape, terrain, seconds=30.0, noise_seed=0)")]
+    fn new(
+        shape: &str,
+        terrain: &str,
+        seconds: f64,
+        noise_seed: Option<Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
         let shape = Shape::parse(shape).map_err(to_py)?;
+        let noise_seed = match noise_seed {
+            Some(seed) => whole(&seed, "noise_seed")?,
+            None => 0,
+        };
         Ok(Episode {
             shape,
             terrain: parse_terrain(terrain)?,
@@ -58,7 +68,7 @@ impl Episode {
         seed: Option<Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyAny>> {
         if let Some(seed) = seed {
-            self.noise_seed = noise_seed(&seed)?;
+            self.noise_seed = whole(&seed, "seed")?;
         }
         let terrain = self.terrain.clone();
         let noise = Some(self.noise_seed);
@@ -177,16 +187,6 @@ impl Episode {
     }
 }
 
-/// A noise seed given to `reset`: an integer in [0, 2^64 - 1].
-fn noise_seed(seed: &Bound<'_, PyAny>) -> PyResult<u64> {
-    seed.extract::<u64>().map_err(|_| {
-        input(format!(
-            "seed must be an integer in [0, 2^64 - 1] (the sensor noise seed), got {}",
-            describe(seed)
-        ))
-    })
-}
-
 /// An action as one actuation per voxel: anything numpy reads as a 1-D array of `voxels`
 /// numbers (the engine then checks the count and that each is finite).
 fn actuations(action: &Bound<'_, PyAny>, voxels: usize) -> PyResult<Vec<f64>> {
@@ -203,15 +203,4 @@ fn actuations(action: &Bound<'_, PyAny>, voxels: usize) -> PyResult<Vec<f64>> {
     }
     let array: PyReadonlyArray1<'_, f64> = array.extract()?;
     Ok(array.as_array().to_vec())
-}
-
-/// A short description of a Python value for a message: its repr, cut at 40 characters.
-fn describe(value: &Bound<'_, PyAny>) -> String {
-    let text = value
-        .repr()
-        .map_or_else(|_| "?".to_string(), |r| r.to_string());
-    match text.char_indices().nth(40) {
-        Some((cut, _)) => format!("{}...", &text[..cut]),
-        None => text,
-    }
 }

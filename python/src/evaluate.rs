@@ -9,7 +9,7 @@ use pyo3::prelude::*;
 use rayon::prelude::*;
 use vsr::experiment::evaluate::fitness;
 
-use crate::args::{robot, rows, setup};
+use crate::args::{optional_usize, robot, rows, setup, whole};
 use crate::errors::{input, to_py};
 
 /// Genome length of `controller` on `shape`.
@@ -22,7 +22,7 @@ pub fn param_count(shape: &str, controller: &str) -> PyResult<usize> {
 /// Velocities (m/s) of each row of `genomes`; NaN where the episode became unstable (the
 /// command line reports an error there instead).
 #[pyfunction]
-#[pyo3(signature = (genomes, shape, controller, terrain, seconds=30.0, threads=None, noise_seed=0))]
+#[pyo3(signature = (genomes, shape, controller, terrain, seconds, threads, noise_seed))]
 #[allow(clippy::too_many_arguments)]
 pub fn evaluate<'py>(
     py: Python<'py>,
@@ -31,11 +31,12 @@ pub fn evaluate<'py>(
     controller: &str,
     terrain: &str,
     seconds: f64,
-    threads: Option<usize>,
-    noise_seed: u64,
+    threads: Option<Bound<'py, PyAny>>,
+    noise_seed: Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyArray1<f64>>> {
     let (shape, kind, terrain, seconds) = setup(shape, controller, terrain, seconds)?;
-    let noise = Some(noise_seed);
+    let threads = optional_usize(threads.as_ref(), "threads")?;
+    let noise = Some(whole(&noise_seed, "noise_seed")?);
     let (count, length) = (genomes.shape()[0], genomes.shape()[1]);
     let data = rows(&genomes)?;
     let row = |i: usize| &data[i * length..(i + 1) * length];

@@ -8,10 +8,10 @@ use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use vsr::experiment::config::MAX_SECONDS;
+use vsr::experiment::ValidationSet;
 use vsr::experiment::{ablate as engine_ablate, unfrozen_velocity, validate_on, Best};
-use vsr::experiment::{ValidationSet, ABLATION_TERRAIN};
 
-use crate::args::{robot, seconds as check_seconds};
+use crate::args::{robot, seconds as check_seconds, whole};
 use crate::errors::{input, to_py};
 
 /// `vsr validate` of `genome`: a dict with `set`, `terrains` (names), `noise_seeds`,
@@ -48,23 +48,27 @@ pub fn validate<'py>(
 /// `unfrozen` (m/s), `freeze_seconds` (0..=last_second) and `velocities` (float64 array,
 /// the walk with the attention frozen at each of those seconds).
 #[pyfunction]
-#[pyo3(signature = (genome, shape, controller, terrain=ABLATION_TERRAIN, last_second=30, seconds=30.0))]
+#[pyo3(signature = (genome, shape, controller, terrain, last_second, seconds))]
 pub fn ablate<'py>(
     py: Python<'py>,
     genome: Vec<f32>,
     shape: &str,
     controller: &str,
     terrain: &str,
-    last_second: u32,
+    last_second: Bound<'py, PyAny>,
     seconds: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
     let best = best(genome, shape, controller)?;
     let seconds = check_seconds(seconds)?;
-    if f64::from(last_second) > MAX_SECONDS {
-        return Err(input(format!(
-            "last_second must be at most {MAX_SECONDS}, got {last_second}"
-        )));
-    }
+    let asked = whole(&last_second, "last_second")?;
+    let last_second = u32::try_from(asked)
+        .ok()
+        .filter(|&s| f64::from(s) <= MAX_SECONDS)
+        .ok_or_else(|| {
+            input(format!(
+                "last_second must be at most {MAX_SECONDS}, got {asked}"
+            ))
+        })?;
     let (unfrozen, points) = py
         .detach(|| {
             let points = engine_ablate(&best, terrain, last_second, seconds)?;

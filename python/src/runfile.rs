@@ -3,9 +3,9 @@
 //! exactly what the command line does. File access stays in the Python half.
 
 use pyo3::prelude::*;
-use vsr::experiment::{Best, EvolutionConfig, RunFile};
+use vsr::experiment::{Best, EvolutionConfig, RunFile, TrainingTerrain};
 
-use crate::args::robot;
+use crate::args::{robot, whole};
 use crate::errors::to_py;
 
 /// The run file `text` checked as `vsr evaluate` checks it, printed as `vsr` prints it.
@@ -16,20 +16,31 @@ pub fn check_run(text: &str) -> PyResult<String> {
 
 /// A run file for a genome evolved outside the engine (e.g. by CMA-ES): the paper's
 /// configuration for `shape` and `controller` with `seed` and a budget of `evaluations`
-/// (at least one GA population), no generation records, `genome` as the best with `fitness`.
+/// (at least one GA population), episodes of `seconds` on `terrain` (the paper's 30 s and
+/// hilly-1-10 when None), no generation records, `genome` as the best with `fitness`.
 #[pyfunction]
-#[pyo3(signature = (genome, shape, controller, fitness=None, seed=0, evaluations=0))]
+#[pyo3(signature = (genome, shape, controller, fitness, seed, evaluations, seconds, terrain))]
+#[allow(clippy::too_many_arguments)]
 pub fn new_run(
     genome: Vec<f32>,
     shape: &str,
     controller: &str,
     fitness: Option<f64>,
-    seed: u64,
-    evaluations: u64,
+    seed: Bound<'_, PyAny>,
+    evaluations: Bound<'_, PyAny>,
+    seconds: Option<f64>,
+    terrain: Option<&str>,
 ) -> PyResult<String> {
     let (shape, kind) = robot(shape, controller)?;
+    let (seed, evaluations) = (whole(&seed, "seed")?, whole(&evaluations, "evaluations")?);
     let mut config = EvolutionConfig::paper(shape.clone(), kind, evaluations, seed);
     config.ga.budget_evals = evaluations.max(config.ga.population as u64);
+    if let Some(seconds) = seconds {
+        config.seconds = seconds;
+    }
+    if let Some(terrain) = terrain {
+        config.terrain = TrainingTerrain::parse(terrain).map_err(to_py)?;
+    }
     let best = Best::new(kind, shape, genome, fitness.unwrap_or(f64::NAN));
     let run = RunFile::new(config, vec![], best, None);
     run.validate().map_err(to_py)?;

@@ -8,7 +8,7 @@ use pyo3::types::PyDict;
 use vsr::experiment::evaluate::controller_for;
 use vsr::experiment::{steps_for, Episode, Policy};
 
-use crate::args::setup;
+use crate::args::{setup, whole};
 use crate::errors::to_py;
 
 /// What is recorded after every step: time, centre, corners (flat, in step order).
@@ -32,7 +32,7 @@ impl Recording {
 /// `velocity`, `distance`, `steps`, `seconds` and, when `trajectory`, `time` (T,),
 /// `centre` (T, 2) and `corners` (T, voxels, 4, 2).
 #[pyfunction]
-#[pyo3(signature = (genome, shape, controller, terrain, seconds=30.0, noise_seed=0, trajectory=false))]
+#[pyo3(signature = (genome, shape, controller, terrain, seconds, noise_seed, trajectory))]
 #[allow(clippy::too_many_arguments)]
 pub fn simulate<'py>(
     py: Python<'py>,
@@ -41,10 +41,11 @@ pub fn simulate<'py>(
     controller: &str,
     terrain: &str,
     seconds: f64,
-    noise_seed: u64,
+    noise_seed: Bound<'py, PyAny>,
     trajectory: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let (shape, kind, terrain, seconds) = setup(shape, controller, terrain, seconds)?;
+    let noise_seed = whole(&noise_seed, "noise_seed")?;
     let brain = controller_for(kind, &shape, &genome).map_err(to_py)?;
     let n = shape.voxel_count();
     let (outcome, recording) = py

@@ -74,5 +74,29 @@ def test_the_episode_refuses_what_it_cannot_do():
         episode.step(np.zeros(10))
     with pytest.raises(ValueError, match="unknown terrain"):
         vsr.Episode(SHAPE, "moon")
-    with pytest.raises(ValueError, match="expected 40 sensor readings"):
-        vsr.Controller(SHAPE, "mlp", np.zeros(41)).control(np.zeros((9, 4), dtype=np.float32))
+    whole = r"noise_seed must be an integer in \[0, 2\^64 - 1\], got -1"
+    with pytest.raises(ValueError, match=whole):
+        vsr.Episode(SHAPE, "flat", noise_seed=-1)
+
+
+def test_the_controller_takes_any_array_of_numbers_and_refuses_the_rest():
+    brain = vsr.Controller(SHAPE, "mlp", np.linspace(-1, 1, 41))
+    readings = np.random.default_rng(5).uniform(0, 1, (10, 4))
+    expected = brain.control(readings.astype(np.float32))
+    assert expected.dtype == np.float32 and np.all(np.abs(expected) <= 1)
+    assert np.array_equal(brain.control(readings), expected)  # float64, rounded once
+    assert np.array_equal(brain.control(readings.astype(np.float32).tolist()), expected)
+    assert np.array_equal(brain.control(np.asfortranarray(readings)), expected)
+    shape = (r"the observation must be an array of shape \(10, 4\): 4 readings \(area, vx, vy, "
+             r"touch\) per voxel, got ")
+    with pytest.raises(ValueError, match=shape + r"shape \(9, 4\)"):
+        brain.control(np.zeros((9, 4), dtype=np.float32))
+    with pytest.raises(ValueError, match=shape + r"shape \(40,\)"):
+        brain.control(np.zeros(40))
+    with pytest.raises(ValueError, match=shape + "'fast'"):
+        brain.control("fast")
+    readings[3, 2] = np.nan
+    with pytest.raises(ValueError, match="reading 2 of voxel 3 in the observation is NaN"):
+        brain.control(readings)
+    with pytest.raises(ValueError, match="the genome has 40 genes"):
+        vsr.Controller(SHAPE, "mlp", [0.0] * 40)

@@ -70,10 +70,49 @@ def test_nan_genes_are_refused_by_row_and_gene(vsr_bin, tmp_path):
     assert str(e.value) == expected and "gene 5 is null" in expected
 
 
-def test_bad_arguments():
-    with pytest.raises(ValueError, match=r"seconds must be in \(0, 3600\], got -1"):
+def test_bad_arguments(vsr_bin, tmp_path):
+    path = tmp_path / "run.json"
+    vsr.save_run(path, vsr.new_run(GENOMES[0], "biped-4x3", "attention"))
+    expected = cli_message(vsr_bin, "evaluate", "--genome", str(path), "--terrain", "flat",
+                           "--seconds", "-1")
+    with pytest.raises(ValueError) as e:
         vsr.evaluate(GENOMES, "biped-4x3", "attention", "flat", seconds=-1.0)
+    assert str(e.value) == expected == "invalid input: episode seconds must be in (0, 3600], got -1"
     with pytest.raises(ValueError, match="threads must be at least 1"):
         vsr.evaluate(GENOMES, "biped-4x3", "attention", "flat", threads=0)
-    with pytest.raises(OverflowError):
-        vsr.evaluate(GENOMES, "biped-4x3", "attention", "flat", noise_seed=-1)
+
+
+@pytest.mark.parametrize("call", [
+    lambda: vsr.evaluate(GENOMES, "biped-4x3", "attention", "flat", threads=-1),
+    lambda: vsr.evaluate(GENOMES, "biped-4x3", "attention", "flat", noise_seed=-1),
+    lambda: vsr.evaluate_bodies(["biped-4x3"], GENOMES[:1], "attention", "flat", noise_seed=-1),
+    lambda: vsr.simulate(GENOMES[0], "biped-4x3", "attention", "flat", noise_seed=-1),
+    lambda: vsr.ablate(GENOMES[0], "biped-4x3", "attention", last_second=-1),
+    lambda: vsr.new_run(GENOMES[0], "biped-4x3", "attention", evaluations=-1),
+    lambda: vsr.codesign("scratch", 100, seed=-1),
+])
+def test_a_negative_count_or_seed_is_a_value_error_that_names_it(call):
+    with pytest.raises(ValueError, match=r"^invalid input: \w+ must be an integer in "
+                                         r"\[0, 2\^64 - 1\], got -1$"):
+        call()
+
+
+def test_a_gene_beyond_float32_is_refused_with_its_value():
+    genomes = np.zeros((2, 73))
+    genomes[1, 4] = -1e300
+    message = ("is -1e+300, out of float32's range (genes are float32: at most 3.402823e+38 "
+               "in magnitude)")
+    with pytest.raises(ValueError) as e:
+        vsr.evaluate(genomes, "biped-4x3", "attention", "flat")
+    assert str(e.value) == f"invalid input: gene 4 of genome 1 {message}"
+    for call in (lambda: vsr.simulate(genomes[1], "biped-4x3", "attention", "flat"),
+                 lambda: vsr.new_run(genomes[1], "biped-4x3", "attention"),
+                 lambda: vsr.Controller("biped-4x3", "attention", genomes[1])):
+        with pytest.raises(ValueError) as e:
+            call()
+        assert str(e.value) == f"invalid input: gene 4 of the genome {message}"
+
+
+def test_the_package_exports_only_its_api():
+    assert not {"json", "np", "os"} & set(dir(vsr))
+    assert all(hasattr(vsr, name) for name in vsr.__all__)

@@ -20,7 +20,9 @@ def test_the_cma_example_evolves_validates_and_writes_a_run(tmp_path, vsr_bin):
     assert "validation on hilly-1-10-0..9: mean" in done.stdout
     run = vsr.load_run(out)
     assert run["best"]["genome"].shape == (73,) and run["config"]["ga"]["budget_evals"] == 100
-    code, text, err = cli(vsr_bin, "validate", "--genome", str(out), "--seconds", "1", "--json")
+    # the file says the 1-s episodes it was evolved with, so vsr validates it at 1 s unasked
+    assert (run["config"]["seconds"], run["config"]["terrain"]) == (1.0, "hilly-1-10")
+    code, text, err = cli(vsr_bin, "validate", "--genome", str(out), "--json")
     assert code == 0, err
     mean = json.loads(text)["mean"]
     assert run["best"]["fitness"] == mean

@@ -22,12 +22,13 @@ Bad input raises ``ValueError`` with the command line's message; an episode whos
 became non-finite raises ``UnstableError`` (``evaluate`` gives NaN for it instead).
 """
 
-import json
-import os
+import json as _json
+import os as _os
 
-import numpy as np
+import numpy as _np
 
 from . import _vsr
+from ._arrays import genes as _genes
 from ._vsr import Controller, Episode, UnstableError, param_count
 from .runfile import load_run, new_run, save_run
 
@@ -50,16 +51,6 @@ __all__ = [
 __version__ = "0.1.0"
 
 
-def _genes(array, ndim, what):
-    """`array` as C-contiguous float32 of `ndim` dimensions: no copy when it already is."""
-    array = np.asarray(array)
-    if array.ndim != ndim:
-        shape = ("a 2-D array, one genome per row (or a 1-D array, one genome)" if ndim == 2
-                 else "a 1-D array")
-        raise ValueError(f"invalid input: {what} must be {shape}, got shape {array.shape}")
-    return np.ascontiguousarray(array, dtype=np.float32)
-
-
 def evaluate(genomes, shape, controller, terrain, seconds=30.0, threads=None, noise_seed=0):
     """Velocity (m/s, float64) of each row of `genomes` driving `controller` on `shape` over
     `terrain` for `seconds`, with sensor noise seeded by `noise_seed`: row i gives exactly
@@ -68,7 +59,7 @@ def evaluate(genomes, shape, controller, terrain, seconds=30.0, threads=None, no
     cores when None) with the GIL released. Genes are float32 (a float64 array is rounded to
     float32 once, as a run file stores them). An episode whose simulation became non-finite
     gives NaN."""
-    genomes = np.asarray(genomes)
+    genomes = _np.asarray(genomes)
     if genomes.ndim == 1:
         genomes = genomes[None, :]
     genomes = _genes(genomes, 2, "genomes")
@@ -135,14 +126,14 @@ def codesign(brain, evals, seed, module=None, controller="attention", start=None
     attention), raise ValueError in words."""
     text = None
     if module is not None:
-        with open(os.fspath(module), encoding="utf-8") as f:
+        with open(_os.fspath(module), encoding="utf-8") as f:
             text = f.read()
     run_text = _vsr.codesign(brain, int(evals), int(seed), text, controller, start,
                              float(seconds), terrain, grid, voxels, batch, threads)
     if out is not None:
-        with open(os.fspath(out), "w", encoding="utf-8") as f:
+        with open(_os.fspath(out), "w", encoding="utf-8") as f:
             f.write(run_text)
-    run = json.loads(run_text)
+    run = _json.loads(run_text)
     for entry in [run["best"], *run["archive"]]:
-        entry["genome"] = np.asarray(entry["genome"], dtype=np.float32)
+        entry["genome"] = _np.asarray(entry["genome"], dtype=_np.float32)
     return run

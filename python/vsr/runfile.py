@@ -10,6 +10,7 @@ import tempfile
 import numpy as np
 
 from . import _vsr
+from ._arrays import genes
 
 
 def _arrays(run):
@@ -49,9 +50,13 @@ def load_run(path):
 
 def save_run(path, run):
     """Writes the run `run` (a dict as load_run or new_run give) to `path`, checked first,
-    atomically: a temporary file in the same folder, then renamed."""
+    atomically: a temporary file in the same folder, then renamed. The folder must exist."""
     text = _vsr.check_run(json.dumps(_lists(run), allow_nan=False))
     folder = os.path.dirname(os.path.abspath(path))
+    if not os.path.isdir(folder):
+        # said of the path given, not of the temporary file mkstemp would name
+        raise FileNotFoundError(f"cannot write run file {os.fspath(path)}: its folder {folder} "
+                                "does not exist")
     fd, tmp = tempfile.mkstemp(prefix=".run-", suffix=".tmp", dir=folder)
     try:
         with os.fdopen(fd, "w", encoding="utf-8") as f:
@@ -62,13 +67,17 @@ def save_run(path, run):
         raise
 
 
-def new_run(genome, shape, controller, fitness=None, seed=0, evaluations=0):
+def new_run(genome, shape, controller, fitness=None, seed=0, evaluations=0, seconds=30.0,
+            terrain="hilly-1-10"):
     """A run (dict) for a genome found outside the engine, e.g. by CMA-ES: the paper's set-up
     for `shape` and `controller` as its configuration (seed `seed`, a budget of `evaluations`,
-    at least one GA population), no generation records, `genome` as its best with `fitness`.
-    ``vsr evaluate --genome FILE`` and the page replay it once saved."""
-    genes = [float(g) for g in np.asarray(genome, dtype=np.float32).ravel()]
+    at least one GA population), its episodes `seconds` long on `terrain` (a family such as
+    hilly-1-10, or one terrain such as flat), no generation records, `genome` as its best with
+    `fitness`. ``vsr evaluate --genome FILE`` and the page replay it once saved, for
+    `seconds` unless told otherwise."""
+    values = [float(g) for g in genes(np.ravel(genome), 1, "the genome")]
     if fitness is not None:
         fitness = float(fitness)
-    text = _vsr.new_run(genes, shape, controller, fitness, seed, evaluations)
+    text = _vsr.new_run(values, shape, controller, fitness, seed, evaluations, float(seconds),
+                        terrain)
     return _arrays(json.loads(text))

@@ -37,7 +37,7 @@ pub use topology::Topology;
 use crate::{Error, Result};
 
 /// Number of sensor readings per voxel: area, vx, vy, touch.
-pub(crate) const SENSORS_PER_VOXEL: usize = 4;
+pub const SENSORS_PER_VOXEL: usize = 4;
 /// Number of floats per voxel in an attention matrix (4x4, row-major).
 pub(crate) const ATTENTION_FLOATS_PER_VOXEL: usize = 16;
 

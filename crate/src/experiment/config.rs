@@ -8,7 +8,7 @@
 use super::seeds::{terrain_name_for, TERRAIN_SEEDS};
 use crate::controllers::{ControllerKind, ATTENTION_PARAMS};
 use crate::error::{Error, Result};
-use crate::genetics::GaConfig;
+use crate::genetics::{check_budget, GaConfig};
 use crate::simulation::{Shape, Terrain};
 use serde::{Deserialize, Serialize};
 
@@ -173,13 +173,7 @@ impl EvolutionConfig {
             ));
         }
         self.ga.validate(self.genome_len())?;
-        if self.ga.budget_evals < self.ga.population as u64 {
-            return bad(format!(
-                "an evaluation budget of {} is less than one population of {}: the budget \
-                 must cover at least the initial population",
-                self.ga.budget_evals, self.ga.population
-            ));
-        }
+        check_budget(self.ga.budget_evals, self.ga.population)?;
         match &self.source {
             Some(source) => self.validate_source(source),
             None if self.ga.frozen_prefix > 0 => bad(format!(

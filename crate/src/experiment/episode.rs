@@ -32,6 +32,13 @@ pub fn steps_for(seconds: f64) -> u64 {
     n
 }
 
+/// The simulated time (s) an episode asked to last `seconds` covers: its [`steps_for`]
+/// steps of dt (30.0167 s for 30: 1801 steps). Every output's `seconds` is this, the
+/// [`Outcome`]'s; the velocity is measured over the steps after the first (30 s).
+pub fn simulated_seconds(seconds: f64) -> f64 {
+    steps_for(seconds) as f64 * DT
+}
+
 /// The result of an episode.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Outcome {
@@ -42,7 +49,7 @@ pub struct Outcome {
     pub distance: f64,
     /// Steps taken.
     pub steps: u64,
-    /// Simulated seconds.
+    /// Simulated seconds: steps x dt (see [`simulated_seconds`]).
     pub seconds: f64,
 }
 

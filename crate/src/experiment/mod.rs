@@ -25,10 +25,12 @@ pub mod validation;
 
 pub use ablation::{ablate, unfrozen_velocity, AblationPoint, ABLATION_TERRAIN};
 pub use checkpoint::Checkpoint;
-pub use codesign::{best_in_file, BrainMode, Codesign, CodesignConfig, CodesignRun};
+pub use codesign::{
+    best_and_seconds_in_file, best_in_file, BrainMode, Codesign, CodesignConfig, CodesignRun,
+};
 pub use config::{EvolutionConfig, SourceRun, TrainingTerrain};
 pub use ensemble::{check_start_offset, gait_ensemble, Ensemble, ENSEMBLE_SHIFT};
-pub use episode::{steps_for, topology, Episode, GaitEpisode, Outcome, Policy};
+pub use episode::{simulated_seconds, steps_for, topology, Episode, GaitEpisode, Outcome, Policy};
 pub use evolution::{planned_evaluations, Evolution, Job};
 pub use finetune::{source_of, transplant};
 pub use freeze::freezable_policy;

@@ -51,6 +51,22 @@ pub(crate) fn check_init_range(low: f32, high: f32) -> Result<()> {
     Err(Error::Input(format!("bad init range [{low}, {high}]")))
 }
 
+/// The one check of an evaluation budget against the population (mu = lambda): at least one
+/// population, so that generation 0 is whole. Every evolution's configuration (`vsr evolve`,
+/// `vsr finetune`, a run file or checkpoint read) and every campaign file come through here.
+pub fn check_budget(budget_evals: u64, population: usize) -> Result<()> {
+    if population == 0 {
+        return Err(Error::Input("the population must be at least 1".into()));
+    }
+    if budget_evals < population as u64 {
+        return Err(Error::Input(format!(
+            "an evaluation budget of {budget_evals} is less than one population of \
+             {population}: the budget must cover at least the initial population"
+        )));
+    }
+    Ok(())
+}
+
 impl GaConfig {
     /// Checks the settings against a genome length; messages say what is accepted.
     pub(crate) fn validate(&self, genome_len: usize) -> Result<()> {

@@ -12,6 +12,6 @@ pub mod operators;
 mod stats;
 
 pub(crate) use config::check_init_range;
-pub use config::GaConfig;
+pub use config::{check_budget, GaConfig};
 pub use ga::{Candidate, Ga, GaState};
 pub use stats::GenerationStats;

@@ -20,9 +20,10 @@ pub struct Args {
     /// Freeze at every whole second 0 ..= LAST.
     #[arg(long, value_name = "LAST", default_value_t = 30)]
     last_second: u32,
-    /// Simulated seconds of each frozen episode.
-    #[arg(long, default_value_t = 30.0)]
-    seconds: f64,
+    /// Simulated seconds of each frozen episode [default: the run's own episode length,
+    /// config.seconds in the run file].
+    #[arg(long)]
+    seconds: Option<f64>,
     /// Print JSON: [{"freeze_second", "velocity"}...].
     #[arg(long)]
     json: bool,
@@ -33,7 +34,7 @@ pub struct Args {
 
 /// Runs the command.
 pub fn run(args: Args) -> Result<()> {
-    check_seconds(args.seconds)?;
+    args.seconds.map(check_seconds).transpose()?;
     if f64::from(args.last_second) > MAX_SECONDS {
         return Err(Error::Input(format!(
             "--last-second must be at most {MAX_SECONDS}, got {}",
@@ -43,8 +44,10 @@ pub fn run(args: Args) -> Result<()> {
     if let Some(out) = &args.out {
         crate::atomic::check_writable(out)?;
     }
-    let best = crate::runfile::load(&args.genome)?.best;
-    let points = ablate(&best, &args.terrain, args.last_second, args.seconds)?;
+    let run = crate::runfile::load(&args.genome)?;
+    let seconds = args.seconds.unwrap_or(run.config.seconds);
+    let best = run.best;
+    let points = ablate(&best, &args.terrain, args.last_second, seconds)?;
     if let Some(out) = &args.out {
         crate::atomic::write_json(out, &points, "ablation file")?;
     }
@@ -54,14 +57,13 @@ pub fn run(args: Args) -> Result<()> {
         println!("{body}");
         return Ok(());
     }
-    let unfrozen = unfrozen_velocity(&best, &args.terrain, args.seconds)?;
-    print_table(&args, unfrozen, &points);
+    let unfrozen = unfrozen_velocity(&best, &args.terrain, seconds)?;
+    print_table(&args.terrain, seconds, unfrozen, &points);
     Ok(())
 }
 
 /// The text output: what the rows mean, the unfrozen velocity, one row per freeze second.
-fn print_table(args: &Args, unfrozen: f64, points: &[AblationPoint]) {
-    let (terrain, seconds) = (&args.terrain, args.seconds);
+fn print_table(terrain: &str, seconds: f64, unfrozen: f64, points: &[AblationPoint]) {
     println!(
         "Frozen at s: every voxel's attention matrix as it was s seconds into a walk on \
          {terrain},\nthen held fixed (no longer computed from the sensors) for a fresh \

@@ -123,8 +123,9 @@ fn resume_from(path: &Path, config: &EvolutionConfig) -> Result<Option<Evolution
     });
     let (evolution, (generation, evaluations, code)) = resumed.map_err(|e| {
         Error::Input(format!(
-            "{}: {e}; delete it to start the run afresh",
-            path.display()
+            "{}: {}; delete it to start the run afresh",
+            path.display(),
+            e.message()
         ))
     })?;
     eprintln!(

@@ -1,6 +1,6 @@
 //! Argument parsing (clap) and dispatch to the subcommands.
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 
 /// VSR Playground: simulate and evolve voxel-based soft robots.
 #[derive(Parser, Debug)]
@@ -44,9 +44,27 @@ enum Command {
     Report(crate::campaign::report::Args),
 }
 
+/// The command line, every option accepting a negative number as its value: `--evals -5` is
+/// then refused by the value's own check ("invalid value '-5' for '--evals'", "episode seconds
+/// must be in (0, 3600]"), not as an unknown argument `-5`.
+fn command() -> clap::Command {
+    fn negative_values(command: clap::Command) -> clap::Command {
+        command
+            .mut_args(|arg| arg.allow_negative_numbers(true))
+            .mut_subcommands(negative_values)
+    }
+    negative_values(Cli::command())
+}
+
+fn parse() -> Result<Cli, clap::Error> {
+    let mut command = command();
+    let matches = command.try_get_matches_from_mut(std::env::args_os())?;
+    Cli::from_arg_matches(&matches).map_err(|e| e.format(&mut command))
+}
+
 /// Parses arguments, runs the command and returns the process exit code.
 pub fn run() -> i32 {
-    let cli = match Cli::try_parse() {
+    let cli = match parse() {
         Ok(cli) => cli,
         Err(e) => {
             let code = if e.use_stderr() { 2 } else { 0 };

@@ -107,7 +107,7 @@ fn start(config: CodesignConfig, checkpoint: &Path) -> Result<Codesign> {
     let Ok(text) = std::fs::read_to_string(checkpoint) else {
         return Codesign::new(config);
     };
-    let named = |e: Error| Error::Input(format!("{}: {e}", checkpoint.display()));
+    let named = |e: Error| e.about(checkpoint.display());
     let run = CodesignRun::from_json(&text).map_err(named)?;
     if run.config != config {
         return Err(Error::Input(format!(

@@ -4,7 +4,6 @@
 
 use std::path::PathBuf;
 
-use vsr::experiment::config::check_seconds;
 use vsr::experiment::evaluate::controller_for;
 use vsr::experiment::{steps_for, Episode, Policy};
 use vsr::simulation::{Shape, Terrain};
@@ -22,9 +21,10 @@ pub struct Args {
     /// Another shape to put the genome on (its length must fit the shape).
     #[arg(long)]
     shape: Option<String>,
-    /// Simulated seconds.
-    #[arg(long, default_value_t = 30.0)]
-    seconds: f64,
+    /// Simulated seconds [default: the run's own episode length, config.seconds in the run
+    /// file].
+    #[arg(long)]
+    seconds: Option<f64>,
     /// Seed of the sensor noise.
     #[arg(long, default_value_t = 0)]
     noise_seed: u64,
@@ -36,8 +36,7 @@ pub struct Args {
 
 /// Runs the command.
 pub fn run(args: Args) -> vsr::Result<()> {
-    check_seconds(args.seconds)?;
-    let best = args.individual.load()?;
+    let (best, seconds) = args.individual.load(args.seconds)?;
     let shape = match &args.shape {
         Some(s) => Shape::parse(s)?,
         None => best.shape.clone(),
@@ -49,8 +48,8 @@ pub fn run(args: Args) -> vsr::Result<()> {
     // The episode `vsr::experiment::evaluate::evaluate` runs, stepped here so that
     // it can be recorded.
     let mut episode = Episode::with_policy(&shape, terrain, Policy::Brain(controller), noise);
-    crate::trajectory::run(&mut episode, steps_for(args.seconds), writer)?;
-    let outcome = episode.run(args.seconds)?;
+    crate::trajectory::run(&mut episode, steps_for(seconds), writer)?;
+    let outcome = episode.run(seconds)?;
     let body = serde_json::json!({
         "shape": shape.to_rows(),
         "controller": best.controller,

@@ -74,18 +74,22 @@ pub fn execute(mut config: EvolutionConfig, options: &RunOptions) -> Result<()> 
 fn print_summary(run: &RunFile, out: &Path) {
     let (last, timing) = (run.generations.last(), run.timing);
     println!(
-        "{} {} on {}: best {:.3} m/s after {} evaluations ({} generations) in {:.1} s on {} \
-         threads; wrote {}",
+        "{} {} on {}: best {:.3} m/s after {} evaluations ({}) in {:.1} s on {}; wrote {}",
         run.config.controller,
         run.config.shape.to_rows(),
         String::from(run.config.terrain.clone()),
         run.best.fitness,
         last.map_or(0, |g| g.evaluations),
-        run.generations.len(),
+        count(run.generations.len(), "generation"),
         timing.map_or(0.0, |t| t.wall_seconds),
-        timing.map_or(0, |t| t.threads),
+        count(timing.map_or(0, |t| t.threads), "thread"),
         out.display()
     );
+}
+
+/// "1 generation", "6 generations".
+fn count(n: usize, noun: &str) -> String {
+    format!("{n} {noun}{}", if n == 1 { "" } else { "s" })
 }
 
 /// A local rayon pool of `threads` threads (all cores when `None`).

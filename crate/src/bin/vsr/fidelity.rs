@@ -22,8 +22,7 @@ pub struct Args {
 pub fn run(args: Args) -> Result<()> {
     let text = std::fs::read_to_string(&args.reference)
         .map_err(|e| Error::Io(format!("cannot read {}: {e}", args.reference.display())))?;
-    let reference = Reference::parse(&text)
-        .map_err(|e| Error::Input(format!("{}: {e}", args.reference.display())))?;
+    let reference = Reference::parse(&text).map_err(|e| e.about(args.reference.display()))?;
     if let Some(out) = &args.out {
         crate::atomic::check_writable(out)?;
     }

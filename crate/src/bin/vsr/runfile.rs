@@ -4,6 +4,7 @@
 use std::fs;
 use std::path::{Path, PathBuf};
 
+use vsr::experiment::config::check_seconds;
 use vsr::experiment::RunFile;
 use vsr::{Error, Result};
 
@@ -37,18 +38,20 @@ pub struct Individual {
 }
 
 impl Individual {
-    /// Its body and brain (see [`load_best`]).
-    pub fn load(&self) -> Result<vsr::experiment::Best> {
-        load_best(&self.genome, self.entry)
+    /// Its body and brain, and the episode length (s) to walk it for: `seconds` when given,
+    /// else its run's own (`config.seconds` of the file), checked; errors name the file.
+    pub fn load(&self, seconds: Option<f64>) -> Result<(vsr::experiment::Best, f64)> {
+        seconds.map(check_seconds).transpose()?;
+        let text = fs::read_to_string(&self.genome).map_err(|e| {
+            Error::Io(format!(
+                "cannot read run file {}: {e}",
+                self.genome.display()
+            ))
+        })?;
+        let (best, own) = vsr::experiment::best_and_seconds_in_file(&text, self.entry)
+            .map_err(|e| in_file(&self.genome, e))?;
+        Ok((best, seconds.unwrap_or(own)))
     }
-}
-
-/// The body with its brain in a run file or a co-design run file (its best, or archive entry
-/// `entry` of a co-design file), naming the file in every error.
-pub fn load_best(path: &Path, entry: Option<usize>) -> Result<vsr::experiment::Best> {
-    let text = fs::read_to_string(path)
-        .map_err(|e| Error::Io(format!("cannot read run file {}: {e}", path.display())))?;
-    vsr::experiment::best_in_file(&text, entry).map_err(|e| in_file(path, e))
 }
 
 /// `e` with the file named first (and said once: "invalid input" is not repeated).

@@ -4,7 +4,6 @@
 
 use std::path::PathBuf;
 
-use vsr::experiment::config::check_seconds;
 use vsr::experiment::{validate_on, ValidationSet};
 use vsr::{Error, Result};
 
@@ -13,9 +12,10 @@ use vsr::{Error, Result};
 pub struct Args {
     #[command(flatten)]
     individual: crate::runfile::Individual,
-    /// Simulated seconds per episode.
-    #[arg(long, default_value_t = 30.0)]
-    seconds: f64,
+    /// Simulated seconds per episode [default: the run's own episode length, config.seconds
+    /// in the run file].
+    #[arg(long)]
+    seconds: Option<f64>,
     /// The terrains: paper (hilly-1-10-0..9, also in the training pool) or unseen
     /// (hilly-1-10-10000..10009).
     #[arg(long, default_value = "paper")]
@@ -30,12 +30,11 @@ pub struct Args {
 
 /// Runs the command.
 pub fn run(args: Args) -> Result<()> {
-    check_seconds(args.seconds)?;
-    let best = args.individual.load()?;
+    let (best, seconds) = args.individual.load(args.seconds)?;
     if let Some(out) = &args.out {
         crate::atomic::check_writable(out)?;
     }
-    let validation = validate_on(&best, args.set, args.seconds)?;
+    let validation = validate_on(&best, args.set, seconds)?;
     if let Some(out) = &args.out {
         crate::atomic::write_json(out, &validation, "validation file")?;
     }

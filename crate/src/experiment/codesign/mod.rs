@@ -62,16 +62,23 @@ pub fn is_codesign(text: &str) -> bool {
 /// file's best (or archive entry `entry`, in cell order). `entry` on a plain run file is
 /// refused: it has one body.
 pub fn best_in_file(text: &str, entry: Option<usize>) -> Result<Best> {
+    Ok(best_and_seconds_in_file(text, entry)?.0)
+}
+
+/// [`best_in_file`] with the episode length (s) the file's run was evolved with (its
+/// `config.seconds`): the length its best is walked for when none is asked for.
+pub fn best_and_seconds_in_file(text: &str, entry: Option<usize>) -> Result<(Best, f64)> {
     if is_codesign(text) {
         let run = CodesignRun::from_json(text)?;
-        return match entry {
-            Some(i) => run.entry_best(i),
-            None => Ok(run.best),
+        let best = match entry {
+            Some(i) => run.entry_best(i)?,
+            None => run.best,
         };
+        return Ok((best, run.config.seconds));
     }
     let run = RunFile::from_json(text)?;
     match entry {
-        None | Some(0) => Ok(run.best),
+        None | Some(0) => Ok((run.best, run.config.seconds)),
         Some(i) => Err(crate::error::Error::Input(format!(
             "entry {i}: this run file has one body (entry 0); entries belong to co-design run files"
         ))),

@@ -42,7 +42,7 @@ use crate::controllers::ControllerKind;
 use crate::error::{Error, Result};
 use crate::experiment::config::{check_seconds, PAPER_SECONDS, PAPER_TERRAIN};
 use crate::experiment::{TrainingTerrain, ValidationSet};
-use crate::genetics::GaConfig;
+use crate::genetics::{check_budget, GaConfig};
 use crate::simulation::Shape;
 use serde::Deserialize;
 
@@ -200,6 +200,23 @@ impl Campaign {
                     "fidelity reference '{}' must be a .json file of gait ensembles",
                     g.reference
                 ));
+            }
+        }
+        self.check_budgets()
+    }
+
+    /// Every run's budget covers one population, as `vsr evolve` will check, so that no job
+    /// is planned to fail.
+    fn check_budgets(&self) -> Result<()> {
+        let evolve = self.evolve.iter().map(|g| (&g.name, g.evals.clone()));
+        let finetune = self.finetune.iter().map(|g| {
+            let budgets = [Some(g.source_evals), Some(g.evals), g.scratch_evals];
+            (&g.name, budgets.into_iter().flatten().collect())
+        });
+        for (name, budgets) in evolve.chain(finetune) {
+            for budget in budgets {
+                check_budget(budget, self.population)
+                    .map_err(|e| e.about(format!("group '{name}'")))?;
             }
         }
         Ok(())

@@ -2,13 +2,14 @@
 //! (or the part `--only` names) on this machine.
 //!
 //! Each job is the `vsr` command `campaign plan` prints, run as a child process of this very
-//! binary with its output in `OUT/logs/STEM.log`. Jobs whose output file exists are skipped,
-//! so a stopped campaign resumes where it was; every command writes its one output
-//! atomically, so a killed job leaves no partial file and is simply run again. Up to N jobs
-//! run at once, each evolution with T threads: keep N x T at most the number of cores (the
-//! default: N = cores, T = 1, the most efficient for a grid of many runs; results never
-//! depend on T). A job starts as soon as the files it needs exist; a job whose input could
-//! not be made is skipped and reported.
+//! binary with its output in `OUT/logs/FOLDER-NAME.log`, named after its output file and that
+//! file's folder (`runs-X.json.log`, `ablation-X.json.log`: a run and its ablation share a
+//! file name). Jobs whose output file exists are skipped, so a stopped campaign resumes where
+//! it was; every command writes its one output atomically, so a killed job leaves no partial
+//! file and is simply run again. Up to N jobs run at once, each evolution with T threads:
+//! keep N x T at most the number of cores (the default: N = cores, T = 1, the most efficient
+//! for a grid of many runs; results never depend on T). A job starts as soon as the files it
+//! needs exist; a job whose input could not be made is skipped and reported.
 
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -182,7 +183,7 @@ impl Runner<'_> {
             .file_name()
             .map_or("job".into(), |n| n.to_string_lossy());
         self.bar.set_message(name.to_string());
-        let log_path = self.out.join("logs").join(format!("{name}.log"));
+        let log_path = self.out.join("logs").join(log_name(&job.out));
         let Ok(log) = fs::File::create(&log_path) else {
             return false;
         };
@@ -196,6 +197,17 @@ impl Runner<'_> {
             .stderr(err)
             .status();
         matches!(status, Ok(s) if s.success()) && job.out.exists()
+    }
+}
+
+/// The log file name of the job writing `out`: its folder and file name, `runs-X.json.log`,
+/// `ablation-X.json.log`, as a run and its ablation share a file name.
+fn log_name(out: &Path) -> String {
+    let name = |p: Option<&std::ffi::OsStr>| p.map(|n| n.to_string_lossy().into_owned());
+    let file = name(out.file_name()).unwrap_or_else(|| "job".into());
+    match name(out.parent().and_then(Path::file_name)) {
+        Some(folder) => format!("{folder}-{file}.log"),
+        None => format!("{file}.log"),
     }
 }
 

@@ -40,7 +40,7 @@ impl Target {
         // (lexically: no symlinks resolved).
         let base = self.file.parent().unwrap_or(Path::new(""));
         let campaign = Campaign::parse(&text)
-            .map_err(|e| Error::Input(format!("{}: {e}", self.file.display())))?
+            .map_err(|e| e.about(self.file.display()))?
             .relative_to(base);
         let out = match &self.out_dir {
             Some(dir) => dir.clone(),
@@ -177,7 +177,5 @@ fn read_json<T>(path: &Path, parse: impl Fn(&str) -> Result<T>) -> Result<Option
     }
     let text = fs::read_to_string(path)
         .map_err(|e| Error::Io(format!("cannot read {}: {e}", path.display())))?;
-    parse(&text)
-        .map(Some)
-        .map_err(|e| Error::Input(format!("{}: {e}", path.display())))
+    parse(&text).map(Some).map_err(|e| e.about(path.display()))
 }

@@ -3,7 +3,7 @@
 
 use std::time::Instant;
 
-use vsr::experiment::{gait_ensemble, PhaseGait, ENSEMBLE_SHIFT};
+use vsr::experiment::{gait_ensemble, simulated_seconds, PhaseGait, ENSEMBLE_SHIFT};
 use vsr::simulation::{Shape, Terrain};
 use vsr::{Error, Result};
 
@@ -49,7 +49,8 @@ pub fn run(setup: &Setup, runs: usize, json: bool) -> Result<()> {
             "shape": setup.shape.to_rows(),
             "terrain": name,
             "gait": { "frequency": setup.gait.frequency, "phase": setup.gait.phase },
-            "seconds": setup.seconds,
+            // The simulated time of each run, as a single run reports it (steps x dt).
+            "seconds": simulated_seconds(setup.seconds),
             "start_offset": setup.base,
             "runs": runs,
             "offsets": e.offsets,

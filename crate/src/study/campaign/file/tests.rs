@@ -31,8 +31,30 @@ fn errors_name_the_problem() {
 }
 
 #[test]
+fn a_budget_below_one_population_is_refused() {
+    let group = |population: u32, evals: &str| {
+        format!(
+            "output = \"o\"\nseeds = [1]\npopulation = {population}\n[[evolve]]\nname = \"a\"\n\
+             shapes = [\"comb-7x2\"]\ncontrollers = [\"mlp\"]\nevals = [{evals}]\n"
+        )
+    };
+    assert!(Campaign::parse(&group(100, "100, 30000")).is_ok());
+    let error = |text: &str| Campaign::parse(text).unwrap_err().to_string();
+    assert_eq!(
+        error(&group(100, "30000, 50")),
+        "invalid input: group 'a': an evaluation budget of 50 is less than one population of \
+         100: the budget must cover at least the initial population"
+    );
+    assert!(error(&group(0, "10")).contains("population must be at least 1"));
+    let finetune = "output = \"o\"\nseeds = [1]\npopulation = 20\n[[finetune]]\nname = \"f\"\n\
+                    pairs = [[\"biped-4x3\", \"comb-7x2\"]]\ncontroller = \"attention\"\n\
+                    source_evals = 20\nevals = 20\nscratch_evals = 19\n";
+    assert!(error(finetune).contains("group 'f': an evaluation budget of 19"));
+}
+
+#[test]
 fn noninferiority_is_checked() {
-    let group = "output = \"o\"\nseeds = [3, 4]\n[[evolve]]\nname = \"ni\"\nshapes = [\"comb-7x2\"]\ncontrollers = [\"attention\", \"mlp-comm\"]\nevals = [10]\n";
+    let group = "output = \"o\"\nseeds = [3, 4]\npopulation = 10\n[[evolve]]\nname = \"ni\"\nshapes = [\"comb-7x2\"]\ncontrollers = [\"attention\", \"mlp-comm\"]\nevals = [10]\n";
     let with = |key: &str| Campaign::parse(&format!("{group}noninferiority = {{ {key} }}\n"));
     let ok = with("margin = 0.5, treatment = \"attention\", control = \"mlp-comm\"").unwrap();
     let n = ok.evolve[0].noninferiority.clone().unwrap();

@@ -79,6 +79,7 @@ fn a_longer_run_continues_the_shorter_one_with_the_same_seed() {
 #[test]
 fn chains_of_budgets_and_fine_tunings_of_continued_runs_come_stage_after_stage() {
     let text = CAMPAIGN
+        .replace("seeds = [1, 2]\n", "seeds = [1, 2]\npopulation = 10\n")
         .replace("evals = [300]", "evals = [300, 100, 30]")
         .replace(
             "pairs = [[\"comb-7x2\", \"biped-4x3\"]]",
