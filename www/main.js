@@ -113,7 +113,8 @@ const bodySearch = new CodesignPanel(document, {
     const drawn = drawing.rows();
     await robot.openBrain(() => brain);
     if (drawn !== brain.rows && drawing.rows() === brain.rows) {
-      showMessage('The body you clicked now stands in “1 · Draw” in place of your drawing: Undo there brings your drawing back.', 'note');
+      messages.show('The body you clicked, with its brain, now stands in “1 · Draw” in place of your drawing: Undo there brings '
+        + 'the shape of your drawing back, driven by this brain.', 'note');
     }
     el('scene').scrollIntoView({ block: 'nearest', behavior: 'instant' });
   },

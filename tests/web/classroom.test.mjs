@@ -282,7 +282,12 @@ test('a class challenge: its link sets the rules; three entries ranked by the pa
   await waitForText(small.page, 'challenge-rules', /any body of at most 12 voxels/);
   await small.page.locator('#rows').fill('11111-11111-11100');
   await small.page.locator('#rows').press('Enter');
-  await waitForText(small.page, 'message', /breaks the challenge's rules: 13 voxels, more than the challenge's 12\. Your teacher's ranking will not count it/, 5_000);
+  const grid = await small.page.locator('#editor').boundingBox();
+  await waitForText(small.page, 'rule-warning', /breaks the challenge's rules: 13 voxels, more than the challenge's 12\. Your teacher's ranking will not count it/, 5_000);
+  assert.deepEqual(await small.page.locator('#editor').boundingBox(), grid, 'the warning does not move the grid under the student\'s finger');
+  await small.page.locator('#rows').fill('11111-11111-11000');
+  await small.page.locator('#rows').press('Enter');
+  await byTestId(small.page, 'rule-warning').waitFor({ state: 'hidden', timeout: 5_000 }); // 12 voxels: within the rules again
   assert.deepEqual(small.problems, []);
   await small.page.context().close();
 });

@@ -100,8 +100,8 @@ export class Challenge {
     /** @type {Entry[]} */
     this.ranked = [];
     this.rules = rulesOf(location.search);
-    /** The rule the student's drawing breaks, as last said ('' when it keeps them). */
-    this.warned = '';
+    /** The line under the grid that says which rule a student's drawing breaks, while it does. */
+    this.warning = /** @type {HTMLElement} */ (el('rule-warning'));
     el('challenge-make').addEventListener('click', () => this.make());
     el('challenge-rank').addEventListener('click', () => this.rank());
     this.raceButton.addEventListener('click', () => this.raceBest());
@@ -141,16 +141,15 @@ export class Challenge {
   }
 
   /**
-   * A student's drawing changed: a body that breaks the challenge's rules is said at once (once
-   * for each way it breaks them), not only in the teacher's table. @param {string} rows
+   * A student's drawing changed: a body that breaks the challenge's rules is said at once, under
+   * the grid, for as long as it does (not only in the teacher's table). @param {string} rows
    */
   watch(rows) {
     if (!this.rules || this.section.dataset.mode !== 'student') return;
     const problem = rows ? bodyProblem(rows, this.rules) : '';
-    if (problem && problem !== this.warned) {
-      this.page.message(`Your robot breaks the challenge's rules: ${problem}. Your teacher's ranking will not count it: change the drawing (Undo under “1 · Draw”).`);
-    }
-    this.warned = problem;
+    // Under the grid, not above it: a line that appeared above would move the grid under the student's finger.
+    this.warning.textContent = problem ? `Your robot breaks the challenge's rules: ${problem}. Your teacher's ranking will not count it: change the drawing (Undo goes back a step).` : '';
+    this.warning.hidden = !problem;
   }
 
   /** Makes the challenge link of the form's rules. */

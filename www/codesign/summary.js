@@ -25,7 +25,7 @@ export function summaryWords(what, { record, evaluations, gallery, seconds }, en
   return `Brain: ${what} · ${gallery.length} kind${gallery.length === 1 ? '' : 's'} of body found (cells filled) in ${rounds} round${rounds === 1 ? '' : 's'}`
     + (best?.fitness != null ? ` · fastest: ${decimal(best.fitness)} m/s in training (${best.measurements === 1 ? 'one walk so far' : `the mean of ${best.measurements} walks`}), `
       + `${best.voxels} voxels with ${best.feet} ${best.feet === 1 ? 'foot' : 'feet'}` : '')
-    + ` · ${ended ? 'searched' : 'searching'} for ${decimal(seconds, 0)} s${rate}`;
+    + ` · ${ended ? 'searched' : 'searching'} for ${seconds < 1 ? 'under a second' : `${decimal(seconds, 0)} s`}${rate}`;
 }
 
 /**
