@@ -58,7 +58,7 @@ export class RunProgress {
     // The comparison's figures replace the fine-tuning's: its result stays in words beside them.
     const tuned = mode === 'scratch' ? this.table.filter((row) => row[0] === RUN_WORDS.finetune).at(-1) : undefined;
     this.out.phase.textContent = tuned
-      ? `From scratch, the comparison (fine-tuning reached ${fixed(Number(tuned[5]))} m/s, its best so far, in ${count(Number(tuned[2]))} evaluations):`
+      ? `From scratch, the comparison (fine-tuning ended at ${fixed(Number(tuned[3]))} m/s, its last generation's best, the brain it keeps, after ${count(Number(tuned[2]))} evaluations):`
       : PHASE[mode] ?? '';
     this.out.phase.hidden = !this.out.phase.textContent;
     show(this.out.evaluations, 0, `0 / ${count(planned)}`);

@@ -68,10 +68,12 @@ test('Fine-tune runs live, keeps the 32 attention genes, and the from-scratch li
   const finetuneSeconds = (Date.now() - started) / 1000;
   assert.match(String(await byTestId(page, 'evaluations').textContent()), /\/ 30$/, 'the same budget from scratch');
   assert.match(String(await byTestId(page, 'run-phase').textContent()),
-    /^From scratch, the comparison \(fine-tuning reached [−-]?\d+\.\d\d m\/s, its best so far, in 30 evaluations\):$/, 'the fine-tuning\'s result stays beside the comparison\'s figures');
+    /^From scratch, the comparison \(fine-tuning ended at [−-]?\d+\.\d\d m\/s, its last generation's best, the brain it keeps, after 30 evaluations\):$/, 'the fine-tuning\'s result stays beside the comparison\'s figures');
   await waitForText(page, 'run-status', /^from scratch: finished$/, 120_000);
   assert.equal(await byTestId(page, 'fitness-chart').getAttribute('data-series'), 'finetune,scratch');
   await waitForText(page, 'driver', /the fine-tuned run's result/);
+  const kept = /the best of its last generation, ([−-]?\d+\.\d\d) m\/s/.exec(String(await page.locator('#driver').textContent()))?.[1];
+  assert.ok(kept && String(await byTestId(page, 'run-phase').textContent()).includes(`ended at ${kept} m/s`), 'one number for the fine-tuned brain, beside the comparison and under the robot');
   console.log(`# a 30-evaluation fine-tune in the page took ${finetuneSeconds.toFixed(1)} s`);
 
   const [download] = await Promise.all([page.waitForEvent('download'), byTestId(page, 'export').click()]);
