@@ -140,7 +140,7 @@ fn plan_run_merge_report_and_resume() {
     assert!(
         lost.contains("left: 12 evaluations, about")
             && lost.contains("finished runs of its controller)")
-            && lost.contains("hours on 1 cores"),
+            && lost.contains("hours on 1 core\n"),
         "the source run's 12 evaluations (4 + 2 x 4: the budget 8 passed): {lost}"
     );
     assert_eq!(

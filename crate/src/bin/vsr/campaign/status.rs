@@ -223,8 +223,9 @@ fn status(jobs: &[Job], cores: usize) -> String {
     text += &format!(
         "left: {left} evaluations, about {hours:.1} core-hours on one thread (each run at the \
          median time per evaluation, voxel and simulated second of the last {RECENT} finished runs \
-         of its controller{borrowed}); about {:.1} hours on {cores} cores\n",
-        hours / cores as f64
+         of its controller{borrowed}); about {:.1} hours on {cores} core{}\n",
+        hours / cores as f64,
+        if cores == 1 { "" } else { "s" }
     );
     text
 }
