@@ -77,7 +77,13 @@ async function handle(root, mounts, req, res) {
     res.writeHead(405, { allow: 'GET, HEAD' }).end();
     return;
   }
-  const urlPath = decodeURIComponent(new URL(req.url ?? '/', 'http://localhost').pathname);
+  let urlPath;
+  try { // an address that is no path ('//', a lone '%') is the asker's mistake, not the server's
+    urlPath = decodeURIComponent(new URL(`http://localhost${req.url ?? '/'}`).pathname);
+  } catch {
+    res.writeHead(400, { 'content-type': 'text/plain' }).end(`bad request: ${req.url}`);
+    return;
+  }
   const prefix = Object.keys(mounts).find((p) => urlPath.startsWith(p));
   const base = prefix ? mounts[prefix] : root;
   let file = path.resolve(base, '.' + (prefix ? urlPath.slice(prefix.length - 1) : urlPath));
