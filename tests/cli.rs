@@ -110,49 +110,6 @@ fn bad_arguments_exit_2_with_a_message() {
     assert_eq!(code, 2, "missing --shape: {err}");
 }
 
-/// `--evals -5` is a value refused by its own check, not an unknown argument `-5`.
-#[test]
-fn a_negative_number_after_a_flag_is_its_value() {
-    let out = scratch("negative.json");
-    let evolve = |flag: &str, value: &str| {
-        let mut options = vec![
-            ("--shape", "worm-3x1"),
-            ("--controller", "mlp"),
-            ("--evals", "100"),
-            ("--seed", "1"),
-            ("--out", out.to_str().expect("utf-8")),
-        ];
-        options.retain(|(f, _)| *f != flag);
-        options.push((flag, value));
-        let args: Vec<&str> = options.iter().flat_map(|(f, v)| [*f, *v]).collect();
-        vsr(&[&["evolve"][..], &args].concat())
-    };
-    let cases = [
-        ("--evals", "-5", "invalid value '-5' for '--evals <EVALS>'"),
-        ("--seed", "-1", "invalid value '-1' for '--seed <SEED>'"),
-        (
-            "--seconds",
-            "-3",
-            "episode seconds must be in (0, 3600], got -3",
-        ),
-        (
-            "--threads",
-            "-2",
-            "invalid value '-2' for '--threads <THREADS>'",
-        ),
-    ];
-    for (flag, value, message) in cases {
-        let (code, _, err) = evolve(flag, value);
-        assert_eq!(code, 2, "{flag} {value}: {err}");
-        assert!(err.contains(message), "{flag} {value}: {err}");
-        assert!(
-            !err.contains("unexpected argument"),
-            "{flag} {value}: {err}"
-        );
-    }
-    assert!(!out.exists());
-}
-
 #[test]
 fn bench_json_has_one_entry_per_shape_and_the_batch() {
     let (code, out, err) = vsr(&["bench", "--json", "--repeats", "1"]);

@@ -46,8 +46,7 @@ export class CodesignPanel {
     this.brain = /** @type {HTMLSelectElement} */ (el('codesign-brain'));
     for (const option of this.brain.options) option.textContent = BRAIN_WORDS[/** @type {keyof BRAIN_WORDS} */ (option.value)].menu;
     this.from = /** @type {HTMLSelectElement} */ (el('codesign-from'));
-    const box = this.from.querySelector('option[value="box"]');
-    if (box) box.textContent = BOX_WORDS;
+    this.from.querySelector('option[value="box"]')?.replaceChildren(BOX_WORDS);
     this.budget = /** @type {HTMLInputElement} */ (el('codesign-budget'));
     this.seconds = /** @type {HTMLInputElement} */ (el('codesign-seconds'));
     this.buttons = {

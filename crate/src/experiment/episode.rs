@@ -32,9 +32,7 @@ pub fn steps_for(seconds: f64) -> u64 {
     n
 }
 
-/// The simulated time (s) an episode asked to last `seconds` covers: its [`steps_for`]
-/// steps of dt (30.0167 s for 30: 1801 steps). Every output's `seconds` is this, the
-/// [`Outcome`]'s; the velocity is measured over the steps after the first (30 s).
+/// The simulated time (s) of an episode asked to last `seconds`: [`steps_for`] x dt, as [`Outcome`] says.
 pub fn simulated_seconds(seconds: f64) -> f64 {
     steps_for(seconds) as f64 * DT
 }
