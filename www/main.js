@@ -214,6 +214,7 @@ const playground = {
   setCodesign: (settings) => bodySearch.setUp(settings),
   /** @param {boolean} on whether the walk holds when its episode ends (the tour: what is measured is what is seen) */
   holdAtEpisodeEnd: (on) => viewer.holdAtEnd(on),
+  quietModules: (on) => modules.quiet(on),
   message: showMessage,
 };
 const lab = new Lab({ defaults, latestRun: () => race.run, raceSeconds: () => Number(race.seconds.value) });

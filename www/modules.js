@@ -9,12 +9,14 @@
 import { describeRun } from './core.js';
 import { fetchOk, messageOf } from './kit.js';
 import { keepModules, loadKeptModules } from './storage.js';
-import { BRAIN_WORDS } from './codesign/plan.js';
+import { SPEED_MARK, bodyWords, brainWords, shortLabel, unseenWords } from './module-names.js';
 import { lineageNote } from './tour/lineage.js';
 import { count, decimal } from './format.js';
 
 /** Where the served pretrained run files are (scripts/serve.mjs mounts pretrained/). */
 const PRETRAINED_DIR = 'pretrained/';
+/** What the list and its details say in place of speeds while {@link ModuleList.quiet}. */
+const HUSHED = 'Speeds are kept back until you reveal your answer to the tour\'s question';
 
 /**
  * @typedef {{key: string, label: string, text: string, short?: string}} Module  a run file and its name (`label`, in full:
@@ -48,6 +50,8 @@ export class ModuleList {
     this.described = 0;
     /** Each module's full name, by key (the list shows a short one: see {@link shortLabel}). @type {Map<string, string>} */
     this.labels = new Map();
+    /** Whether the list keeps its speeds to itself (while the tour's question waits for an answer: {@link quiet}). */
+    this.hushed = false;
     /** Each pretrained module's mean speed on the study's unseen terrains (m/s), by key: the list's number. @type {Map<string, number>} */
     this.unseen = new Map();
     /** The study run each pretrained module is (its name in the study's tables), by key. @type {Map<string, string>} */
@@ -126,11 +130,30 @@ export class ModuleList {
     }
     const existing = [...this.select.options].find((o) => o.value === key);
     const option = existing ?? new Option(short, key);
-    option.text = short;
-    option.title = label;
+    option.dataset.short = short;
     this.labels.set(key, label);
     if (Number.isFinite(mean)) this.unseen.set(key, mean);
+    this.name(option);
     if (!existing) into.append(option);
+  }
+
+  /**
+   * Keeps every speed out of the list and its details while `on` (a tour question about speeds
+   * waits for its answer: the list would give it away), and shows them again after.
+   * @param {boolean} on
+   */
+  quiet(on) {
+    if (on === this.hushed) return;
+    this.hushed = on;
+    for (const option of this.select.options) this.name(option);
+    this.describe();
+  }
+
+  /** Writes an option's name: its short name and full title, or, while {@link quiet}, both without speeds. @param {HTMLOptionElement} option */
+  name(option) {
+    const short = option.dataset.short ?? option.text;
+    option.text = this.hushed ? short.split(SPEED_MARK)[0] : short;
+    option.title = this.hushed ? HUSHED : this.labels.get(option.value) ?? short;
   }
 
   /** The study's runs are listed: a module's note says where its run stopped at another budget. @param {import('./tour/study.js').StudyRun[]} runs */
@@ -200,11 +223,12 @@ export class ModuleList {
       const took = info.evaluations > info.budget
         ? ` (it took ${count(info.evaluations)}: a ${info.foundBySearch ? 'search finishes its last round' : 'run finishes its last generation'})` : '';
       this.details.textContent = `This ${info.controller} brain of ${count(info.genes)} genes ${rows} with seed ${info.seed} and a budget of `
-        + `${count(info.budget)} evaluations${took}, in ${info.seconds}-s episodes on ${info.terrain}; in training it walked ${decimal(info.fitness)} m/s.`;
+        + `${count(info.budget)} evaluations${took}, in ${info.seconds}-s episodes on ${info.terrain}`
+        + (this.hushed ? `. ${HUSHED}.` : `; in training it walked ${decimal(info.fitness)} m/s.`);
       const lineage = lineageNote(this.studyRuns, this.studyRunOf.get(module?.key ?? '') ?? '');
       const unseen = this.unseen.get(module?.key ?? '');
-      if (lineage) this.details.textContent += ` ${lineage}`;
-      else if (unseen !== undefined) this.details.textContent += ` On ten terrains it never trained on, it averages ${decimal(unseen)} m/s, the speed beside it in the list.`;
+      const where = unseen === undefined ? '' : ` On ten terrains it never trained on, it averages ${decimal(unseen)} m/s, the speed beside it in the list.`;
+      if (!this.hushed) this.details.textContent += lineage ? ` ${lineage}` : where;
       this.loadButton.title = info.controller === 'attention'
         ? `Put it on your robot: it keeps its ${this.attentionGenes} attention genes (the block every voxel shares); `
           + 'the rest of its brain (each voxel position\'s output weights) is drawn new for your body'
@@ -243,42 +267,4 @@ export class ModuleList {
       this.hooks.message(`${file.name} is not a run file this page can read: ${messageOf(error)}`, 'import');
     }
   }
-}
-
-/**
- * A body in words: its preset's name with its rows (as “Rows” in “1 · Draw” writes them), else
- * its voxels and rows.
- * @param {string} rows @param {{name: string, rows: string}[]} presets
- */
-export function bodyWords(rows, presets) {
-  const name = presets.find((p) => p.rows === rows)?.name;
-  return name ? `${name} (rows ${rows})` : `a body of ${rows.split('').filter((c) => c === '1').length} voxels (rows ${rows})`;
-}
-
-/**
- * A module's name as the list shows it, short enough for a phone's width: what it is, then its
- * mean speed on the unseen terrains (the list's title and the details say what that speed is).
- * @param {string} what @param {number} mean m/s (NaN: not known)
- */
-export function shortLabel(what, mean) {
-  return Number.isFinite(mean) ? `${what} · ${decimal(mean)} m/s` : what;
-}
-
-/**
- * A best robot's speed on the study's unseen terrains, in the words every list of the page uses.
- * @param {number} mean m/s, the mean over the ten terrains
- */
-export function unseenWords(mean) {
-  return `on average ${decimal(mean)} m/s on ten terrains it never trained on`;
-}
-
-/**
- * How a body search's brain was evolved, in words (long, and short for the list), from its
- * condition in the campaign (`frozen`, `finetune`, `scratch-CONTROLLER`). @param {string} condition
- */
-function brainWords(condition) {
-  const kind = condition.startsWith('scratch-') ? 'scratch' : condition;
-  if (!(kind in BRAIN_WORDS)) return { long: `brain (${condition})`, short: condition };
-  const { short } = BRAIN_WORDS[/** @type {keyof BRAIN_WORDS} */ (kind)];
-  return kind === 'scratch' ? { long: 'brain from scratch', short } : { long: `module, ${short}`, short: `module, ${short}` };
 }

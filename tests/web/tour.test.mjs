@@ -9,14 +9,15 @@
  * click on Next to the robot walking; a figure, not a pass mark). The study panel shows its
  * figures and walks a run's best. On a phone a touch on the page folds the tour's text away
  * (a new chapter shows it again), and a study figure fits the phone's width (a tap opens it
- * full size). Screenshots: screenshots/tour-N-{1400,420}.png, study-{1400,420}.png.
+ * full size). A link to a chapter the tour does not have says how many it has. Screenshots:
+ * screenshots/tour-N-{1400,420}.png, study-{1400,420}.png.
  */
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 import { CHAPTERS } from '../../www/tour/chapters.js';
-import { ROOT, SCREENSHOTS, byTestId, openPage, start } from './harness.mjs';
+import { ROOT, SCREENSHOTS, byTestId, openPage, start, waitForText } from './harness.mjs';
 
 const STORAGE_KEY = 'vsr-playground/state/v1';
 
@@ -235,6 +236,14 @@ test('on a phone a study figure fits the screen\'s width, and a tap opens it ful
   assert.equal(await page.locator('#study-full').getAttribute('href'), await byTestId(page, 'study-image').getAttribute('src'), 'a tap opens it full size');
   assert.equal(await page.locator('.figure-hint').isVisible(), true, 'the phone is told to tap it');
   await page.screenshot({ path: path.join(SCREENSHOTS, 'study-420.png') });
+  assert.deepEqual(problems, []);
+  await page.context().close();
+});
+
+test('a link to a chapter the tour does not have says how many it has', async () => {
+  const { page, problems } = await openPage(env.browser, `${env.url}?chapter=12`, { width: 1400, height: 900 });
+  await waitForText(page, 'message', new RegExp(`no chapter “12”: the tour has ${CHAPTERS.length} chapters`));
+  assert.equal(await page.locator('#tour-box').isVisible(), false);
   assert.deepEqual(problems, []);
   await page.context().close();
 });

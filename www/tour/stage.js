@@ -28,6 +28,7 @@ const WALK_TIMEOUT_MS = 10_000;
  *   the episode the viewer walks now
  * @property {import('../race.js').Race} race
  * @property {(settings: {brain: string, from: string}) => void} setCodesign  the body search's brain and start body
+ * @property {(on: boolean) => void} quietModules  whether the module list keeps its speeds back (a question waits)
  * @property {(on: boolean) => void} holdAtEpisodeEnd  whether the walk holds when its episode ends
  * @property {(text: string) => void} message
  */

@@ -8,7 +8,7 @@
  */
 import { withStats } from '../classroom/simple-words.js';
 import { fetchOk, messageOf } from '../kit.js';
-import { shortLabel, unseenWords } from '../modules.js';
+import { shortLabel, unseenWords } from '../module-names.js';
 import { CLAIM_TABLE, FIGURES, STUDY_DIR, TABLES, figureSrc } from './figures.js';
 import { fillClaim, loadClaim } from './claim.js';
 import { lineageNote } from './lineage.js';

@@ -152,9 +152,11 @@ export class Tour {
     body.replaceChildren(...chapter.text.map((t) => paragraph(doc, t)));
     const task = this.classroom?.exercise(i, () => {
       for (const el of held) el.hidden = false;
-      if (this.index === i) this.page.race.hold(false);
+      if (this.index === i) this.holdAnswers(false);
     });
     if (task) for (const el of held) el.hidden = true;
+    // So does the rest of the page: the module list's speeds, the study's figures and findings.
+    this.holdAnswers(Boolean(task), false);
     this.raceHeld = Boolean(task && chapter.setup.race);
     if (task) body.append(task);
     body.append(paragraph(doc, chapter.task, 'Do', 'tour-task'), ...held);
@@ -240,10 +242,22 @@ export class Tour {
     button.textContent = folded ? 'Show text' : 'Hide text';
   }
 
+  /**
+   * While `on`, the page keeps back what would answer the chapter's question before the student
+   * does: the module list's speeds, the study panel's figures and the findings in plain words
+   * (tour.css), and, with `race`, the chapter's race at its start line.
+   * @param {boolean} on @param {boolean} [race] whether the race is let go too
+   */
+  holdAnswers(on, race = true) {
+    this.doc.body.toggleAttribute('data-answer-held', on);
+    this.page.quietModules(on);
+    if (race) this.page.race.hold(on);
+  }
+
   /** Leaves the tour: the playground stays as the chapter set it. */
   close() {
     this.opening++;
-    this.page.race.hold(false);
+    this.holdAnswers(false);
     this.page.holdAtEpisodeEnd(false);
     this.box.hidden = true;
     this.doc.body.classList.remove('touring');
