@@ -141,12 +141,15 @@ test('numbers that agree: the freeze verdict keeps one wording while the frozen 
 test('numbers that agree: during a fine-tune the walking best shows its own training figure, and why the viewer\'s differs', async () => {
   const { page, problems, context } = await openPage(env.browser, env.url);
   await attentionOnWorm(page); // the biped's attention on a 5-voxel worm
-  for (const [key, value] of Object.entries({ population: '6', seconds: '2', budget: '60', seed: '2', terrain: 'hilly-1-10', workers: '2' })) {
+  for (const [key, value] of Object.entries({ population: '6', seconds: '2', budget: '600', seed: '2', terrain: 'hilly-1-10', workers: '2' })) {
     await page.locator(`#run-${key}`).fill(value);
   }
   await byTestId(page, 'finetune').click();
   await waitForText(page, 'driver', /the best so far while fine-tuning/, 60_000);
-  // The note measures the walking best (asynchronously) and a newer best can take over: read both once they agree.
+  // The note measures the walking best (asynchronously) and a newer best can take over: paused,
+  // the best stays (a loaded machine can otherwise end the run first), and both are read once they agree.
+  await byTestId(page, 'pause').click();
+  await waitForText(page, 'run-pause', /^Resume$/);
   const agreed = await page.waitForFunction(() => {
     const driver = document.getElementById('driver')?.textContent ?? '';
     const note = document.querySelector('[data-testid="speed-note"]')?.textContent ?? '';
@@ -158,6 +161,7 @@ test('numbers that agree: during a fine-tune the walking best shows its own trai
   assert.ok(best, driver);
   assert.match(note, new RegExp(`^In training: ${best} m/s \\(its best single evaluation, on a hilly-1-10 terrain drawn fresh for that evaluation, 2-s episodes\\)\\. `
     + 'The viewer measures its speed as it walks, over a 2-s episode on hilly-1-10-0 \\(under the robot, once the episode is over\\)\\. Training draws a fresh terrain'), note);
+  await byTestId(page, 'pause').click();
   await page.waitForFunction(() => document.body.dataset.run === 'finished', undefined, { timeout: 120_000 });
   assert.match(String(await page.locator('#run-rate').textContent()), /evaluations\/s · took \d+ s$/, 'how long it took, on screen');
   assert.deepEqual(problems, []);
