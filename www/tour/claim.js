@@ -1,6 +1,6 @@
 // @ts-check
 /**
- * The test of the paper's own claim, that attention is "better or comparably" good as
+ * The test of the paper's own claim, that attention "performs better or comparatively" to
  * mlp-comm (not worse), in a newcomer's words. Read from the file `vsr report` writes for it
  * (study/report-noninferiority/noninferiority.json; crate/src/study/report/
  * noninferiority_summary.rs), never copied by hand: until every planned run is in, the file
@@ -51,7 +51,7 @@ function answerWords(s, shape) {
  */
 export function claimWords(s) {
   const perArm = count(s.planned_runs / (2 * s.shapes.length));
-  const asks = `The paper's own words are that ${s.treatment} does "better or comparably": that it is at least about as fast as ${s.control}. `
+  const asks = `The paper's own words are that ${s.treatment} "performs better or comparatively" to ${s.control}: that it is at least about as fast. `
     + `Ten runs of each cannot settle that, so a larger test asks it exactly: is ${s.treatment} slower by ${decimal(s.margin, 1)} m/s or more `
     + `(a margin fixed in advance, less than half of what the messages were worth on either body)? `
     + `Everything about it was written down before any of its runs began: ${perArm} fresh runs of each brain on each body, ${count(s.planned_runs)} in all.`;

@@ -143,7 +143,7 @@ function claimFigures() {
   return [
     { ...base, id: 'claim-intervals', file: 'intervals-noninferiority-unseen.svg',
       title: 'The larger test of the paper\'s claim: is attention slower than mlp-comm, on each body?',
-      paper: 'The paper says a brain with no messages (attention) walks "better or comparably" to one whose voxels send messages (mlp-comm). '
+      paper: 'The paper says a brain with no messages (attention) performs "better or comparatively" to one whose voxels send messages (mlp-comm). '
         + 'This test asked that exactly, fixed before any of its runs began: thirty fresh runs of each brain on each body.',
       read: 'Each row is a body: the dot is how much faster attention walks than mlp-comm on ten unseen terrains (the middle estimate, m/s), the bar the range the runs still allow (95%). '
         + 'The test asks whether attention could be 0.5 m/s slower or more (the dashed line at −0.5): a bar wholly right of that line says it is not, right of 0 too, that it is faster. '
@@ -151,7 +151,7 @@ function claimFigures() {
       runs: bodies.map(([, shape]) => ({ kind: 'scratch', shape, evals: 30000, controllers: pair })) },
     ...bodies.map(([body, shape]) => ({ ...base, id: `claim-${body}`, file: `fig4-noninferiority-${shape}-30000-unseen.svg`,
       title: `The larger test of the paper's claim on the ${body}: thirty runs of each brain`,
-      paper: 'The paper says attention walks "better or comparably" to mlp-comm. The answer of this test in words is above the figure.',
+      paper: 'The paper says attention "performs better or comparatively" to mlp-comm. The answer of this test in words is above the figure.',
       read: `${BOX} A point is the mean speed of one run's best robot over ten hilly terrains it was not trained on.`,
       runs: [{ kind: 'scratch', shape, evals: 30000, controllers: pair }] })),
   ];

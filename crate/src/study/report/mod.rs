@@ -173,9 +173,13 @@ fn evolve_section(
         "best fitness (m/s)",
         bands.collect(),
     );
+    // Every figure of the section says which seeds and how many runs it draws.
+    let runs = runs_note(
+        g.seeds.as_ref().unwrap_or(&results.campaign.seeds),
+        &samples,
+    );
     if let Some(fig3) = fig3 {
-        let seeds = g.seeds.as_ref().unwrap_or(&results.campaign.seeds);
-        fig3.notes = vec![runs_note(seeds, &samples)];
+        fig3.notes = vec![runs.clone()];
         if let Plot::Lines { marks, .. } = &mut fig3.plot {
             marks.extend(g.earlier.iter().map(|&e| figures::Mark {
                 x: e as f64,
@@ -194,11 +198,11 @@ fn evolve_section(
             let _ = writeln!(r.markdown, "![validation on the {set} set]({file})\n");
             r.figures.push(Figure {
                 file,
-                title: format!("{shape}: mean velocity on the {set} terrains"),
+                title: format!("{shape}, {evals} evaluations: mean velocity on the {set} terrains"),
                 x_label: "controller".into(),
                 y_label: "velocity (m/s)".into(),
                 plot: Plot::Boxes(boxes),
-                notes: box_notes(tests, &format!("{set} mean")),
+                notes: [vec![runs.clone()], box_notes(tests, &format!("{set} mean"))].concat(),
             });
         }
     }
