@@ -42,6 +42,7 @@ async function answerAndReveal(page, n) {
   // Nor does the rest of the page give it away: no speed in the module list, the study's figures and findings kept back.
   const speeds = () => page.locator('#module option').evaluateAll((os) => os.filter((o) => /m\/s/.test(o.textContent + o.title)).length);
   assert.equal(await speeds(), 0, `chapter ${n}: the module list keeps its speeds back`);
+  assert.equal(await page.locator('#robot-speed').isVisible(), false, `chapter ${n}: so does the viewer`);
   assert.doesNotMatch(String(await page.locator('#module-details').textContent()), /m\/s/, `chapter ${n}: so do its details`);
   for (const [shown, kept] of [['#study-image', '#study-panel'], ['#results-plain-body', '#results-plain']]) {
     assert.equal(await page.locator(shown).isVisible(), false, `chapter ${n}: ${shown} waits for the reveal`);
@@ -58,6 +59,7 @@ async function answerAndReveal(page, n) {
   if (setup.race) await page.locator('#race-panel:not([data-state="waiting"])').waitFor({ timeout: 10_000 });
   assert.ok(await speeds() > 0, `chapter ${n}: the module list's speeds after the reveal`);
   assert.equal(await page.locator('#study-image').isVisible(), true, `chapter ${n}: the study's figure after the reveal`);
+  assert.equal(await page.locator('#robot-speed').isVisible(), true, `chapter ${n}: the viewer's speed after the reveal`);
   assert.equal(await page.locator('[data-testid="answer-held-note"]:visible').count(), 0, `chapter ${n}: no note after the reveal`);
   return text;
 }

@@ -155,7 +155,7 @@ export class Tour {
       if (this.index === i) this.holdAnswers(false);
     });
     if (task) for (const el of held) el.hidden = true;
-    // So does the rest of the page: the module list's speeds, the study's figures and findings.
+    // So does the rest of the page: the robot's and the module list's speeds, the study's figures and findings.
     this.holdAnswers(Boolean(task), false);
     this.raceHeld = Boolean(task && chapter.setup.race);
     if (task) body.append(task);
@@ -244,8 +244,9 @@ export class Tour {
 
   /**
    * While `on`, the page keeps back what would answer the chapter's question before the student
-   * does: the module list's speeds, the study panel's figures and the findings in plain words
-   * (tour.css), and, with `race`, the chapter's race at its start line.
+   * does: the robot's speeds under the viewer, the module list's speeds, the study panel's
+   * figures and the findings in plain words (tour.css), and, with `race`, the chapter's race at
+   * its start line.
    * @param {boolean} on @param {boolean} [race] whether the race is let go too
    */
   holdAnswers(on, race = true) {
