@@ -20,7 +20,11 @@ export function showGeneCount(el, check, kind, attentionGenes, walking = '') {
       + `one set of weights per voxel position (each voxel adds ${SENSOR_NAMES.length}, one per sensor), and 1 bias shared by every voxel` : '';
   // A drawing in pieces is counted as drawn, beside the robot that still walks (its last whole body).
   const pending = !check.ok && n > 0 ? ` (for your drawing of ${n} voxels, once it is one piece; ${walking || 'the robot walking is your last whole drawing'})` : '';
-  el.replaceChildren(...(n > 0 ? withTerms(el.ownerDocument, `${genes} genes${pending}${detail}`) : []));
+  // The breakdown in its own span: a tour question about it hides it until answered (tour.css).
+  const breakdown = el.ownerDocument.createElement('span');
+  breakdown.className = 'gene-detail';
+  breakdown.append(...withTerms(el.ownerDocument, detail));
+  el.replaceChildren(...(n > 0 ? [...withTerms(el.ownerDocument, `${genes} genes${pending}`), breakdown] : []));
   el.title = 'Genes: the numbers evolution changes. Every voxel runs the same small network; '
     + 'what differs between voxels is only the output weights of its position.';
   el.dataset.value = String(genes);

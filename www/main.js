@@ -217,7 +217,7 @@ const playground = {
   quietModules: (on) => modules.quiet(on),
   message: showMessage,
 };
-const lab = new Lab({ defaults, latestRun: () => race.run, raceSeconds: () => Number(race.seconds.value) });
+const lab = new Lab({ defaults, latestRun: () => ({ ...race.run, running: robot.running }), raceSeconds: () => Number(race.seconds.value) });
 const study = new StudyPanel(document, playground);
 study.loaded.then(() => modules.setStudyRuns(study.runs));
 const tour = new Tour(document, playground, study, new Classroom(document, lab));

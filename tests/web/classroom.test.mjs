@@ -17,6 +17,7 @@ import { readFileSync, statSync } from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 import { EXERCISES, TASKS, exerciseOf } from '../../www/classroom/exercises.js';
+import { LESSONS } from '../../www/classroom/lesson-plan.js';
 import { CHAPTERS } from '../../www/tour/chapters.js';
 import { ROOT, SCREENSHOTS, byTestId, figure, openPage, screenshot, start, waitForText } from './harness.mjs';
 
@@ -103,6 +104,8 @@ test('the teacher\'s answer keys: every chapter\'s, the same as a student\'s rev
   const { page, problems } = await openPage(env.browser, `${env.url}?chapter=2`, { width: 1400, height: 900 });
   await ready(page);
   const student = await answerAndReveal(page, 2);
+  assert.equal(await byTestId(page, 'teacher-keys-open').isVisible(), false, 'the keys are folded away from a student');
+  await byTestId(page, 'tour-teacher').click();
   await byTestId(page, 'teacher-keys-open').click();
   const keys = byTestId(page, 'teacher-keys');
   await keys.waitFor();
@@ -115,8 +118,11 @@ test('the teacher\'s answer keys: every chapter\'s, the same as a student\'s rev
   assert.ok(rows[1].startsWith(`Answer: ${shown}.`), `the key of chapter 2 is the student's reveal: ${rows[1]} / ${shown}`);
   assert.match(rows[2], /^Answer: 4 genes\./);
   const plan = String(await keys.locator('.sheet-plan').textContent());
-  assert.match(plan, /First lesson: chapters 1 \(A voxel and its colours, 5 min\)/, `a lesson plan by chapter: ${plan}`);
-  assert.doesNotMatch(plan, /\b0 \(/, 'every planned chapter is in the tour');
+  assert.match(plan, /First lesson \(45 min\): Open the page.*; chapter 1 \(A voxel and its colours\), 5 min;/, `a lesson plan by chapter: ${plan}`);
+  // docs/teaching.md's table says the same plan.
+  const table = [...readFileSync(path.join(ROOT, 'docs/teaching.md'), 'utf8').matchAll(/^\| (First|Second) lesson \| (.+?) \| (\d+) \|/gm)]
+    .map((m) => `${m[1]} lesson: ${m[2]}, ${m[3]}`);
+  assert.deepEqual(table, LESSONS.flatMap((l) => l.steps.map((s) => `${l.name}: ${s.what}, ${s.minutes}`)), 'docs/teaching.md gives the page\'s plan');
   await byTestId(page, 'teacher-keys').screenshot({ path: path.join(SCREENSHOTS, 'classroom-keys-sheet.png') });
   await screenshot(page, 'classroom-keys.png');
   assert.deepEqual(problems, []);
@@ -127,6 +133,7 @@ test('Print worksheet: every chapter\'s task, room to write and its link, printe
   const { page, problems } = await openPage(env.browser, `${env.url}?chapter=1`, {
     width: 1400, height: 900, init: () => { window.print = () => { /** @type {any} */ (window).printed = true; }; } });
   await ready(page);
+  await byTestId(page, 'tour-teacher').click();
   await byTestId(page, 'worksheet-open').click();
   const sheet = byTestId(page, 'worksheet');
   await sheet.waitFor();

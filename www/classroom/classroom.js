@@ -10,6 +10,7 @@
 import { messageOf } from '../kit.js';
 import { CHAPTERS } from '../tour/chapters.js';
 import { exerciseOf } from './exercises.js';
+import { lessonPlan } from './lesson-plan.js';
 import { withTerms } from './simple-words.js';
 
 /** The address of chapter `index` (0-based), as text. @param {number} index */
@@ -105,6 +106,12 @@ export class Classroom {
     reveal.addEventListener('click', async () => {
       const mine = given();
       if (mine === '') return;
+      const wait = ex.wait?.(this.lab) ?? '';
+      if (wait) {
+        result.replaceChildren(make(doc, 'p', 'exercise-wait', wait));
+        result.hidden = false;
+        return;
+      }
       box.dataset.state = 'revealing';
       reveal.disabled = true;
       reveal.textContent = 'Running it…';
@@ -143,17 +150,24 @@ export class Classroom {
   tools() {
     const doc = this.doc;
     const bar = make(doc, 'div', 'tour-class');
+    // Folded and named for the teacher: the keys hold every chapter's answer.
+    const fold = make(doc, 'details', 'tour-teacher');
+    const summary = make(doc, 'summary', '', 'For the teacher: worksheet, answer keys, lesson plan');
+    summary.dataset.testid = 'tour-teacher';
+    const tools = make(doc, 'div', 'tour-teacher-tools');
     const print = /** @type {HTMLButtonElement} */ (make(doc, 'button', '', 'Print worksheet'));
     print.type = 'button';
     print.dataset.testid = 'worksheet-open';
     print.title = 'A sheet for a class: every chapter\'s task, room to write, the chapter\'s link';
     print.addEventListener('click', () => this.worksheet(true));
-    const keys = /** @type {HTMLButtonElement} */ (make(doc, 'button', '', 'Answer keys (teacher)'));
+    const keys = /** @type {HTMLButtonElement} */ (make(doc, 'button', '', 'Answer keys and lesson plan'));
     keys.type = 'button';
     keys.dataset.testid = 'teacher-keys-open';
     keys.title = 'Every task\'s answer, computed by the page now, with why';
     keys.addEventListener('click', () => this.keys());
-    bar.append(print, keys);
+    tools.append(print, keys);
+    fold.append(summary, tools);
+    bar.append(fold);
     return bar;
   }
 
@@ -191,6 +205,7 @@ export class Classroom {
       const part = make(doc, 'section', 'sheet-task');
       part.append(make(doc, 'h2', '', `Chapter ${i + 1}. ${chapter.title}`), make(doc, 'p', 'sheet-link', chapterLink(i)),
         make(doc, 'p', 'sheet-ask', ex?.ask ?? chapter.task));
+      if (ex) part.append(make(doc, 'p', 'sheet-do', `Do: ${chapter.task}`));
       if (!ex) {
         // a chapter without a task: its “Do”, and room to write
       } else if (ex.choices) {
@@ -243,17 +258,4 @@ export class Classroom {
     }
     sheet.dataset.state = 'done';
   }
-}
-
-/**
- * A plan for two lessons of about 45 minutes, one device for every two students (a suggestion,
- * by chapter title, so that it follows the chapters wherever they move).
- */
-function lessonPlan() {
-  const n = (/** @type {string} */ title) => CHAPTERS.findIndex((c) => c.title === title) + 1;
-  const part = (/** @type {[string, number][]} */ list) => list.map(([t, min]) => `${n(t)} (${t}, ${min} min)`).join(', ');
-  return 'A plan, if you want one: one device for every two students, about 45 minutes a lesson. First lesson: chapters '
-    + `${part([['A voxel and its colours', 5], ['A body', 5], ['One small brain in every voxel', 5], ['Attention, read on one voxel', 10], ['Evolution', 10], ['Three brains, side by side', 10]])}. `
-    + `Second lesson: ${part([['Freeze the attention', 5], ['Transplant a module', 10], ['Which body for this brain?', 10], ['Your turn', 15]])}. `
-    + 'The quick evolution, the fine-tuning and the body search each take a minute or two on a laptop: start them, then talk.';
 }

@@ -26,6 +26,7 @@ export const SATURATED = 0.9;
  * @property {string[]} [choices]    choices (else a number to guess)
  * @property {string} [unit]         the number's unit
  * @property {string} [try]          what to do after answering, to see it happen
+ * @property {(lab: import('./lab.js').Lab) => string} [wait]  why Reveal must wait (its answer is still being made), or ''
  * @property {(lab: import('./lab.js').Lab) => Promise<Key>} key
  */
 
@@ -52,6 +53,12 @@ const MISSING = { rows: '', brain: null, terrain: 'flat' };
 const setup = (title) => CHAPTERS.find((c) => c.title === title)?.setup ?? MISSING;
 /** The chapter's own module (a run file served with the page). @param {string} title */
 const moduleOf = (title) => setup(title).brain?.module ?? '';
+
+/** Whether the page's latest run is chapter 5's (evolving its brain on its body). @param {import('./lab.js').LatestRun} run */
+function ownRun(run) {
+  const { rows, controller } = setup(EVOLUTION);
+  return run.mode === 'evolve' && run.shape === rows && run.controller === controller;
+}
 
 /**
  * The index of the choice a ratio falls in: faster than 1, from a half to 1, under a half.
@@ -140,11 +147,13 @@ export const TASKS = [
     ask: 'Press Evolve. By the end of this quick run, how many times faster than the best of generation 0 (random brains) will the best brain be?',
     choices: ['less than 2 times', '2 to 10 times', 'more than 10 times'],
     try: 'Press Evolve, and when it ends press “Race first, middle and last” under “Side by side”.',
+    // Revealed during the run, its answer would be a generation's, not the run's end.
+    wait: (lab) => (lab.latestRun().running
+      ? 'Your run is still going: reveal once it ends (the question is about its last generation).' : ''),
     async key(lab) {
       // The page's own run counts only if it is this chapter's (a later chapter's run is another question).
       const run = lab.latestRun();
-      const { rows, controller } = setup(EVOLUTION);
-      const own = run.mode === 'evolve' && run.shape === rows && run.controller === controller ? run.bests : [];
+      const own = ownRun(run) ? run.bests : [];
       const bests = own.length >= 2 ? own : await lab.history(moduleOf(BRAIN));
       const source = own.length >= 2 ? 'this page\'s latest run'
         : `the study's best run of this brain on this body (${count(bests[bests.length - 1].evaluations ?? NaN)} evaluations)`;
@@ -234,7 +243,7 @@ export const TASKS = [
   },
   {
     chapter: YOURS,
-    ask: `This table (${voxels(/** @type {string} */ (setup(YOURS).rows))} voxels) has no brain: the phase gait drives it. With the same gait on this same hilly ground, will it be faster or slower than the biped of ten voxels (chapter 1's robot)?`,
+    ask: `This table (${voxels(/** @type {string} */ (setup(YOURS).rows))} voxels) has no brain: the phase gait drives it, on hilly ground. Chapter 1's biped of ten voxels walked on flat ground; put here, on this ground with this same gait, will the table be faster or slower than that biped?`,
     choices: ['faster', 'slower'],
     try: 'Watch its speed under the robot; then draw your own and compare.',
     async key(lab) {

@@ -13,7 +13,7 @@ const ask = requester('classroom/lab-worker.js', 'the classroom\'s measuring wor
 
 /** @typedef {import('./lab-worker.js').Walk} Walk */
 /** @typedef {{generation: number, fitness: number, evaluations?: number}} GenerationBest */
-/** @typedef {{bests: GenerationBest[], shape: string, controller: string, mode: string}} LatestRun  the page's latest run (race.js keeps it) */
+/** @typedef {{bests: GenerationBest[], shape: string, controller: string, mode: string, running: boolean}} LatestRun  the page's latest run (race.js keeps it) and whether it is still going */
 
 export class Lab {
   /**
