@@ -203,7 +203,10 @@ export class Renderer {
     const { ctx, canvas } = this;
     ctx.fillStyle = 'rgba(30, 50, 70, 0.8)';
     ctx.font = `${12 * dpr}px system-ui, sans-serif`;
-    for (let d = Math.ceil((view.left - this.origin) / 10) * 10; this.origin + d <= view.right; d += 10) {
+    // Every 10 m, or every 20, 50, 100 m where a narrow canvas would run the labels together.
+    const room = ctx.measureText('−100 m').width + 10 * dpr;
+    const step = [10, 20, 50, 100].find((m) => m * view.s >= room) ?? 100;
+    for (let d = Math.ceil((view.left - this.origin) / step) * step; this.origin + d <= view.right; d += step) {
       const text = d === 0 ? 'start' : `${plainNumber(d)} m`;
       const x = (this.origin + d - view.left) * view.s + 3 * dpr;
       if (x + ctx.measureText(text).width <= canvas.width) ctx.fillText(text, x, 14 * dpr); // a label cut by the edge is left out
