@@ -229,7 +229,7 @@ export const TASKS = [
     chapter: BODIES,
     ask: 'The body search keeps the brain\'s attention module exactly as it is while it changes the body. Of the brain\'s numbers (its genes), how many stay exactly the same on every body it tries?',
     unit: 'genes',
-    try: 'Press “Search bodies” and read the gene count of the bodies it finds.',
+    try: 'Press “Search bodies”, click a body in the gallery to watch it walk, and read its gene count under “3 · Give it a brain”.',
     async key(lab) {
       const box = '111-111-111'; // the search's start, a 3 × 3 box
       const biped = /** @type {string} */ (setup(GAIT).rows);

@@ -144,7 +144,7 @@ export const CHAPTERS = [
       'The attention is the same for any body, so one brain can be tried on many bodies without starting again: this is what the paper means by a brain that can be taken apart and put together in other forms.',
     ],
     task: 'Under “Search bodies for this brain”, press “Search bodies”. When the gallery fills, click a green body to watch it walk.',
-    notice: 'The gallery fills round by round: small bodies first, then larger ones and more feet. Green bodies are the fastest; an outline marks bodies new in the last round. The fastest body is often not the biped the brain was evolved on. Each body\'s speed is measured again every round on new hills, so a lucky walk does not stay on top. '
+    notice: 'The gallery fills round by round: small bodies first, then larger ones and more feet. Green bodies are the fastest; an outline marks bodies new in the last round. The fastest body is often not the biped the brain was evolved on. Each body\'s speed is measured again every round on new hills, so a lucky walk does not stay on top. A quick search is short: its bodies walk slower than the biped this brain had 30,000 evaluations to master. '
       + 'In our study of this search (ten long searches per brain, on hills the robots never trained on), this frozen brain found faster bodies than searches that had to evolve a plain network or a messaging network together with the body; against an attention brain evolved from scratch with the body, the searches were too few to tell.',
     setup: { rows: null, brain: { module: ATTENTION, on: 'own' }, terrain: VIEW, run: QUICK, codesign: { brain: 'frozen', from: 'box' } },
     figure: 'codesign-unseen',
