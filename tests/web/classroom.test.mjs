@@ -9,7 +9,7 @@
  * findings are kept back; after a run, one button races its first, middle and last generations' bests;
  * the simple-words switch hides formulas and statistics and stays on after a reload, and the
  * glossary explains the issue's newcomer words, linked where they appear, with the voxel's
- * width the core's (the plain results: results.test.mjs). Screenshots:
+ * width the core's (the plain results: results.test.mjs; the class challenge: challenge.test.mjs). Screenshots:
  * screenshots/classroom-*.png, worksheet.pdf.
  */
 import assert from 'node:assert/strict';
@@ -235,72 +235,4 @@ test('numbers that agree: the race says how long it lasts, the budget and the mo
   assert.doesNotMatch(String(attention?.notice), /stay there/, 'chapter 4 no longer says the values stay');
   assert.deepEqual(problems, []);
   await page.context().close();
-});
-
-test('a class challenge: its link sets the rules; three entries ranked by the page\'s own measure, a damaged and a foreign one named', async () => {
-  const { page, problems } = await openPage(env.browser, env.url, { width: 1400, height: 1000 });
-  /** @type {string[]} */
-  const links = [];
-  for (const file of ['pretrained/biped-4x3-attention.json', 'pretrained/biped-4x3-mlp.json']) {
-    await byTestId(page, 'pretrained').selectOption(file);
-    await page.locator('#module-open').click();
-    await waitForText(page, 'driver', /on its own body/);
-    await page.locator('#share').click();
-    await page.waitForFunction(() => /genome=/.test(/** @type {HTMLInputElement} */ (document.getElementById('share-link')).value));
-    links.push(await page.locator('#share-link').inputValue());
-    await page.locator('#share-link').evaluate((el) => { /** @type {HTMLInputElement} */ (el).value = ''; });
-  }
-  const fresh = await openPage(env.browser, env.url); // a new visitor: the first preset on the phase gait
-  await waitForText(fresh.page, 'status', /phase gait/);
-  await fresh.page.locator('#share').click();
-  await fresh.page.waitForFunction(() => /shape=/.test(/** @type {HTMLInputElement} */ (document.getElementById('share-link')).value));
-  links.push(await fresh.page.locator('#share-link').inputValue());
-  await fresh.page.context().close();
-  const damaged = links[0].replace(/genome=[^&]{12}/, 'genome=!!!!');
-  await byTestId(page, 'challenge').locator('summary').click();
-  await page.locator('#challenge-make').click();
-  const challengeUrl = await page.locator('#challenge-link').inputValue();
-  assert.match(challengeUrl, /\?challenge=1&terrain=hilly-1-10-0&seconds=30/);
-  await byTestId(page, 'challenge-compare').fill([`Ana ${links[0]}`, `Ben: ${links[1]}`, links[2], `Cleo ${damaged}`, 'Dan https://example.com/#shape=1', 'Eve not-a-link'].join('\n'));
-  await page.locator('#challenge-rank').click();
-  await page.locator('#challenge-panel[data-state="ranked"]').waitFor({ timeout: 60_000 });
-  const rows = await byTestId(page, 'challenge-table').locator('tbody tr').evaluateAll((trs) => trs.map((tr) => [...tr.children].map((td) => td.textContent)));
-  console.log(`# challenge table: ${JSON.stringify(rows)}`);
-  assert.equal(rows.length, 6, 'every line has a row');
-  assert.deepEqual(rows.slice(0, 3).map((r) => r[0]), ['1', '2', '3'], 'three ranked');
-  assert.equal(rows[0][1], 'Ana', 'the attention biped first');
-  assert.match(String(rows[0][3]), /^attention \(the pretrained module biped-4x3-attention, unchanged: not evolved here\)$/, 'a pretrained brain is named');
-  assert.equal(rows[2][3], 'no brain (phase gait)');
-  const speeds = rows.slice(0, 3).map((r) => Number.parseFloat(String(r[4]).replace('−', '-')));
-  assert.ok(speeds[0] >= speeds[1] && speeds[1] >= speeds[2], `ranked by speed: ${speeds}`);
-  assert.match(String(rows.find((r) => r[1] === 'Cleo')?.[4]), /damaged/);
-  assert.match(String(rows.find((r) => r[1] === 'Dan')?.[4]), /another page/);
-  assert.match(String(rows.find((r) => r[1] === 'Eve')?.[4]), /not a share link/, 'a line without a link keeps its name');
-  await byTestId(page, 'challenge-race').click();
-  await page.waitForFunction(() => document.querySelectorAll('[data-testid="race-robot"]').length === 2);
-  await byTestId(page, 'challenge').screenshot({ path: path.join(SCREENSHOTS, 'classroom-challenge.png') });
-  assert.deepEqual(problems, []);
-  await page.context().close();
-
-  const student = await openPage(env.browser, `${challengeUrl.replace(/^https?:\/\/[^/]+\//, env.url)}`, { width: 1400, height: 900 });
-  await waitForText(student.page, 'challenge-rules', /speed measured over 30 s on hilly-1-10-0; evolve with 2,000 evaluations, seed 1/);
-  await waitForText(student.page, 'message', /^Challenge: .*speed measured over 30 s on hilly-1-10-0; .*further down/); // at the top, where a student looks first
-  assert.equal(await student.page.locator('#terrain').inputValue(), 'hilly-1-10-0');
-  assert.equal(await student.page.locator('#run-budget').inputValue(), '2000');
-  assert.deepEqual(student.problems, []);
-  await student.page.context().close();
-
-  // A challenge of at most 12 voxels: a student's drawing of 13 is told at once, in the page's own words for the teacher's table.
-  const small = await openPage(env.browser, `${env.url}?challenge=1&terrain=hilly-1-10-0&voxels=12`, { width: 1400, height: 900 });
-  await waitForText(small.page, 'challenge-rules', /any body of at most 12 voxels/);
-  await small.page.locator('#rows').fill('11111-11111-11100');
-  await small.page.locator('#rows').press('Enter');
-  const grid = await small.page.locator('#editor').boundingBox();
-  await waitForText(small.page, 'rule-warning', /breaks the challenge's rules: 13 voxels, more than the challenge's 12\. Your teacher's ranking will not count it/, 5_000);
-  assert.deepEqual(await small.page.locator('#editor').boundingBox(), grid, 'the warning does not move the grid under the student\'s finger');
-  await small.page.locator('#rows').fill('11111-11111-11000');
-  await small.page.locator('#rows').press('Enter');
-  await byTestId(small.page, 'rule-warning').waitFor({ state: 'hidden', timeout: 5_000 }); // 12 voxels: within the rules again
-  assert.deepEqual(small.problems, []);
-  await small.page.context().close();
 });

@@ -1,0 +1,159 @@
+// @ts-check
+/**
+ * Browser test of the class challenge (node --test): before any challenge link the class is
+ * ranked by the form's rules, and the table says so; a challenge link made with "everyone uses
+ * the robot drawn now" keeps its body when the drawing changes afterwards (the class is ranked
+ * by the link's rules, and the table says the form differs); the entries are measured again by
+ * the page and ranked, a damaged, a foreign and a linkless line named, the same link pasted
+ * again counted once, the same robot under two names placed but said and raced once, a budget
+ * over the challenge's said and left out of the places; the table's header stays on one line at
+ * 1400 px; a reload brings back the made link, its rules and the pasted links. A student opening
+ * the link gets its rules, and a drawing over the voxel limit is told at once.
+ * Screenshots: screenshots/challenge-table-1400.png, classroom-challenge.png.
+ */
+import assert from 'node:assert/strict';
+import path from 'node:path';
+import { after, before, test } from 'node:test';
+import { SCREENSHOTS, byTestId, openPage, start, waitForText } from './harness.mjs';
+
+/** @type {Awaited<ReturnType<typeof start>>} */ let env;
+
+before(async () => { env = await start(); });
+after(async () => { await env?.close(); });
+
+/** The share link of what `page` shows now. @param {import('playwright-core').Page} page @param {RegExp} holds */
+async function shareLink(page, holds) {
+  await page.locator('#share-link').evaluate((el) => { /** @type {HTMLInputElement} */ (el).value = ''; });
+  await page.locator('#share').click();
+  await page.waitForFunction((source) => new RegExp(source).test(/** @type {HTMLInputElement} */ (document.getElementById('share-link')).value), holds.source);
+  return page.locator('#share-link').inputValue();
+}
+
+/** Ranks the compare box's lines and reads the table. @param {import('playwright-core').Page} page */
+async function rank(page) {
+  await page.locator('#challenge-rank').click();
+  await page.locator('#challenge-panel[data-state="ranked"]').waitFor({ timeout: 120_000 });
+  const table = byTestId(page, 'challenge-table');
+  const rows = await table.locator('tbody tr').evaluateAll((trs) => trs.map((tr) => [...tr.children].map((td) => String(td.textContent))));
+  return { rows, caption: String(await table.locator('caption').textContent()) };
+}
+
+test('a class challenge: ranked by the link the teacher made, duplicates, the same robot and a budget over the limit said, kept after a reload', async () => {
+  const { page, problems } = await openPage(env.browser, env.url, { width: 1400, height: 1000 });
+  /** @type {string[]} */
+  const links = [];
+  for (const file of ['pretrained/biped-4x3-attention.json', 'pretrained/biped-4x3-mlp.json']) {
+    await byTestId(page, 'pretrained').selectOption(file);
+    await page.locator('#module-open').click();
+    await waitForText(page, 'driver', /on its own body/);
+    links.push(await shareLink(page, /genome=/));
+  }
+  const fresh = await openPage(env.browser, env.url); // a new visitor: the first preset on the phase gait
+  await waitForText(fresh.page, 'status', /phase gait/);
+  links.push(await shareLink(fresh.page, /shape=/));
+  await fresh.page.context().close();
+  assert.match(links[0], /view=hilly-1-10-0.*budget=2000/, 'a share link holds its view and its run budget');
+  const damaged = links[0].replace(/genome=[^&]{12}/, 'genome=!!!!');
+  const otherTerrain = links[0].replace(/view=[^&]*/, 'view=flat'); // the same robot, only the terrain changed
+  const overBudget = links[1].replace(/budget=\d+/, 'budget=5000');
+
+  // No challenge link yet: the form's rules, and the table says so.
+  await byTestId(page, 'challenge').locator('summary').click();
+  await byTestId(page, 'challenge-compare').fill('Eve not-a-link');
+  let { caption } = await rank(page);
+  assert.match(caption, /^No challenge link made yet, so ranked by the rules in the form above: any body; /);
+
+  // Defect 1: the link's body is the one drawn when it was made, whatever is drawn when the class is ranked.
+  const drawn = await page.locator('#rows').inputValue();
+  assert.equal(drawn, '1111-1111-1001');
+  await page.locator('#challenge-fixed').check();
+  await page.locator('#challenge-make').click();
+  const challengeUrl = await page.locator('#challenge-link').inputValue();
+  assert.match(challengeUrl, /\?challenge=1&terrain=hilly-1-10-0&seconds=30&body=1111-1111-1001&budget=2000&seed=1$/);
+  await page.locator('#rows').fill('11111-11111-10101');
+  await page.locator('#rows').press('Enter');
+  await waitForText(page, 'shape-status', /^13 voxels/);
+  const pasted = [`Ana ${links[0]}`, `Ben: ${links[1]}`, links[2], `Cleo ${damaged}`, 'Dan https://example.com/#shape=1', 'Eve not-a-link',
+    `Fay ${links[0]}`, `Gus ${otherTerrain}`, `Hal ${overBudget}`].join('\n');
+  await byTestId(page, 'challenge-compare').fill(pasted);
+  let rows;
+  ({ rows, caption } = await rank(page));
+  console.log(`# challenge table: ${JSON.stringify(rows)}`);
+  assert.match(caption, /^Ranked by the rules of the challenge link you made: the body 1111-1111-1001; speeds measured again by this page over 30 s on hilly-1-10-0; at most 2,000 evaluations\. The form above \(or the robot drawn now\) differs from your link/);
+  assert.match(String(await page.locator('#challenge-rules').textContent()), /^Challenge: the body 1111-1111-1001;/, 'the rules line keeps the link\'s body');
+  assert.equal(rows.filter((r) => /not the challenge's body/.test(r[5])).length, 0, 'no entry rejected for the new drawing');
+
+  // The places: the fastest first, the same robot under two names placed and said; the rest after them.
+  assert.equal(rows.length, 9, 'every line has a row');
+  assert.deepEqual(rows.slice(0, 4).map((r) => [r[0], r[1]]), [['1', 'Ana'], ['2', 'Gus'], ['3', 'Ben'], ['4', 'entry 3']]);
+  assert.ok(rows.slice(4).every((r) => r[0] === '–'), 'the others have no place');
+  const row = (/** @type {string} */ name) => rows.find((r) => r[1] === name) ?? [];
+  assert.equal(row('Ana')[3], 'attention');
+  assert.match(row('Ana')[5], /^the pretrained module biped-4x3-attention, unchanged: not evolved here; the same robot as Gus \(same body and brain\) under another name$/);
+  assert.match(row('Gus')[5], /the same robot as Ana \(same body and brain\) under another name; raced once, as Ana$/);
+  assert.equal(row('Gus')[4], row('Ana')[4], 'the same robot, the same speed');
+  assert.equal(row('entry 3')[3], 'no brain (phase gait)');
+  const speeds = rows.slice(0, 4).map((r) => Number.parseFloat(r[4].replace('−', '-')));
+  assert.ok(speeds.every((s, i) => i === 0 || speeds[i - 1] >= s), `ranked by speed: ${speeds}`);
+  assert.match(row('Cleo')[5], /damaged/);
+  assert.match(row('Dan')[5], /another page/);
+  assert.match(row('Eve')[5], /not a share link/, 'a line without a link keeps its name');
+  assert.equal(row('Fay')[5], 'the same link as Ana: counted once, in Ana\'s row', 'a link pasted again is counted once');
+  assert.match(row('Hal')[5], /^evolved with 5,000 evaluations \(as its link says\), more than the challenge's 2,000; .*the same robot as Ben \(same body and brain\) under another name$/);
+  assert.match(row('Hal')[4], /m\/s$/, 'measured all the same, for the teacher to see');
+
+  // Defect 4: the header on one line at 1400 px.
+  await byTestId(page, 'challenge-table').screenshot({ path: path.join(SCREENSHOTS, 'challenge-table-1400.png') });
+  const lines = await byTestId(page, 'challenge-table').locator('th').evaluateAll((ths) => ths.map((th) => {
+    const range = document.createRange();
+    range.selectNodeContents(th);
+    return new Set([...range.getClientRects()].map((r) => Math.round(r.top))).size;
+  }));
+  assert.deepEqual(lines, [1, 1, 1, 1, 1, 1], 'every header word on one line');
+
+  // Racing: the best four with a brain, each robot once (Gus is Ana's robot).
+  await byTestId(page, 'challenge-race').click();
+  await page.waitForFunction(() => document.querySelectorAll('[data-testid="race-robot"]').length === 2);
+  assert.deepEqual(await page.locator('.race-name').allTextContents(), ['Ana', 'Ben']);
+  await byTestId(page, 'challenge').screenshot({ path: path.join(SCREENSHOTS, 'classroom-challenge.png') });
+
+  // Defect 2: a reload brings back the made link, its rules (the body as it was) and the pasted links.
+  await page.reload();
+  await waitForText(page, 'status', /voxels/);
+  assert.equal(await page.locator('.challenge-teacher').getAttribute('open'), '', 'the teacher\'s part opens on what was kept');
+  assert.equal(await page.locator('#challenge-link').inputValue(), challengeUrl);
+  assert.match(String(await page.locator('#challenge-rules').textContent()), /^Challenge: the body 1111-1111-1001;/);
+  assert.equal(await page.locator('#challenge-fixed').isChecked(), true);
+  assert.equal(await byTestId(page, 'challenge-compare').inputValue(), pasted);
+  assert.match(String(await byTestId(page, 'challenge-status').textContent()), /^Back from your last visit: the challenge link you made and the class's 9 links\. Press “Rank the class”/);
+  await byTestId(page, 'challenge-compare').fill(`Ana ${links[0]}`);
+  ({ rows, caption } = await rank(page));
+  assert.match(caption, /^Ranked by the rules of the challenge link you made: the body 1111-1111-1001;/, 'ranked by the kept rules');
+  assert.deepEqual(rows.map((r) => r[0]), ['1']);
+  assert.deepEqual(problems, []);
+  await page.context().close();
+
+  const student = await openPage(env.browser, `${challengeUrl.replace(/^https?:\/\/[^/]+\//, env.url)}`, { width: 1400, height: 900 });
+  await waitForText(student.page, 'challenge-rules', /the body 1111-1111-1001; speed measured over 30 s on hilly-1-10-0; evolve with 2,000 evaluations, seed 1/);
+  await waitForText(student.page, 'message', /^Challenge: .*speed measured over 30 s on hilly-1-10-0; .*further down/); // at the top, where a student looks first
+  assert.equal(await student.page.locator('#terrain').inputValue(), 'hilly-1-10-0');
+  assert.equal(await student.page.locator('#run-budget').inputValue(), '2000');
+  assert.equal(await byTestId(student.page, 'challenge-status').isVisible(), false, 'a student\'s page keeps no teacher\'s challenge');
+  assert.deepEqual(student.problems, []);
+  await student.page.context().close();
+});
+
+test('a challenge of at most 12 voxels: a student\'s drawing of 13 is told at once, in the words of the teacher\'s table', async () => {
+  const small = await openPage(env.browser, `${env.url}?challenge=1&terrain=hilly-1-10-0&voxels=12`, { width: 1400, height: 900 });
+  await waitForText(small.page, 'challenge-rules', /any body of at most 12 voxels/);
+  await small.page.locator('#rows').fill('11111-11111-11100');
+  await small.page.locator('#rows').press('Enter');
+  const grid = await small.page.locator('#editor').boundingBox();
+  await waitForText(small.page, 'rule-warning', /breaks the challenge's rules: 13 voxels, more than the challenge's 12\. Your teacher's ranking will not count it/, 5_000);
+  assert.deepEqual(await small.page.locator('#editor').boundingBox(), grid, 'the warning does not move the grid under the student\'s finger');
+  await small.page.locator('#rows').fill('11111-11111-11000');
+  await small.page.locator('#rows').press('Enter');
+  await byTestId(small.page, 'rule-warning').waitFor({ state: 'hidden', timeout: 5_000 }); // 12 voxels: within the rules again
+  assert.deepEqual(small.problems, []);
+  await small.page.context().close();
+});

@@ -1,0 +1,98 @@
+// @ts-check
+/**
+ * A class challenge's rules: a terrain, an episode, a largest body or one fixed body, the run's
+ * budget (the most evaluations an entry may be evolved with) and seed. They travel in a challenge
+ * link (`?challenge=1&terrain=...`: a query, so it never meets the share link's `#...`), are read
+ * back from it, and are the one check of a body and of a budget, for the student's drawing and
+ * for the teacher's ranking alike.
+ */
+import { count } from '../format.js';
+
+/** The challenge link's query parameters. */
+const KEYS = Object.freeze(['terrain', 'seconds', 'voxels', 'body', 'budget', 'seed']);
+
+/** @typedef {{terrain: string, seconds: number, voxels: number | null, body: string | null, budget: string, seed: string}} Rules */
+
+/**
+ * Rules from loose values (a link's query, a form, what was kept), each missing or wrong one the default.
+ * @param {{terrain?: unknown, seconds?: unknown, voxels?: unknown, body?: unknown, budget?: unknown, seed?: unknown}} v
+ * @returns {Rules}
+ */
+export function rulesFrom(v) {
+  const text = (/** @type {unknown} */ x) => (typeof x === 'string' ? x.trim() : typeof x === 'number' ? String(x) : '');
+  const voxels = Number(v.voxels);
+  return { terrain: text(v.terrain) || 'hilly-1-10-0', seconds: Number(v.seconds) || 30,
+    voxels: Number.isInteger(voxels) && voxels > 0 ? voxels : null, body: text(v.body) || null,
+    budget: text(v.budget) || '2000', seed: text(v.seed) || '1' };
+}
+
+/**
+ * The rules a challenge link holds, or null when the address has none.
+ * @param {string} search a location's query @returns {Rules | null}
+ */
+export function rulesOf(search) {
+  const p = new URLSearchParams(search);
+  if (!p.has('challenge')) return null;
+  return rulesFrom(Object.fromEntries(KEYS.map((k) => [k, p.get(k) ?? undefined])));
+}
+
+/** The challenge link of `rules` on this page. @param {Rules} rules */
+export function challengeLink(rules) {
+  const url = new URL(location.href);
+  url.search = '';
+  url.hash = '';
+  url.searchParams.set('challenge', '1');
+  for (const k of KEYS) {
+    const v = rules[/** @type {keyof Rules} */ (k)];
+    if (v !== null && v !== '') url.searchParams.set(k, String(v));
+  }
+  return url.href;
+}
+
+/** Whether two sets of rules are the same challenge. @param {Rules} a @param {Rules} b */
+export function sameRules(a, b) {
+  return KEYS.every((k) => String(a[/** @type {keyof Rules} */ (k)]) === String(b[/** @type {keyof Rules} */ (k)]));
+}
+
+/**
+ * Why a body breaks the rules `r` ('' when it keeps them). @param {string} rows @param {Rules} r
+ */
+export function bodyProblem(rows, r) {
+  const voxels = rows.split('').filter((c) => c === '1').length;
+  if (r.body && rows !== r.body) return `not the challenge's body (${r.body})`;
+  if (r.voxels && voxels > r.voxels) return `${voxels} voxels, more than the challenge's ${r.voxels}`;
+  return '';
+}
+
+/**
+ * Why a run budget breaks the rules `r` ('' when it keeps them, or when there is none to read).
+ * @param {string | undefined} budget the evaluations a share link's run settings say @param {Rules} r
+ */
+export function budgetProblem(budget, r) {
+  const used = Number(budget);
+  const most = Number(r.budget);
+  if (budget === undefined || !Number.isFinite(used) || !Number.isFinite(most) || used <= most) return '';
+  return `evolved with ${count(used)} evaluations (as its link says), more than the challenge's ${count(most)}`;
+}
+
+/** The body the rules allow, in words. @param {Rules} r */
+export function bodyWords(r) {
+  return r.body ? `the body ${r.body}` : r.voxels ? `any body of at most ${r.voxels} voxels` : 'any body';
+}
+
+/** The budget the rules allow, in words. @param {Rules} r */
+export function budgetWords(r) {
+  return `${Number.isFinite(Number(r.budget)) ? count(Number(r.budget)) : r.budget} evaluations`;
+}
+
+/** The rules in words, for the student. @param {Rules} r */
+export function rulesWords(r) {
+  return `Challenge: ${bodyWords(r)}; speed measured over ${r.seconds} s on ${r.terrain}; evolve with ${budgetWords(r)}, seed ${r.seed} (the number that fixes evolution's random draws). `
+    + `Under your robot the speed is over the page's episode; your teacher measures it again over ${r.seconds} s on ${r.terrain}, so it may differ. `
+    + 'When your robot walks, press “Share link” and send the link to your teacher.';
+}
+
+/** The rules in a line, for the teacher's table. @param {Rules} r */
+export function rankingWords(r) {
+  return `${bodyWords(r)}; speeds measured again by this page over ${r.seconds} s on ${r.terrain}; at most ${budgetWords(r)}`;
+}

@@ -1,0 +1,38 @@
+// @ts-check
+/**
+ * The teacher's ranking table: the placed entries, fastest first, then the entries without a
+ * place, each with why in its note (challenge-entries.js decides which is which).
+ */
+import { decimal } from '../format.js';
+
+const HEAD = Object.freeze(['place', 'name', 'body', 'brain', 'speed', 'note']);
+
+/**
+ * Fills `table` with the ranking.
+ * @param {HTMLTableElement} table @param {{placed: import('./challenge-entries.js').Entry[], others: import('./challenge-entries.js').Entry[]}} ranking
+ * @param {string} caption which rules the class was ranked by
+ */
+export function showRanking(table, ranking, caption) {
+  const doc = /** @type {Document} */ (table.ownerDocument);
+  table.replaceChildren();
+  table.hidden = false;
+  table.createCaption().textContent = caption;
+  const head = table.createTHead().insertRow();
+  for (const h of HEAD) {
+    const th = doc.createElement('th');
+    th.scope = 'col';
+    th.textContent = h;
+    head.append(th);
+  }
+  const body = table.createTBody();
+  const rows = [...ranking.placed.map((e, i) => ({ e, place: String(i + 1) })), ...ranking.others.map((e) => ({ e, place: '–' }))];
+  for (const { e, place } of rows) {
+    const row = body.insertRow();
+    row.dataset.testid = 'challenge-entry';
+    row.dataset.problem = String(e.problem !== '');
+    const measured = Number.isFinite(e.speed);
+    const note = [e.problem, ...e.notes].filter((n) => n !== '').join('; ');
+    for (const c of [place, e.name, e.rows || '–', e.brain || '–', measured ? `${decimal(e.speed)} m/s` : '–', note]) row.insertCell().textContent = c;
+    if (measured) row.cells[4].dataset.value = String(e.speed);
+  }
+}
