@@ -4,16 +4,19 @@
  * change (drafts too), put in a link by Share (address bar and clipboard), and read back at
  * start-up (a link first, else what was kept) or when a link is pasted into this tab. Every
  * state read is checked in full (share.js) before anything changes; a refused link says why
- * and what is shown instead, and a link whose brain is damaged opens without it and says so,
- * until the person closes the message.
+ * and what is shown instead, and a link whose brain is damaged, or any other part of it left
+ * out, opens without it and says so, until the person closes the message. Share makes only a
+ * link that opens: while the state cannot be shared (a drawing that is not a whole robot, a
+ * setting a link would refuse), the Share button is off and its tooltip says why.
  *
  * The latest state wins: a link in the address bar is read once. Once opened (or refused) it
  * leaves the address bar, and Share's link leaves it at the next change, so that a reload
  * shows the kept state, with every later edit, never an older link; the link shown beside Share
  * goes too.
  */
+import { messageOf } from './kit.js';
 import { plain } from './message.js';
-import { decodeState, encodeState } from './share.js';
+import { decodeState, encodeState, shareProblem } from './share.js';
 import { keep, loadKept } from './storage.js';
 
 /** Wait after the last change before keeping the state (ms). */
@@ -31,21 +34,31 @@ const KEEP_DELAY_MS = 300;
 export class Keeper {
   /**
    * @param {import('./core.js').Defaults} defaults
-   * @param {HTMLInputElement} linkField where a shared link is shown
+   * @param {{link: HTMLInputElement, button: HTMLButtonElement}} share where a shared link is shown, and the Share button
    * @param {KeeperHooks} hooks
    */
-  constructor(defaults, linkField, hooks) {
+  constructor(defaults, { link: linkField, button }, hooks) {
     this.defaults = defaults;
     this.linkField = linkField;
     this.hooks = hooks;
     this.timer = 0;
+    /** The Share button: off while the state cannot be shared. */
+    this.button = button;
+    /** Its tooltip while it can share. */
+    this.title = button.title;
+    /** States asked whether they can be shared: only the latest answer sets the button. */
+    this.asked = 0;
+    /** The latest state asked (its link) and the answer: '' or why it cannot be shared. */
+    this.verdict = { text: '', why: Promise.resolve('') };
   }
 
   /** Keeps the state shortly (changes in a burst are kept once). */
   schedule() {
     window.clearTimeout(this.timer);
     this.timer = window.setTimeout(() => {
-      const state = encodeState(this.hooks.state());
+      const now = this.hooks.state();
+      this.updateButton(now);
+      const state = encodeState(now);
       const problem = keep(state);
       if (problem) this.hooks.say(problem);
       else if (location.hash.length > 1 && location.hash.slice(1) !== state) dropLink();
@@ -56,6 +69,34 @@ export class Keeper {
         delete this.linkField.dataset.value;
       }
     }, KEEP_DELAY_MS);
+  }
+
+  /**
+   * Turns Share off, its tooltip saying why, while `state` cannot be shared; on otherwise.
+   * @param {import('./share.js').PageState} state
+   */
+  async updateButton(state) {
+    const ticket = ++this.asked;
+    const why = await this.whyNot(state);
+    if (ticket !== this.asked) return;
+    this.button.disabled = why !== '';
+    this.button.title = why ? `Share link is off: ${why}.` : this.title;
+  }
+
+  /**
+   * '' or why `state` cannot be shared, asked once for each state (a check that failed is asked again).
+   * @param {import('./share.js').PageState} state @returns {Promise<string>}
+   */
+  whyNot(state) {
+    const text = encodeState(state);
+    if (this.verdict.text !== text) {
+      const why = shareProblem(state, this.defaults.controllers, this.defaults.grid).catch((error) => {
+        if (this.verdict.why === why) this.verdict.text = '';
+        return `it could not be checked (${messageOf(error)})`;
+      });
+      this.verdict = { text, why };
+    }
+    return this.verdict.why;
   }
 
   /**
@@ -80,7 +121,7 @@ export class Keeper {
     if (!shown) await fallback();
     if (fromLink) dropLink(); // read once: from now on the kept state is the page's
     if (refused) this.refuse(refused, shown ? 'the robot you had here before' : `the example robot ${this.defaults.presets[0].name}`);
-    else if (fromLink && 'damaged' in fromLink) this.brainDamaged(fromLink.damaged ?? '');
+    else if (fromLink && 'state' in fromLink) this.opened(fromLink);
   }
 
   /** A link pasted into this tab (only the part after '#' changed): open it, unless a run goes on. */
@@ -91,12 +132,18 @@ export class Keeper {
     const problem = 'error' in opened ? opened.error : await this.hooks.apply(opened.state);
     dropLink();
     if (problem) this.refuse(problem, 'the robot you had before');
-    else if ('damaged' in opened) this.brainDamaged(opened.damaged ?? '');
+    else if ('state' in opened) this.opened(opened);
   }
 
-  /** The Share button: the state in the address bar and on the clipboard. */
+  /**
+   * The Share button: the state in the address bar and on the clipboard, if its link opens it;
+   * else it says why there is no link.
+   */
   async share() {
-    const url = `${location.origin}${location.pathname}#${encodeState(this.hooks.state())}`;
+    const state = this.hooks.state();
+    const why = await this.whyNot(state);
+    if (why) { this.hooks.say(`No link was made: ${why}.`); return; }
+    const url = `${location.origin}${location.pathname}#${encodeState(state)}`;
     history.replaceState(null, '', url);
     this.linkField.value = url;
     this.linkField.dataset.value = url;
@@ -116,10 +163,16 @@ export class Keeper {
       + `ask for it again. Shown instead: ${instead}, ${this.hooks.shown()}.`);
   }
 
-  /** A link opened without its brain, which was damaged. @param {string} why */
-  brainDamaged(why) {
-    this.hooks.say(`The brain in this link is damaged (${why}): the robot and settings are opened without it, `
-      + `${this.hooks.shown()}. Ask for the link again to get the brain.`);
+  /**
+   * A link opened: says what was left out of it (a damaged brain, other parts), if anything.
+   * @param {{damaged?: string, dropped: string[]}} read
+   */
+  opened({ damaged, dropped }) {
+    if (damaged !== undefined) {
+      this.hooks.say(`The brain in this link is damaged (${damaged}): the robot and settings are opened without it, `
+        + `${this.hooks.shown()}. Ask for the link again to get the brain.`);
+    }
+    if (dropped.length > 0) this.hooks.say(`${dropped.join(' ')} Shown: ${this.hooks.shown()}.`);
   }
 }
 

@@ -68,7 +68,7 @@ const viewer = new Viewer(document, {
   clicked: (pick) => editWalking(robot, pick),
   missed: () => messages.show('Click a voxel to remove it, or a spot right next to one (its own width away at most) to add one there.', 'note'),
 });
-const keeper = new Keeper(defaults, el('share-link'), {
+const keeper = new Keeper(defaults, { link: el('share-link'), button: el('share') }, {
   state: () => pageState(robot),
   apply: (state) => robot.restore(state),
   shown: () => `${drawing.rows()} (${robot.check.voxels} voxels) driven by ${robot.brain ? robot.brain.label : 'the phase gait'}`,

@@ -7,7 +7,9 @@
  * trained on, its training figure and whether it is a one-shot transplant (so that the speed
  * note says after a reload what it said before). Reading checks everything
  * with the core and returns a message instead of a state when anything is wrong, but for the
- * brain: a damaged brain is dropped and the rest kept.
+ * brain: a damaged brain is dropped and the rest kept. A part left out (a part this page does
+ * not know, a second copy pasted after the link) is said, never dropped in silence; `&amp;` (an
+ * e-mail tool's `&`) is read as `&`. A state is shared only if its link reads back (shareProblem).
  */
 import { checkGait, checkGenome, checkShape, checkTerrain, checkTrainingTerrain } from './core.js';
 import { messageOf } from './kit.js';
@@ -38,6 +40,14 @@ import { size } from './format.js';
 /** The run settings a state carries (the workers are this computer's, never shared). */
 export const RUN_KEYS = Object.freeze(['population', 'seconds', 'budget', 'seed', 'terrain']);
 
+/** The parts of a brain in a link: read only with its genome. */
+const BRAIN_PARTS = Object.freeze(['brain', 'genome', 'label', 'module', 'brain-seconds', 'brain-speed', 'brain-terrain', 'one-shot']);
+/** Every part a link may hold (encodeState writes them, decodeState reads them): any other is left out, and said. */
+const PARTS = Object.freeze(['shape', 'controller', 'view', 'gait', ...RUN_KEYS.map(runPart), ...BRAIN_PARTS]);
+
+/** The link's name of a run setting. @param {string} key */
+function runPart(key) { return key === 'terrain' ? 'train' : key; }
+
 /** @param {PageState} state @returns {string} URL-hash parameters (without '#') */
 export function encodeState(state) {
   const p = new URLSearchParams();
@@ -45,7 +55,7 @@ export function encodeState(state) {
   p.set('controller', state.controller);
   p.set('view', state.terrain);
   if (state.gait) p.set('gait', state.gait);
-  for (const k of RUN_KEYS) if (state.run[k] !== undefined) p.set(k === 'terrain' ? 'train' : k, state.run[k]);
+  for (const k of RUN_KEYS) if (state.run[k] !== undefined) p.set(runPart(k), state.run[k]);
   if (state.brain) {
     p.set('brain', state.brain.controller);
     p.set('genome', genomeToBase64(state.brain.genome));
@@ -71,12 +81,14 @@ export function encodeState(state) {
  * @param {string[]} controllers the families the page knows
  * @param {{width: number, height: number}} grid the editor's grid
  * @param {boolean} [draft] accept an unfinished drawing
- * @returns {Promise<{state: PageState, damaged?: string} | {error: string}>} a damaged brain
- *   (`damaged` says how) is dropped: the rest of the state, all valid, is kept
+ * @returns {Promise<{state: PageState, damaged?: string, dropped: string[]} | {error: string}>} a damaged brain
+ *   (`damaged` says how) is dropped: the rest of the state, all valid, is kept; `dropped`: the
+ *   other parts left out, each a sentence saying which and why
  */
 export async function decodeState(text, controllers, grid, draft = false) {
   try {
-    const p = new URLSearchParams(text.replace(/^#/, ''));
+    const { params, dropped } = firstCopy(text);
+    const p = new URLSearchParams(params);
     const rows = p.get('shape') ?? '';
     const lines = rows.split('-');
     if (!/^[01]+(-[01]+)*$/.test(rows)) return { error: `its robot "${rows.slice(0, 40)}" is not rows of 0 and 1` };
@@ -96,7 +108,7 @@ export async function decodeState(text, controllers, grid, draft = false) {
     /** @type {Record<string, string>} */
     const run = {};
     for (const k of RUN_KEYS) {
-      const v = p.get(k === 'terrain' ? 'train' : k);
+      const v = p.get(runPart(k));
       if (v === null) continue;
       const problem = k === 'terrain' ? await checkTrainingTerrain(v) : settingProblem(k, v);
       if (problem) return { error: problem };
@@ -104,10 +116,74 @@ export async function decodeState(text, controllers, grid, draft = false) {
     }
     const read = check.ok && p.get('genome') !== null ? await readBrain(p, rows, controllers) : { brain: null };
     const state = { rows, controller, terrain: view, gait, run, brain: 'brain' in read ? read.brain : null };
-    return 'error' in read ? { state, damaged: read.error } : { state };
+    dropped.push(...leftOut(p, state));
+    return 'error' in read ? { state, damaged: read.error, dropped } : { state, dropped };
   } catch (error) {
     return { error: messageOf(error) };
   }
+}
+
+/**
+ * The link's parameters as they were made: `&amp;` read as `&` (nothing is lost), and whatever
+ * follows the link's end (a second `http://`, `https://` or `#`: it was pasted twice, or
+ * another link after it) cut off and said. @param {string} text
+ * @returns {{params: string, dropped: string[]}}
+ */
+function firstCopy(text) {
+  const whole = text.replace(/^#/, '').replace(/&(amp;)+/g, '&');
+  const end = whole.search(/https?:\/\/|#/);
+  if (end < 0) return { params: whole, dropped: [] };
+  const params = whole.slice(0, end);
+  const rest = whole.slice(end);
+  const again = rest.slice(rest.indexOf('#') + 1).startsWith(params);
+  return { params, dropped: [again ? 'This link was pasted twice: only its first copy was read.'
+    : `Something was pasted after this link ("${rest.slice(0, 40)}"): only the link was read.`] };
+}
+
+/**
+ * The parts of link `p` that `state` (read from it) leaves out, each a sentence saying which and
+ * why: parts this page does not know, second copies of a part, a brain's parts without its
+ * genome, a module that is not one of this page's.
+ * @param {URLSearchParams} p @param {PageState} state @returns {string[]}
+ */
+function leftOut(p, state) {
+  const said = [];
+  const seen = new Set();
+  for (const key of p.keys()) {
+    const name = `"${key.slice(0, 30)}"`;
+    if (!PARTS.includes(key)) said.push(`Its part ${name} was left out: this page knows no such part.`);
+    else if (seen.has(key)) said.push(`Its second ${name} was left out: only the first is read.`);
+    seen.add(key);
+  }
+  const orphans = BRAIN_PARTS.filter((k) => k !== 'genome' && p.has(k));
+  if (p.get('genome') === null && orphans.length > 0) {
+    const many = orphans.length > 1;
+    said.push(`Its ${orphans.map((k) => `"${k}"`).join(', ')} ${many ? 'were' : 'was'} left out: ${many ? 'they describe' : 'it describes'} a brain, but the link holds no genome.`);
+  }
+  const module = p.get('module');
+  if (state.brain && module !== null && state.brain.module === null) {
+    said.push(`Its module "${module.slice(0, 40)}" was left out: it is not one of this page's pretrained modules, so this brain cannot be fine-tuned from it.`);
+  }
+  return said;
+}
+
+/**
+ * '' or why `state` cannot be shared, in words: a link must open what it shares, so the drawing
+ * must be a whole robot and the link made of it must read back (decodeState) in full.
+ * @param {PageState} state @param {string[]} controllers @param {{width: number, height: number}} grid
+ * @returns {Promise<string>}
+ */
+export async function shareProblem(state, controllers, grid) {
+  const check = state.rows ? await checkShape(state.rows) : null;
+  if (!check || check.voxels === 0) return 'a link opens your drawing, and it is empty: draw a robot (or Undo) to share it';
+  if (!check.ok) {
+    const what = check.pieces.length > 1 ? `in ${check.pieces.length} separate pieces` : `not a robot yet (${plain(check.message)})`;
+    return `a link opens your drawing, and it is ${what}: make it one whole robot (or Undo) to share it`;
+  }
+  const read = await decodeState(encodeState(state), controllers, grid);
+  if ('error' in read) return `its link would not open (${plain(read.error)}): fix that to share it`;
+  if (read.damaged) return `its brain would not open from a link (${read.damaged})`;
+  return '';
 }
 
 /**

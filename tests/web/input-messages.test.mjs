@@ -5,7 +5,9 @@
  * value is typed; run settings that are not valid say so at once in the plan line, with
  * Evolve off, one problem at a time, until they are fixed; a run file that cannot be read
  * replaces the previous one's message and goes when a good file is imported. Messages sit
- * in the page's flow, covering no control, at 1400 and at 420 px wide. Saves
+ * in the page's flow, covering no control, at 1400 and at 420 px wide. Share link is off, its
+ * tooltip saying why, while the drawing is not a robot (empty, in pieces) or a setting would
+ * make a link that cannot be opened; it never makes such a link, and is on again once fixed. Saves
  * screenshots/input-message.png and screenshots/input-message-phone.png.
  */
 import assert from 'node:assert/strict';
@@ -111,5 +113,43 @@ test('an unreadable run file: the next one replaces its message, a good one take
   const good = path.join(ROOT, 'pretrained', 'biped-4x3-mlp.json');
   await file.setInputFiles({ name: 'good.json', mimeType: 'application/json', buffer: fs.readFileSync(good) });
   await page.waitForFunction(() => document.getElementById('message')?.hasAttribute('hidden'), undefined, { timeout: 20_000 });
+  await closeClean(opened);
+});
+
+test('Share link is off while the drawing is not a robot or a setting is not valid, says why, and never makes a broken link', async () => {
+  const opened = await fresh();
+  const { page } = opened;
+  const share = byTestId(page, 'share');
+  const title = await share.getAttribute('title');
+  const off = async (/** @type {RegExp} */ why) => {
+    await page.waitForFunction(() => /** @type {HTMLButtonElement} */ (document.getElementById('share')).disabled);
+    assert.match(String(await share.getAttribute('title')), why);
+  };
+  await page.locator('#clear').click();
+  await off(/^Share link is off: a link opens your drawing, and it is empty: draw a robot \(or Undo\) to share it\.$/);
+  await share.evaluate((b) => { /** @type {HTMLButtonElement} */ (b).disabled = false; }); // clicked before the button turned off
+  await share.click();
+  await waitForText(page, 'message', /^No link was made: a link opens your drawing, and it is empty/);
+  assert.equal(await page.locator('#share-link').isHidden(), true, 'no link shown');
+  assert.equal(await page.evaluate(() => location.hash), '', 'no link in the address bar');
+  await byTestId(page, 'message').getByTestId('message-close').click();
+  await typeRows(page, '1101-1101-1001');
+  await off(/^Share link is off: a link opens your drawing, and it is in 2 separate pieces: make it one whole robot \(or Undo\) to share it\.$/);
+  await typeRows(page, '1111-1101-1001');
+  await page.waitForFunction(() => !(/** @type {HTMLButtonElement} */ (document.getElementById('share')).disabled));
+  assert.equal(await share.getAttribute('title'), title, 'its own tooltip back');
+  await page.locator('#run-population').fill('0');
+  await page.locator('#run-population').dispatchEvent('change');
+  await off(/^Share link is off: its link would not open \(population "0" is not a whole number from 1\)/);
+  await page.locator('#run-population').fill('20');
+  await page.locator('#run-population').dispatchEvent('change');
+  await share.click(); // on again: its link opens the robot it shares
+  await page.waitForFunction(() => (document.getElementById('share-link')?.dataset.value ?? '').includes('#'));
+  const link = String(await page.locator('#share-link').getAttribute('data-value'));
+  await byTestId(page, 'message').getByTestId('message-close').click(); // the note that the link is ready
+  const other = await openPage(env.browser, link);
+  await waitForText(other.page, 'status', /^9 voxels/);
+  assert.equal(await other.page.locator('#rows').inputValue(), '1111-1101-1001');
+  await closeClean(other);
   await closeClean(opened);
 });

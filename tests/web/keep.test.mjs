@@ -2,7 +2,9 @@
 /**
  * Browser test of keeping and sharing (node --test): Share puts the drawing, controller,
  * settings and genome in a link that a fresh browser opens to the same robot and genome;
- * a reload finds the drawing; the link shown goes once the robot changes; a damaged link (disconnected shape, unknown controller, larger
+ * a reload finds the drawing; the link shown goes once the robot changes; a link changed on the
+ * way (&amp; for &, pasted twice, parts this page does not read) opens all it carries and says
+ * what it left out; a damaged link (disconnected shape, unknown controller, larger
  * than the grid, bad settings) shows a readable message and changes nothing kept; at 420 px
  * on a touch screen the page does not scroll sideways, no button is cut, and a finger draws
  * and erases; while evolving, no main-thread task reaches 50 ms
@@ -60,6 +62,48 @@ test('a shared link opens the same robot, settings and genome in a fresh browser
   assert.equal(await page.locator('#rows').inputValue(), '1101-1111');
   assert.deepEqual([...problems, ...fresh.problems], []);
   await fresh.context.close();
+});
+
+/**
+ * The robot, controller, run settings and brain a link opened are the ones it carries (sharing
+ * them again gives the same link, bit for bit), and the message says `said` (null: nothing).
+ * @param {string} link @param {RegExp | null} said @param {import('playwright-core').Page} page
+ */
+async function assertOpened(link, said, { page }) {
+  await waitForText(page, 'status', /^10 voxels, attention$/);
+  assert.equal(await page.locator('#rows').inputValue(), '1111-1111-1001');
+  const values = await Promise.all(['seed', 'budget', 'terrain'].map((k) => page.locator(`#run-${k}`).inputValue()));
+  assert.deepEqual(values, ['77', '1234', 'hilly-1-10'], 'seed, budget and training terrain came back');
+  if (said) await waitForText(page, 'message', said);
+  else assert.equal(await byTestId(page, 'message').isHidden(), true, 'nothing lost, nothing said');
+  assert.doesNotMatch(String(await byTestId(page, 'message').textContent()), /damaged|could not be opened/);
+  assert.equal(new URL(await sharedLink(page)).hash, new URL(link).hash, 'the same state, brain bit for bit');
+}
+
+test('a link changed on the way still opens: &amp; read as &, a link pasted twice read once, a part left out said', async () => {
+  const { page, problems, context } = await openPage(env.browser, env.url);
+  await waitForText(page, 'status', /^10 voxels/);
+  await byTestId(page, 'pretrained').selectOption(ATTENTION);
+  await byTestId(page, 'load-pretrained').click();
+  await waitForText(page, 'status', /^10 voxels, attention$/);
+  for (const [key, value] of [['seed', '77'], ['budget', '1234'], ['terrain', 'hilly-1-10']]) {
+    await page.locator(`#run-${key}`).fill(value);
+    await page.locator(`#run-${key}`).dispatchEvent('change');
+  }
+  const link = await sharedLink(page);
+  assert.match(link, /genome=.*&label=/);
+  await context.close();
+  const opened = [];
+  for (const [url, said] of /** @type {[string, RegExp | null][]} */ ([
+    [link.replace(/&/g, '&amp;'), null], // an e-mail tool's &amp;: nothing is lost, nothing said
+    [`${link}${link}`, /^This link was pasted twice: only its first copy was read\. Shown: 1111-1111-1001 \(10 voxels\) driven by /],
+    [`${link}&colour=red&seed=5`, /Its part "colour" was left out: this page knows no such part\. Its second "seed" was left out: only the first is read\./],
+  ])) {
+    opened.push(await openPage(env.browser, url));
+    await assertOpened(link, said, opened[opened.length - 1]);
+  }
+  assert.deepEqual([...problems, ...opened.flatMap((o) => o.problems)], []);
+  for (const o of opened) await o.context.close();
 });
 
 test('a robot on the phase gait is shared with its gait: f and φ come back from the link', async () => {
