@@ -6,9 +6,8 @@
  * transplanted module, an evolved best, or the genome of a shared link. When the body
  * changes, the brain's genome follows it by grid position (the core's remap). Its state is
  * what the page keeps across reloads and shares as a link (robot-state.js); a click on the
- * walking robot edits it (walking-edit.js). The core answers from its worker (core.js), so a
- * change of the brain waits for it: changes apply one at a time, in the order they were asked
- * (serial), each on the drawing as it was when asked.
+ * walking robot edits it (walking-edit.js). The core answers from its worker (core.js): brain
+ * changes apply one at a time, in the order asked, each on the drawing as it was when asked.
  */
 import { followEdit, ownBody, transplanted } from './brain.js';
 import { checkShape } from './core.js';
