@@ -117,11 +117,18 @@ export class Keeper {
     }
     const kept = loadKept();
     const fromStorage = !shown && kept ? await decodeState(kept, controllers, grid, true) : null;
-    if (fromStorage && 'state' in fromStorage) shown = (await this.hooks.apply(fromStorage.state)) === '';
+    // Why what was kept from the last visit is not shown ('' when it is, or when nothing was kept).
+    let keptWhy = fromStorage && 'error' in fromStorage ? fromStorage.error : '';
+    if (fromStorage && 'state' in fromStorage) {
+      keptWhy = await this.hooks.apply(fromStorage.state);
+      shown = keptWhy === '';
+    }
     if (!shown) await fallback();
     if (fromLink) dropLink(); // read once: from now on the kept state is the page's
-    if (refused) this.refuse(refused, shown ? 'the robot you had here before' : `the example robot ${this.defaults.presets[0].name}`);
+    const example = `the example robot ${this.defaults.presets[0].name}`;
+    if (refused) this.refuse(refused, shown ? 'the robot you had here before' : example);
     else if (fromLink && 'state' in fromLink) this.opened(fromLink);
+    else if (keptWhy) this.hooks.say(`What this page kept from your last visit could not be opened (${plain(keptWhy)}): ${example} is shown instead.`);
   }
 
   /** A link pasted into this tab (only the part after '#' changed): open it, unless a run goes on. */

@@ -153,3 +153,18 @@ test('Share link is off while the drawing is not a robot or a setting is not val
   await closeClean(other);
   await closeClean(opened);
 });
+
+test('what was kept from the last visit and can no longer be opened is said, not dropped in silence', async () => {
+  const opened = await openPage(env.browser, env.url);
+  const { page } = opened;
+  const key = 'vsr-playground/state/v1';
+  await page.waitForFunction((k) => !!localStorage.getItem(k), key);
+  await page.evaluate((k) => { // a kept state with a run setting no link would open
+    const state = String(localStorage.getItem(k));
+    localStorage.setItem(k, /population=\d+/.test(state) ? state.replace(/population=\d+/, 'population=0') : `${state}&population=0`);
+  }, key);
+  await page.reload();
+  await waitForText(page, 'message', /^What this page kept from your last visit could not be opened \(.*population.*\): the example robot .* is shown instead\./);
+  await byTestId(page, 'message').getByTestId('message-close').click(); // it stays until read
+  await closeClean(opened);
+});
