@@ -28,19 +28,22 @@ test('a failed request and a crashed worker keep their messages until closed; a 
   // The core worker dies on the next question it is asked: a click on the editor asks it to check the drawing.
   // Under load the worker may still be loading its imports, and its module would then install
   // its own handler after ours: wait until it has, then wrap it. Only the check of a drawing
-  // fails: other questions the page may still be asking (it is starting up) are answered.
+  // fails, and only once armed: other questions the page may still be asking (it is starting
+  // up; the Share button asks whether the state can be shared) are answered.
   await core.evaluate(() => new Promise((resolve) => {
     const replace = () => {
       const answer = self.onmessage;
       if (!answer) { setTimeout(replace, 10); return; }
       self.onmessage = (/** @type {MessageEvent} */ event) => {
-        if (event.data?.name === 'checkShape') throw new Error('the core worker fails on purpose');
+        if (event.data?.name === 'checkShape' && /** @type {any} */ (self).armed) throw new Error('the core worker fails on purpose');
         return answer.call(self, event);
       };
       resolve(undefined);
     };
     replace();
   }));
+  await page.waitForTimeout(1000); // the page's own questions at start-up answered
+  await core.evaluate(() => { /** @type {any} */ (self).armed = true; });
   await clickCells(page, [[6, 0]]);
   await waitForText(page, 'message', /the drawing could not be checked: the core worker stopped \(.*fails on purpose.*\); try again/);
   const failed = Date.now();
