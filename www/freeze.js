@@ -90,7 +90,7 @@ export class FreezeControl {
 }
 
 /** Seconds frozen before the speeds are compared in words (a step or two of a gait). */
-export const VERDICT_AFTER_S = 3;
+export const VERDICT_AFTER_S = 4;
 /** Below this speed before freezing (m/s) the robot was not walking, and freezing says little. */
 const WALKING = 0.2;
 
