@@ -17,6 +17,9 @@
  *   {type: 'freeze', frozen} freeze every voxel's attention matrix where it is now (true) or
  *                            release it (false); a brain without attention answers 'error'
  *   {type: 'length', seconds} the episode's length from now on (its speed is measured over it)
+ *   {type: 'wait-at', seconds} step no further than simulated time `seconds` until told a later
+ *                            one (Infinity: no limit; a new episode starts with none): the race
+ *                            keeps its lanes in step with it
  *
  * Worker -> page
  *   {type: 'ready', physics}             the wasm module is instantiated; physics: the
@@ -60,6 +63,7 @@ export const ToWorker = Object.freeze({
   SPEED: 'speed',
   FREEZE: 'freeze',
   LENGTH: 'length',
+  WAIT_AT: 'wait-at',
 });
 
 /** Message types sent by the worker to the page. */

@@ -75,6 +75,9 @@ export class Lane {
     this.dirty = true;
     /** The centre's x at the start line (m). */
     this.start = NaN;
+    /** Simulated time of its latest frame (s), and the time its worker waits at (Infinity: none). */
+    this.time = 0;
+    this.waitingAt = Infinity;
     /** Metres walked from the start line (NaN until the robot has moved off it). */
     this.walked = NaN;
     /** Every frame's simulated time (s) and metres walked, since the start line. @type {{t: number, walked: number}[]} */
@@ -93,6 +96,8 @@ export class Lane {
     this.phase = 'idle';
     this.start = NaN;
     this.track = [];
+    this.time = 0;
+    this.waitingAt = Infinity; // a new episode waits for nothing
     this.worker.postMessage({ type: ToWorker.PAUSE });
     this.worker.postMessage({ type: ToWorker.SPEED, speed });
     const brain = { controller: this.racer.controller, genome: this.racer.genome };
@@ -104,6 +109,13 @@ export class Lane {
   run(run) {
     this.phase = run ? 'started' : 'idle';
     this.worker.postMessage({ type: run ? ToWorker.START : ToWorker.PAUSE });
+  }
+
+  /** Lets it walk up to simulated time `seconds`, no further (Infinity: to the finish). @param {number} seconds */
+  waitAt(seconds) {
+    if (seconds === this.waitingAt) return;
+    this.waitingAt = seconds;
+    this.worker.postMessage({ type: ToWorker.WAIT_AT, seconds });
   }
 
   /** @param {any} msg */
@@ -138,6 +150,7 @@ export class Lane {
   show(velocity, time, x) {
     if (!Number.isFinite(this.start) || time === 0) this.start = x;
     if (Number.isFinite(this.start)) this.renderer.origin = this.start; // the ruler reads as the distance
+    if (Number.isFinite(time)) this.time = time;
     this.speed.dataset.value = String(velocity);
     this.speed.dataset.time = String(time);
     this.speed.textContent = Number.isFinite(velocity) && time > 0 ? `${decimal(velocity)} m/s` : '– m/s';

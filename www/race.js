@@ -17,6 +17,13 @@ import { decimal } from './format.js';
 /** Most robots in one race. */
 export const MAX_RACERS = 4;
 
+/**
+ * How far (simulated s) a robot may walk ahead of the slowest one still racing: every lane has
+ * its own worker, and a worker the machine holds back (a busy computer, another tab) would
+ * fall behind for good; the others wait for it, so the race shows every robot at the same moment.
+ */
+export const LEAD_S = 0.2;
+
 /** Simulated seconds between two rows of the race's table (CSV). */
 export const TABLE_STEP_S = 0.5;
 
@@ -54,10 +61,18 @@ export class Race {
     this.update();
     requestAnimationFrame(function loop(/** @type {number} */ now) {
       for (const lane of this.lanes) lane.draw(now);
+      this.keepInStep();
       const places = standings(this.lanes.map((l) => l.walked));
       this.lanes.forEach((lane, i) => lane.stand(places[i]));
       requestAnimationFrame(loop.bind(this));
     }.bind(this));
+  }
+
+  /** Lets each running robot walk up to {@link LEAD_S} past the slowest running one. */
+  keepInStep() {
+    const racing = this.lanes.filter((l) => l.phase !== 'idle');
+    const slowest = Math.min(...racing.map((l) => l.time));
+    for (const lane of racing) lane.waitAt(racing.length > 1 ? slowest + LEAD_S : Infinity);
   }
 
   wire() {

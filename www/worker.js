@@ -36,6 +36,8 @@ let params = null;
 let running = false;
 /** Simulated seconds per wall second; 0 = as fast as possible. */
 let speed = 1;
+/** Simulated time (s) not to step past (the race's lanes wait for the slowest); Infinity: none. */
+let waitAt = Infinity;
 /** Pacing anchor: wall time (ms) and simulated time (s) when running (re)started. */
 let anchor = { wall: 0, sim: 0 };
 /** Speed measurement window. */
@@ -69,6 +71,7 @@ function handle(msg) {
     case ToWorker.PAUSE: setRunning(false); break;
     case ToWorker.SPEED: speed = Math.max(0, Number(msg.speed) || 0); restartClocks(); break;
     case ToWorker.FREEZE: if (episode) { episode.freezeAttention(Boolean(msg.frozen)); postFrame(); } break;
+    case ToWorker.WAIT_AT: waitAt = Number(msg.seconds) >= 0 ? Number(msg.seconds) : Infinity; schedule(); break;
     case ToWorker.LENGTH:
       if (episode && params) { episode.measureOver(Number(msg.seconds)); params = { ...params, seconds: Number(msg.seconds) }; }
       break;
@@ -98,6 +101,7 @@ function load(asked) {
   episode?.free();
   episode = fresh;
   params = next;
+  waitAt = Infinity;
   const terrainXs = fresh.terrainXs();
   const terrainYs = fresh.terrainYs();
   const cells = fresh.voxelCells();
@@ -148,7 +152,10 @@ function tick() {
   const now = performance.now();
   if (params?.until && episode.stepsLeft(params.until) === 0) { setRunning(false); return; }
   if (now - lastFramePosted >= FRAME_INTERVAL_MS) postFrame();
-  if (speed > 0 && targetSteps(episode, now) === 0) {
+  if (stepsBeforeWait(episode) === 0) {
+    anchor = { wall: now, sim: episode.time }; // waiting owes no steps: it goes on at its pace
+    setTimeout(schedule, FRAME_INTERVAL_MS / 2);
+  } else if (speed > 0 && targetSteps(episode, now) === 0) {
     setTimeout(schedule, FRAME_INTERVAL_MS / 2);
   } else {
     schedule();
@@ -160,12 +167,18 @@ function stepSlice(ep) {
   const begin = performance.now();
   let budget = speed > 0 ? targetSteps(ep, begin) : Infinity;
   if (params?.until) budget = Math.min(budget, ep.stepsLeft(params.until));
+  budget = Math.min(budget, stepsBeforeWait(ep));
   while (budget > 0 && performance.now() - begin < SLICE_BUDGET_MS) {
     const n = Math.min(STEPS_PER_CALL, budget);
     ep.step(n);
     budget -= n;
   }
   rate.compute += performance.now() - begin;
+}
+
+/** Steps left before the time the page said to wait at (Infinity when it said none). @param {Episode} ep */
+function stepsBeforeWait(ep) {
+  return Number.isFinite(waitAt) ? Math.max(0, Math.floor((waitAt - ep.time) / dt + 1e-6)) : Infinity;
 }
 
 /**

@@ -51,7 +51,22 @@ test('three pretrained brains race on biped-4x3: vsr evaluate\'s speeds, in the 
   await page.locator('#race-speed-select').selectOption('4');
   for (const c of BRAINS) await addModule(page, file(c));
   await waitForText(page, 'race-status', /^3 robots on .+, 30 s\.$/);
+  // The lanes keep in step: the widest gap between their clocks while all three are running,
+  // with one lane's worker stalled for 1.5 s on the way (as a loaded machine stalls it).
+  const gap = page.evaluate(() => new Promise((resolve) => {
+    let widest = 0;
+    const timer = setInterval(() => {
+      const times = [...document.querySelectorAll('[data-testid="race-speed"]')].map((o) => Number(/** @type {HTMLElement} */ (o).dataset.time));
+      if (times.every((t) => t > 0 && t < 30)) widest = Math.max(widest, Math.max(...times) - Math.min(...times));
+      if (document.getElementById('race-panel')?.dataset.state === 'finished') { clearInterval(timer); resolve(widest); }
+    }, 20);
+  }));
+  await page.waitForFunction(() => [...document.querySelectorAll('[data-testid="race-speed"]')].every((o) => Number(/** @type {HTMLElement} */ (o).dataset.time) > 3));
+  const laneWorkers = page.workers().filter((w) => w.url().endsWith('/worker.js')).slice(-BRAINS.length);
+  await laneWorkers[1].evaluate(() => { const end = performance.now() + 1500; while (performance.now() < end); });
   await page.locator('#race-panel[data-state="finished"]').waitFor({ timeout: 90_000 });
+  console.log(`# one lane's worker stalled 1.5 s: the lanes' clocks at most ${Number(await gap).toFixed(2)} s apart`);
+  assert.ok(Number(await gap) < 0.75, `one lane stalled, the others waited for it: the lanes' clocks were at most ${await gap} s apart`);
   const raced = await speeds(page);
   assert.deepEqual(raced.map((r) => r.controller), BRAINS);
   for (const r of raced) assert.ok(Math.abs(r.time - 1801 / 60) < 1e-9, `${r.controller} ran 1801 steps: ${r.time}`);

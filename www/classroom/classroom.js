@@ -11,16 +11,8 @@ import { messageOf } from '../kit.js';
 import { CHAPTERS } from '../tour/chapters.js';
 import { exerciseOf } from './exercises.js';
 import { lessonPlan } from './lesson-plan.js';
+import { addressField, chapterLink, onlyHere, pageAddress } from './sheet-address.js';
 import { withTerms } from './simple-words.js';
-
-/** The address of chapter `index` (0-based), as text. @param {number} index */
-export function chapterLink(index) {
-  const url = new URL(location.href);
-  url.search = '';
-  url.hash = '';
-  url.searchParams.set('chapter', String(index + 1));
-  return url.href;
-}
 
 /**
  * @param {Document} doc @param {string} tag @param {string} [className] @param {string} [text]
@@ -193,17 +185,27 @@ export class Classroom {
     return sheet;
   }
 
-  /** The worksheet (and the print dialog, when `print`). @param {boolean} print */
+  /**
+   * The worksheet, and the print dialog when `print` (not when the page's address opens only
+   * on this computer: the teacher types the class's first, sheet-address.js). @param {boolean} print
+   */
   worksheet(print) {
     const doc = this.doc;
     const sheet = this.sheet('worksheet', 'VSR Playground: predict, then try');
     sheet.dataset.testid = 'worksheet';
+    const base = pageAddress(location.href);
+    /** @type {HTMLElement[]} */
+    const links = [];
+    sheet.querySelector('.class-sheet-bar')?.prepend(addressField(doc, base, (href) => {
+      links.forEach((link, i) => { link.textContent = chapterLink(i, href); });
+    }));
     sheet.append(make(doc, 'p', 'sheet-name', 'Name: ______________________________   Date: ______________'),
       make(doc, 'p', 'sheet-how', 'For each chapter: open its link, read it, write your prediction before you press Reveal, then try it and write what happened.'));
     CHAPTERS.forEach((chapter, i) => {
       const ex = exerciseOf(i);
       const part = make(doc, 'section', 'sheet-task');
-      part.append(make(doc, 'h2', '', `Chapter ${i + 1}. ${chapter.title}`), make(doc, 'p', 'sheet-link', chapterLink(i)),
+      links.push(make(doc, 'p', 'sheet-link', chapterLink(i, base)));
+      part.append(make(doc, 'h2', '', `Chapter ${i + 1}. ${chapter.title}`), links[i],
         make(doc, 'p', 'sheet-ask', ex?.ask ?? chapter.task));
       if (ex) part.append(make(doc, 'p', 'sheet-do', `Do: ${chapter.task}`));
       if (!ex) {
@@ -221,7 +223,7 @@ export class Classroom {
       sheet.append(part);
     });
     sheet.scrollIntoView({ block: 'start' });
-    if (print) setTimeout(() => doc.defaultView?.print(), 0);
+    if (print && !onlyHere(base)) setTimeout(() => doc.defaultView?.print(), 0);
     return sheet;
   }
 
