@@ -88,8 +88,8 @@ export function bestSoFar(genome, fitness, settings, kind, finetuning, source, o
   return {
     controller: kind, genome, rows: settings.shape, origin, module: null, source: finetuning ? source : null,
     seconds: settings.seconds, trained: { speed: fitness, terrain: settings.terrain, single: true }, run: true,
-    label: `the best so far while ${finetuning ? 'fine-tuning' : 'evolving'}: ${decimal(fitness)} m/s in one evaluation, seed ${settings.seed} `
-      + `(the best when it started walking: a newer best takes over once its ${settings.seconds}-s episode is over)`,
+    label: `the run's best when it began walking (${finetuning ? 'fine-tuning' : 'evolving'}): ${decimal(fitness)} m/s in one evaluation, seed ${settings.seed} `
+      + `(a newer best takes over once its ${settings.seconds}-s episode is over)`,
   };
 }
 

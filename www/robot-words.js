@@ -38,6 +38,23 @@ export function walkingWords(brain, walkingRows) {
 }
 
 /**
+ * Writes `text` into `el` with every speed's number in a `.speed-figure` span: while a tour
+ * question holds its answer back the page covers those numbers with a grey bar (tour.css), as it
+ * hides the viewer's speeds. @param {HTMLElement} el @param {string} text
+ */
+export function showWithSpeeds(el, text) {
+  const doc = el.ownerDocument;
+  const parts = text.split(/(-?\d+(?:\.\d+)?)(?= m\/s)/); // odd places: the numbers
+  el.replaceChildren(...parts.map((part, i) => {
+    if (i % 2 === 0) return doc.createTextNode(part);
+    const figure = doc.createElement('span');
+    figure.className = 'speed-figure';
+    figure.textContent = part;
+    return figure;
+  }));
+}
+
+/**
  * What drives the robot and, while the drawing (`check`) is not a robot, that the one walking
  * is the last whole one. @param {Brain | null} brain @param {import('./core.js').ShapeCheck} check @param {string} walkingRows
  */

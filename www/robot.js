@@ -14,7 +14,7 @@ import { checkShape } from './core.js';
 import { showGeneCount } from './gene-count.js';
 import { messageOf } from './kit.js';
 import { applyState } from './robot-state.js';
-import { checkWords, driverWords, walkingWords } from './robot-words.js';
+import { checkWords, driverWords, showWithSpeeds, walkingWords } from './robot-words.js';
 
 /** @typedef {import('./brain.js').Brain} Brain */
 
@@ -113,7 +113,7 @@ export class Robot {
   updateParams() {
     showGeneCount(this.el('param-count'), this.check, this.controllerSelect.value, this.parts.defaults.attentionGenes,
       walkingWords(this.brain, this.walkingRows));
-    this.el('driver').textContent = driverWords(this.brain, this.check, this.walkingRows);
+    showWithSpeeds(this.el('driver'), driverWords(this.brain, this.check, this.walkingRows));
   }
 
   updateButtons() {
@@ -180,7 +180,7 @@ export class Robot {
     speedNote.show(brain, viewer.terrain.value.trim(), seconds, !this.running);
     runs.showWalking(brain?.run === true);
     this.el('gait').hidden = brain !== null; // its settings drive only a robot with no brain
-    this.el('driver').textContent = driverWords(this.brain, this.check, this.walkingRows);
+    showWithSpeeds(this.el('driver'), driverWords(this.brain, this.check, this.walkingRows));
     this.updateButtons();
   }
 

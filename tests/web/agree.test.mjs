@@ -145,7 +145,7 @@ test('numbers that agree: during a fine-tune the walking best shows its own trai
     await page.locator(`#run-${key}`).fill(value);
   }
   await byTestId(page, 'finetune').click();
-  await waitForText(page, 'driver', /the best so far while fine-tuning/, 60_000);
+  await waitForText(page, 'driver', /the run's best when it began walking \(fine-tuning\)/, 60_000);
   // The note measures the walking best (asynchronously) and a newer best can take over: paused,
   // the best stays (a loaded machine can otherwise end the run first), and both are read once they agree.
   await byTestId(page, 'pause').click();
