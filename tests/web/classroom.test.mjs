@@ -7,6 +7,9 @@
  * worksheet holds every chapter's task and link and prints alone (page.pdf, and a screenshot
  * in print media), and until the reveal the module list's speeds and the study's figures and
  * findings are kept back; after a run, one button races its first, middle and last generations' bests;
+ * no answer is in the text a pair reads before its reveal (the tour's box, the glossary; the
+ * chapters' own words: giveaway.test.mjs); chapter 5 reveals only from the pair's own run;
+ * the study's figure captions hold no statistics; the lesson plan's guide is served;
  * the simple-words switch hides formulas and statistics and stays on after a reload, and the
  * glossary explains the issue's newcomer words, linked where they appear, with the voxel's
  * width the core's (the plain results: results.test.mjs; the class challenge: challenge.test.mjs). Screenshots:
@@ -16,9 +19,9 @@ import assert from 'node:assert/strict';
 import { readFileSync, statSync } from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { EXERCISES, TASKS, exerciseOf } from '../../www/classroom/exercises.js';
-import { LESSONS } from '../../www/classroom/lesson-plan.js';
-import { CHAPTERS } from '../../www/tour/chapters.js';
+import { EVOLVE_FIRST, EXERCISES, TASKS, exerciseOf } from '../../www/classroom/exercises.js';
+import { GUIDE, LESSONS } from '../../www/classroom/lesson-plan.js';
+import { CHAPTERS, RUN_TIME } from '../../www/tour/chapters.js';
 import { ROOT, SCREENSHOTS, byTestId, figure, openPage, screenshot, start, waitForText } from './harness.mjs';
 
 /** @type {Awaited<ReturnType<typeof start>>} */ let env;
@@ -29,6 +32,27 @@ after(async () => { await env?.close(); });
 /** @param {import('playwright-core').Page} page */
 async function ready(page) {
   await page.locator('#tour-box[data-state="ready"]').waitFor({ timeout: 20_000 });
+}
+
+const WORDS = ['zero', 'one', 'two', 'three', 'four', 'five', 'six', 'seven', 'eight', 'nine', 'ten'];
+/**
+ * What would state a revealed answer in the text read before it: a number of genes, weights or
+ * values (in figures or words), and the reviewer's cases (most values at ±1, a one-shot that walks badly).
+ * @param {string} shown the page's answer
+ */
+function giveaway(shown) {
+  const n = Math.round(Number(/^(?:about )?([\d.]+) (?:genes|of 16)/.exec(shown)?.[1] ?? NaN));
+  const number = Number.isFinite(n) ? `\\b(${n}|${WORDS[n] ?? n}) (genes|weights|output weights)\\b|\\b${n} of 16\\b|` : '';
+  return new RegExp(`${number}\\bmost (squares|values) (sit|are) at|walks? badly|hardly moves|\\b32 (genes|numbers)\\b`, 'i');
+}
+
+/** A tiny run of chapter 5's (its Reveal answers only from the pair's own run). @param {import('playwright-core').Page} page */
+async function tinyRun(page) {
+  for (const [key, value] of Object.entries({ population: '4', seconds: '2', budget: '40', seed: '3', workers: '2' })) {
+    await page.locator(`#run-${key}`).fill(value);
+  }
+  await byTestId(page, 'evolve').click();
+  await waitForText(page, 'run-status', /^finished$/, 90_000);
 }
 
 /** Answers chapter `n`'s task (the first choice, or the number 4) and reveals it. @param {import('playwright-core').Page} page @param {number} n */
@@ -45,15 +69,30 @@ async function answerAndReveal(page, n) {
   assert.equal(await speeds(), 0, `chapter ${n}: the module list keeps its speeds back`);
   assert.equal(await page.locator('#robot-speed').isVisible(), false, `chapter ${n}: so does the viewer`);
   assert.doesNotMatch(String(await page.locator('#module-details').textContent()), /m\/s/, `chapter ${n}: so do its details`);
+  const covered = () => page.locator('#driver .speed-figure').evaluateAll((els) => els.map((e) => getComputedStyle(e).color === 'rgba(0, 0, 0, 0)'));
+  assert.ok((await covered()).every(Boolean), `chapter ${n}: the speeds in "Driven by" are covered`);
+  assert.equal(await page.locator('#attention-why').isVisible(), false, `chapter ${n}: why most attention values are ±1 waits too`);
   for (const [shown, kept] of [['#study-image', '#study-panel'], ['#results-plain-body', '#results-plain']]) {
     assert.equal(await page.locator(shown).isVisible(), false, `chapter ${n}: ${shown} waits for the reveal`);
     assert.equal(await page.locator(`${kept} [data-testid="answer-held-note"]`).isVisible(), true, `chapter ${n}: ${kept} says why`);
   }
   if (exerciseOf(n - 1)?.choices) await task.locator('input[type=radio]').first().check();
   else await task.locator('input[type=number]').fill('4');
+  // What the pair reads before the reveal: the tour's box, and the glossary, open beside it.
+  const before = `${await page.locator('#tour-box').innerText()} ${await page.locator('#glossary dl').textContent()}`;
   await byTestId(page, 'tour-reveal').click();
+  if (exerciseOf(n - 1)?.wait) { // chapter 5: never graded against another run than the pair's own
+    await waitForText(page, 'tour-box', /Press Evolve first/);
+    assert.equal(await byTestId(page, 'tour-answer').textContent(), EVOLVE_FIRST);
+    assert.notEqual(await task.getAttribute('data-state'), 'revealed', `chapter ${n}: nothing revealed before the run`);
+    await tinyRun(page);
+    await byTestId(page, 'tour-reveal').click();
+  }
   await page.locator('[data-testid="tour-exercise"][data-state="revealed"]').waitFor({ timeout: 60_000 });
   const text = (await byTestId(page, 'tour-answer').locator('p').allTextContents()).join(' ');
+  const shown = /The page's answer: (.*?)\. /.exec(text)?.[1] ?? '';
+  const found = giveaway(shown).exec(before);
+  assert.equal(found, null, `chapter ${n}: “${found?.[0]}” read before the reveal gives its answer (${shown}) away`);
   assert.match(text, /You said: .* The page's answer: /, `chapter ${n}: the answer beside the student's`);
   assert.equal(await page.locator('.tour-notice').isVisible(), true, `chapter ${n}: the Notice after the reveal`);
   if (shows) assert.equal(await page.locator('#tour-body figure').isVisible(), true, `chapter ${n}: the figure after the reveal`);
@@ -61,6 +100,7 @@ async function answerAndReveal(page, n) {
   assert.ok(await speeds() > 0, `chapter ${n}: the module list's speeds after the reveal`);
   assert.equal(await page.locator('#study-image').isVisible(), true, `chapter ${n}: the study's figure after the reveal`);
   assert.equal(await page.locator('#robot-speed').isVisible(), true, `chapter ${n}: the viewer's speed after the reveal`);
+  assert.ok((await covered()).every((c) => !c), `chapter ${n}: the speeds in "Driven by" after the reveal`);
   assert.equal(await page.locator('[data-testid="answer-held-note"]:visible').count(), 0, `chapter ${n}: no note after the reveal`);
   return text;
 }
@@ -79,6 +119,11 @@ test('every chapter asks before it shows: an answer, then the reveal with why', 
     if (CHAPTERS[n - 1].title === 'One small brain in every voxel') {
       const genes = await figure(page, 'param-count');
       assert.match(text, new RegExp(`The page's answer: 4 genes\\..*${genes} genes for 10 voxels`), 'chapter 3: the gene count the page shows');
+    }
+    if (CHAPTERS[n - 1].title === 'Evolution') assert.match(text, /From this page's latest run: generation 0's best walked/, 'chapter 5: from the pair\'s run');
+    if (CHAPTERS[n - 1].title === 'Your turn') { // the key walks both on the clock the question names: the one under the robot
+      const [frequency, phase] = [await page.locator('#frequency').inputValue(), await page.locator('#phase').inputValue()];
+      assert.ok(text.includes(`phase gait (f ${frequency} Hz, φ ${phase.replace('-', '−')})`), `chapter ${n}: the clock under the robot (f ${frequency}, φ ${phase}): ${text}`);
     }
     if (n === 1) { // the chapter 1 that the exercises name
       // The speed quoted for φ 1.5 is the one the viewer shows when its episode ends.
@@ -119,6 +164,9 @@ test('the teacher\'s answer keys: every chapter\'s, the same as a student\'s rev
   assert.match(rows[2], /^Answer: 4 genes\./);
   const plan = String(await keys.locator('.sheet-plan').textContent());
   assert.match(plan, /First lesson \(45 min\): Open the page.*; chapter 1 \(A voxel and its colours\), 5 min;/, `a lesson plan by chapter: ${plan}`);
+  assert.ok(plan.includes(`each take ${RUN_TIME}`), 'a run\'s time as chapter 8 and docs/teaching.md say it');
+  const guide = await page.request.get(new URL(GUIDE.href, env.url.replace(/\/?$/, '/')).href);
+  assert.equal(guide.status(), 200, `the teachers' guide the plan links is served (${GUIDE.href})`);
   // docs/teaching.md's table says the same plan.
   const table = [...readFileSync(path.join(ROOT, 'docs/teaching.md'), 'utf8').matchAll(/^\| (First|Second) lesson \| (.+?) \| (\d+) \|/gm)]
     .map((m) => `${m[1]} lesson: ${m[2]}, ${m[3]}`);
@@ -202,12 +250,12 @@ test('simple words: formulas and statistics hidden, kept after a reload; the new
   const { page, problems } = await openPage(env.browser, `${env.url}?chapter=6`, { width: 1400, height: 900 });
   await ready(page);
   await answerAndReveal(page, 6); // the figure shows after the reveal
-  const stats = page.locator('#tour-box figcaption .stats');
-  assert.ok(await stats.count() >= 1, 'the figure\'s p-values are marked');
-  assert.equal(await stats.first().isVisible(), true);
+  // Its caption in a newcomer's words, simple words or not: no statistics (they stay folded in
+  // “What our study found”), and the five runs drawn told apart from the ten tested.
+  const caption = String(await page.locator('#tour-box figcaption').innerText());
+  assert.doesNotMatch(caption, /\bp\b \d|Holm|results page/, `the figure's caption: ${caption}`);
+  assert.match(caption, /only our first five runs[^.]*"no difference detected"[^.]*too few[^.]*\. We then ran ten of each/);
   await byTestId(page, 'simple-words').check();
-  assert.equal(await stats.first().isVisible(), false, 'simple words: no p-values');
-  assert.doesNotMatch(String(await page.locator('#tour-box figcaption').innerText()), /\bp\b \d|Holm/);
   await page.reload();
   await waitForText(page, 'status', /voxels/);
   assert.equal(await byTestId(page, 'simple-words').isChecked(), true, 'kept');

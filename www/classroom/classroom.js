@@ -10,7 +10,7 @@
 import { messageOf } from '../kit.js';
 import { CHAPTERS } from '../tour/chapters.js';
 import { exerciseOf } from './exercises.js';
-import { lessonPlan } from './lesson-plan.js';
+import { lessonPlanNodes } from './lesson-plan.js';
 import { addressField, chapterLink, onlyHere, pageAddress } from './sheet-address.js';
 import { withTerms } from './simple-words.js';
 
@@ -24,6 +24,10 @@ function make(doc, tag, className, text) {
   if (text !== undefined) el.textContent = text;
   return el;
 }
+
+/** How often a Reveal that had to wait checks whether it still must (ms), and what it says then. */
+const WAIT_CHECK_MS = 500;
+const WAIT_OVER = 'Your run has ended: press Reveal.';
 
 export class Classroom {
   /** @param {Document} doc @param {import('./lab.js').Lab} lab */
@@ -100,8 +104,16 @@ export class Classroom {
       if (mine === '') return;
       const wait = ex.wait?.(this.lab) ?? '';
       if (wait) {
-        result.replaceChildren(make(doc, 'p', 'exercise-wait', wait));
+        const said = make(doc, 'p', 'exercise-wait', wait);
+        result.replaceChildren(said);
         result.hidden = false;
+        // Once nothing holds it back any more (the run ended), the line says so.
+        const timer = setInterval(() => {
+          if (!said.isConnected) { clearInterval(timer); return; }
+          if (ex.wait?.(this.lab)) return;
+          clearInterval(timer);
+          said.textContent = WAIT_OVER;
+        }, WAIT_CHECK_MS);
         return;
       }
       box.dataset.state = 'revealing';
@@ -234,7 +246,8 @@ export class Classroom {
     sheet.dataset.testid = 'teacher-keys';
     sheet.dataset.state = 'computing';
     sheet.append(make(doc, 'p', 'sheet-how', 'Each answer is computed now by this page, as a student\'s Reveal computes it: the numbers come from walks the page just ran or from the study\'s files.'),
-      make(doc, 'p', 'sheet-plan', lessonPlan()));
+      make(doc, 'p', 'sheet-plan'));
+    sheet.lastElementChild?.append(...lessonPlanNodes(doc));
     const rows = CHAPTERS.map((chapter, i) => {
       const part = make(doc, 'section', 'sheet-task');
       const key = make(doc, 'p', 'sheet-key', 'computing…');

@@ -8,7 +8,7 @@
  * every key (classroom.js).
  */
 import { CHAPTERS } from '../tour/chapters.js';
-import { count, decimal, size } from '../format.js';
+import { count, decimal, plainNumber, size } from '../format.js';
 
 /** A value of an attention matrix beyond ±this counts as "at +1 or −1". */
 export const SATURATED = 0.9;
@@ -32,6 +32,8 @@ export const SATURATED = 0.9;
 
 /** @param {number} v @param {number} [digits] */
 const ms = (v, digits = 2) => `${decimal(v, digits)} m/s`;
+/** A set-up's phase gait in words, or '' (the page's default). @param {{gait?: {frequency: number, phase: number}}} s */
+const clock = (s) => (s.gait ? `f ${plainNumber(s.gait.frequency)} Hz, φ ${plainNumber(s.gait.phase)}` : '');
 /** @param {string} rows */
 const voxels = (rows) => rows.split('').filter((c) => c === '1').length;
 /** The chapters the tasks belong to, by title (a task follows its chapter wherever it moves). */
@@ -58,6 +60,21 @@ const moduleOf = (title) => setup(title).brain?.module ?? '';
 function ownRun(run) {
   const { rows, controller } = setup(EVOLUTION);
   return run.mode === 'evolve' && run.shape === rows && run.controller === controller;
+}
+
+/**
+ * Why chapter 5's Reveal must wait, or '': its question is about the class's own run, so it
+ * answers only from a run of this chapter that has ended. Each message stays true once the run
+ * ends (the page does not rewrite it then): it says to press Reveal again, not that the run is going.
+ */
+export const EVOLVE_FIRST = 'Press Evolve first: the question is about your own run. Once it has ended, press Reveal again.';
+export const RUN_GOING = 'Reveal waits for the end of your run (the question is about its last generation): once the run has ended, press Reveal again.';
+/** @param {import('./lab.js').Lab} lab */
+function evolutionWait(lab) {
+  const run = lab.latestRun();
+  if (run.running) return RUN_GOING; // (the latest run is this one only from its generation 0 on)
+  // A run stopped before its second generation has no last generation to compare.
+  return ownRun(run) && run.bests.length >= 2 ? '' : EVOLVE_FIRST;
 }
 
 /**
@@ -97,7 +114,7 @@ export const TASKS = [
   },
   {
     chapter: BODY,
-    ask: 'Erase the third column of the biped, so that it falls into two pieces. What will the page do?',
+    ask: 'Erase the third column of the biped, so that it falls into two pieces. What will the page do?', // the chapter's Do says the same
     choices: ['both pieces walk, each on its own', 'the bigger piece walks, the other one is dropped', 'neither piece walks: the robot before the cut walks on'],
     try: 'Erase that column (drag with the right mouse button, or press Erase first) and watch.',
     async key(lab) {
@@ -144,14 +161,15 @@ export const TASKS = [
   },
   {
     chapter: EVOLUTION,
-    ask: 'Press Evolve. By the end of this quick run, how many times faster than the best of generation 0 (random brains) will the best brain be?',
+    ask: 'Press Evolve. When this quick run ends, how many times faster will the last generation\'s best brain walk than generation 0\'s best (random brains)? '
+      + 'Each is the fastest of its own generation, as the run measured it (not the best so far).',
     choices: ['less than 2 times', '2 to 10 times', 'more than 10 times'],
     try: 'Press Evolve, and when it ends press “Race first, middle and last” under “Side by side”.',
-    // Revealed during the run, its answer would be a generation's, not the run's end.
-    wait: (lab) => (lab.latestRun().running
-      ? 'Your run is still going: reveal once it ends (the question is about its last generation).' : ''),
+    // Revealed during the run, its answer would be a generation's, not the run's end; before it, another run's.
+    wait: evolutionWait,
     async key(lab) {
-      // The page's own run counts only if it is this chapter's (a later chapter's run is another question).
+      // The page's own run counts only if it is this chapter's (a later chapter's run is another question). A
+      // student's Reveal waits for one (evolutionWait); the teacher's keys, without one, answer from the study's run.
       const run = lab.latestRun();
       const own = ownRun(run) ? run.bests : [];
       const bests = own.length >= 2 ? own : await lab.history(moduleOf(BRAIN));
@@ -165,7 +183,7 @@ export const TASKS = [
       return { answer, shown: `${['less than 2 times', '2 to 10 times', 'more than 10 times'][answer]} (${times})`,
         why: `From ${source}: generation 0's best walked ${ms(first.fitness)} in training, the last generation's best (generation ${last.generation}) ${ms(last.fitness)}. `
           + 'Random brains barely move; each generation keeps the fastest and tries changed copies of them, and small gains pile up.'
-          + (own.length >= 2 ? '' : ' A quick run of 2,000 evaluations gets less far: evolve first and reveal again to see yours.') };
+          + (own.length >= 2 ? '' : ` A student's Reveal answers from their own quick run of ${count(Number(setup(EVOLUTION).run?.budget))} evaluations, which gets less far (it asks them to press Evolve first).`) };
     },
   },
   {
@@ -243,18 +261,19 @@ export const TASKS = [
   },
   {
     chapter: YOURS,
-    ask: `This table (${voxels(/** @type {string} */ (setup(YOURS).rows))} voxels) has no brain: the phase gait drives it, on hilly ground. Chapter 1's biped of ten voxels walked on flat ground; put here, on this ground with this same gait, will the table be faster or slower than that biped?`,
+    ask: `This table (${voxels(/** @type {string} */ (setup(YOURS).rows))} voxels) has no brain: the phase gait drives it on hilly ground, on this chapter's clock (its f and φ are under the robot, in “Phase gait”; chapter 1's were ${clock(setup(GAIT))}). `
+      + `Put chapter 1's biped of ${voxels(/** @type {string} */ (setup(GAIT).rows))} voxels here, on this hilly ground with this same clock: will the table be faster or slower than the biped?`,
     choices: ['faster', 'slower'],
     try: 'Watch its speed under the robot; then draw your own and compare.',
     async key(lab) {
       const terrain = setup(YOURS).terrain;
       const seconds = lab.defaults.quick.seconds;
-      const gait = lab.defaults.gait;
+      const gait = setup(YOURS).gait ?? lab.defaults.gait; // this chapter's clock, the one the question names
       const mine = await lab.walk({ rows: /** @type {string} */ (setup(YOURS).rows), terrain, seconds, gait });
       const biped = await lab.walk({ rows: /** @type {string} */ (setup(GAIT).rows), terrain, seconds, gait });
       const answer = mine.speed > biped.speed ? 0 : 1;
       return { answer, shown: `${['faster', 'slower'][answer]}: ${ms(mine.speed)} against ${ms(biped.speed)}`,
-        why: `The page just walked both with the phase gait (f ${gait.frequency} Hz, φ ${gait.phase}) for ${seconds} s on ${terrain}: this robot ${ms(mine.speed)}, the biped ${ms(biped.speed)}. `
+        why: `The page just walked both with the phase gait (${clock({ gait })}) for ${seconds} s on ${terrain}: this robot ${ms(mine.speed)}, the biped ${ms(biped.speed)}. `
           + 'The same clock moves different bodies differently: that is why evolution tunes a brain for one body.' };
     },
   },

@@ -4,7 +4,7 @@
  * chapter with time to start and to compare. The answer keys' sheet prints it and
  * docs/teaching.md gives it as a table (the browser test checks that both say the same).
  */
-import { CHAPTERS } from '../tour/chapters.js';
+import { CHAPTERS, RUN_TIME } from '../tour/chapters.js';
 
 /** @typedef {{what: string, minutes: number}} Step  a chapter (by title) or a step of the lesson (START, WRAP) */
 
@@ -40,10 +40,32 @@ export function stepWords(step) {
   return `${n > 0 ? `chapter ${n} (${step.what})` : step.what}, ${step.minutes} min`;
 }
 
-/** The plan in one paragraph, for the answer keys' sheet. */
-export function lessonPlan() {
+/** The teachers' guide, served with the page (scripts/serve.mjs serves docs/ at /docs/), relative to the page, and its words. */
+export const GUIDE = { href: 'docs/teaching.md', text: 'The teachers\' guide (teaching.md)', after: ' has this plan with what students see in each chapter.' };
+
+/** The plan in one paragraph, for the answer keys' sheet, up to the guide. */
+function planWords() {
   const lessons = LESSONS.map((l) => `${l.name} (${l.steps.reduce((sum, s) => sum + s.minutes, 0)} min): ${l.steps.map(stepWords).join('; ')}.`);
   return `A plan, if you want one: one device for every two students. ${lessons.join(' ')} `
-    + 'The quick evolution, the fine-tuning and the body search each take a minute or two on a laptop: start them, then talk. '
-    + 'Print the worksheet before the first lesson (one per student); docs/teaching.md has this plan with what students see in each chapter.';
+    + `The quick evolution, the fine-tuning and the body search each take ${RUN_TIME}: start them, then talk. `
+    + 'Print the worksheet before the first lesson (one per student). ';
+}
+
+/** The plan as text, the guide named. */
+export function lessonPlan() {
+  return `${planWords()}${GUIDE.text}${GUIDE.after}`;
+}
+
+/**
+ * The plan as nodes, the guide a link (opening in a new tab): what the answer keys' sheet is to
+ * show, `make(doc, 'p', 'sheet-plan')` then `.append(...lessonPlanNodes(doc))`. @param {Document} doc
+ * @returns {(string | HTMLElement)[]}
+ */
+export function lessonPlanNodes(doc) {
+  const a = doc.createElement('a');
+  a.href = GUIDE.href;
+  a.target = '_blank';
+  a.rel = 'noopener';
+  a.textContent = GUIDE.text;
+  return [planWords(), a, GUIDE.after];
 }

@@ -19,7 +19,7 @@ export const BOX_WORDS = `a ${size(3, 3)} box`;
  */
 export const BRAIN_WORDS = Object.freeze({
   frozen: { menu: 'the chosen module, its attention kept', short: 'attention kept' },
-  finetune: { menu: 'the chosen module as a start, every gene evolving', short: 'every gene evolving' },
+  finetune: { menu: 'the chosen module as a start, every gene evolving, its attention too', short: 'every gene evolving' },
   scratch: { menu: 'a new brain, from scratch', short: 'from scratch' },
 });
 

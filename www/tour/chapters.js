@@ -15,13 +15,20 @@
  *
  * Pure data with no page in it: the browser tests read it to check each chapter's set-up.
  */
-import { size } from '../format.js';
+import { count, plainNumber, size } from '../format.js';
 
 const BIPED = '1111-1111-1001';
 const BIPED_LARGE = '111111-111111-100011-100011';
+const TABLE = '11111-10101';
 const ATTENTION = 'pretrained/biped-4x3-attention.json';
 const QUICK = { population: '20', seconds: '10', budget: '2000', seed: '1', terrain: 'hilly-1-10' };
 const VIEW = 'hilly-1-10-0';
+/** Chapter 1's phase gait (chapter 10's is the page's default, which its question says). */
+const CLOCK = { frequency: 1, phase: 1.5 };
+/** How long a quick run takes, in the words of chapter 8 and of the lesson plan (lesson-plan.js, docs/teaching.md). */
+export const RUN_TIME = 'under a minute on most computers (the page says how long before it starts)';
+/** The voxels of a drawing's rows. @param {string} rows */
+const voxels = (rows) => rows.split('').filter((c) => c === '1').length;
 
 /**
  * @typedef {object} Chapter
@@ -45,9 +52,9 @@ export const CHAPTERS = [
       'No brain drives it yet. Every voxel squeezes and swells on a clock, each column a little later than the one on its left, so a wave runs along the body: this is the phase gait.',
       'Its speed is measured over an episode: one walk of a fixed length (here 10 s), from the start line.',
     ],
-    task: 'Under the robot, in “Phase gait”, change φ, the delay from one column to the next, from 1.5 to 0, then to −1.5.',
-    notice: 'At φ 1.5 (and f 1 Hz) it walks about 2 m/s. At 0 every column beats together and it only shuffles, well under 1 m/s. At −1.5 the wave runs the other way, yet this biped still goes forwards, only slower (about 1 m/s): which way a body goes is not simply the way its wave runs (its squeezes change only three times a second, so −1.5 is not the exact mirror of 1.5, and a wall just behind the start stops a robot walking backwards). Only the timing changed. The speed under the robot says how fast.',
-    setup: { rows: BIPED, brain: null, terrain: 'flat', gait: { frequency: 1, phase: 1.5 } },
+    task: `Under the robot, in “Phase gait”, change φ, the delay from one column to the next, from ${plainNumber(CLOCK.phase)} to 0, then to ${plainNumber(-CLOCK.phase)}.`,
+    notice: `At φ ${plainNumber(CLOCK.phase)} (and f ${plainNumber(CLOCK.frequency)} Hz) it walks about 2 m/s. At 0 every column beats together and it only shuffles, well under 1 m/s. At ${plainNumber(-CLOCK.phase)} the wave runs the other way, yet this biped still goes forwards, only slower (about 1 m/s): which way a body goes is not simply the way its wave runs (its squeezes change only three times a second, so ${plainNumber(-CLOCK.phase)} is not the exact mirror of ${plainNumber(CLOCK.phase)}, and a wall just behind the start stops a robot walking backwards). Only the timing changed. The speed under the robot says how fast.`,
+    setup: { rows: BIPED, brain: null, terrain: 'flat', gait: CLOCK },
     target: '#scene, details.gait',
   },
   {
@@ -56,7 +63,7 @@ export const CHAPTERS = [
       'You can draw any body on the grid of “1 · Draw”: every filled square is a voxel, and the robot walks as soon as you lift the mouse or your finger.',
       'A robot must be one piece, every voxel sharing a side with another: voxels only push and pull on the voxels they touch, so a piece on its own would be a second robot.',
     ],
-    task: 'Draw a few voxels onto the robot (drag on the grid), then erase a column to cut it in two (drag with the right mouse button, or press Erase first on a phone).',
+    task: 'Erase the third column of the biped (drag down it with the right mouse button, or press Erase first on a phone) and watch what the page does with the two pieces. Then draw voxels (drag on the grid) until it is one piece again, and a few more.',
     notice: 'A new body walks at once on the phase gait. Cut in two, each piece gets its own colour, and the last whole robot walks on until the drawing is one piece again.',
     setup: { rows: BIPED, brain: null, terrain: VIEW },
     target: '#editor',
@@ -65,7 +72,7 @@ export const CHAPTERS = [
     title: 'One small brain in every voxel',
     text: [
       'Now each voxel gets a brain. A voxel feels four things, all about itself: its area (squeezed or stretched), its speed sideways (vx) and up or down (vy), and touch (whether it is on the ground).',
-      'Three times a second, its brain turns these four readings into one number: how much to squeeze. Every voxel runs the same small network; only the last step, four weights, belongs to the voxel\'s place in the body.',
+      'Three times a second, its brain turns these four readings into one number: how much to squeeze. Every voxel runs the same small network; only its very last step has numbers of the voxel\'s own, which belong to its place in the body.',
       'No voxel sends anything to another. They walk together only because they share one body and one ground. This brain was evolved in our study (chapter 5 shows how; the lines under the robot say with what).',
     ],
     task: 'Click an empty square right next to the walking robot to give it one more voxel.',
@@ -89,7 +96,7 @@ export const CHAPTERS = [
     text: [
       'Nobody wrote these brains: evolution found them. It starts with a population of random brains (here 20) and walks each one for an episode (10 s) on hilly ground. Its fitness is its speed: the distance walked divided by the time.',
       'The fastest become parents; their children are copies with small random changes, or mixes of two parents. Each round is a generation; each walk measured is an evaluation.',
-      'The study gave every run 30,000 evaluations with 100 brains and 30-s episodes; this quick run has 2,000.',
+      `The study gave every run 30,000 evaluations with 100 brains and 30-s episodes; this quick run has ${count(Number(QUICK.budget))}.`,
       'Its seed (under “Run”) fixes every random draw: the same seed gives the same run, on any computer, so a class can all watch the same evolution; another seed, another one.',
     ],
     task: 'Press Evolve. When the run ends, press “Race first, middle and last” under “Side by side”: generation 0\'s best, the middle generation\'s and the last one\'s walk side by side.',
@@ -126,12 +133,12 @@ export const CHAPTERS = [
   {
     title: 'Transplant a module',
     text: [
-      'A module is a brain evolved before, kept in a file. Here the small biped\'s brain is transplanted onto a larger biped of 18 voxels: its attention (32 numbers, the same for any body) is kept.',
+      `A module is a brain evolved before, kept in a file. Here the small biped's brain is transplanted onto a larger biped of ${voxels(BIPED_LARGE)} voxels: its attention, the same for any body, is kept.`,
       'Its last step, the four weights of each voxel\'s place, belonged to the old body, so they are drawn at random for the new one. Walking at once with them, before any training, is a one-shot transplant.',
       'Fine-tuning evolves only those weights and keeps the attention. In the paper (its Fig. 7) and our study it gets fast sooner than a brain evolved from scratch: in our study it was ahead after 2,500 evaluations on all four bodies we tried, and by the end of their budgets (10,000 evaluations of fine-tuning, 30,000 from scratch) no difference between the two was detected.',
     ],
     task: 'Read its one-shot speed on the line under the robot, then press Fine-tune: a run from scratch with the same budget follows by itself.',
-    notice: 'One-shot, the robot hardly moves: a brain is made for its body. Each run takes a minute or so: the numbers above the chart say which one is running and how long it has left. The chart draws fine-tuning, then from scratch as a dashed line: compare them over the first few hundred evaluations, where fine-tuning starts from a brain that already works. By the end of this short run either may lead: one run is one sample; the study\'s figure has five runs of each.',
+    notice: `One-shot, the robot hardly moves: a brain is made for its body. Each run takes ${RUN_TIME}; the numbers above the chart say which one is running and how long it has left. The chart draws fine-tuning, then from scratch as a dashed line: compare them over the first few hundred evaluations, where fine-tuning starts from a brain that already works. By the end of this short run either may lead: one run is one sample; the study's figure has five runs of each.`,
     setup: { rows: BIPED_LARGE, brain: { module: ATTENTION, on: 'drawn' }, terrain: VIEW, run: QUICK, compare: true },
     target: '#scene, #run-finetune',
     figure: 'finetune-biped-large',
@@ -140,7 +147,7 @@ export const CHAPTERS = [
     title: 'Which body for this brain?',
     text: [
       'So far you chose a body and evolved a brain for it. Now turn it around: keep the brain and let evolution search the body.',
-      `The brain is the small biped's attention module, its attention kept exactly as it was evolved (as Fine-tune keeps it); only each voxel's four output weights evolve with the body. The search starts from a plain ${size(3, 3)} box, adds and removes voxels, and keeps the fastest body of each size and each number of feet.`,
+      `The brain is the small biped's attention module, its attention kept exactly as it was evolved, as the Fine-tune button keeps it; only the body and each voxel's four output weights evolve. The search starts from a plain ${size(3, 3)} box, adds and removes voxels, and keeps the fastest body of each size and each number of feet.`,
       'The attention is the same for any body, so one brain can be tried on many bodies without starting again: this is what the paper means by a brain that can be taken apart and put together in other forms.',
     ],
     task: 'Under “Search bodies for this brain”, press “Search bodies”. When the gallery fills, click a green body to watch it walk.',
@@ -153,12 +160,12 @@ export const CHAPTERS = [
   {
     title: 'Your turn',
     text: [
-      'This table of 8 voxels is driven by the phase gait, with no brain. Now draw a robot of your own: a long worm, a taller table, a creature with three legs.',
+      `This table of ${voxels(TABLE)} voxels has no brain: the phase gait drives it, on this chapter's clock (f and φ under the robot, in “Phase gait”). Now draw a robot of your own: a long worm, a taller table, a creature with three legs.`,
       'Give it a brain: evolve one, or choose a module under “3 · Give it a brain”, load it onto your robot and fine-tune it. Every figure of the study is under “The study”, further down the page, each with its robots to watch.',
     ],
     task: 'When your own robot walks, press “Share link” and send the link: it opens your robot, its brain and its settings.',
     notice: 'This tour has a link for every chapter too (the address bar shows it), to send one chapter to a class.',
-    setup: { rows: '11111-10101', brain: null, terrain: VIEW, run: QUICK, controller: 'attention' },
+    setup: { rows: TABLE, brain: null, terrain: VIEW, run: QUICK, controller: 'attention' },
     target: '#share',
   },
 ];

@@ -37,9 +37,11 @@ export const CLAIM_TABLE = 'noninferiority.csv';
 
 /** How to read a box plot. */
 const BOX = 'Each box holds the runs of one brain (one dot per run, each with its own seed): the line in it is the median run, the box the middle half, the whiskers reach the slowest and the fastest run.';
-/** How to read a box plot with the tests of each pair under it. */
-const BOXES = `${BOX} The small print under the plot tests pairs of brains: "no difference detected" means the runs are too few to be sure the two brains differ; `
-  + 'for how to read it, see the glossary (a pair counts as different only when its Holm p is below 0.05).';
+/** How to read a box plot with the tests of each pair under it (their numbers: the glossary and "What our study found"). */
+const BOXES = `${BOX} The small print under the plot compares pairs of brains: "no difference detected" means the runs drawn are too few to be sure the two brains differ, `
+  + 'not that they are equal (see the glossary).';
+/** Where the study's tests of ten runs are, in words (a heading of the page: captions hold no links). */
+const FOUND = '“What our study found”, further down the page';
 
 /** @type {StudyFigure[]} */
 export const FIGURES = [
@@ -48,8 +50,8 @@ export const FIGURES = [
     file: 'fig4-rq1-biped-4x3-30000-unseen.svg',
     title: 'Three brains on the biped, each run\'s best walking on ten unseen terrains',
     paper: 'The paper\'s Fig. 4: attention walks faster than a plain network (mlp) and than a network whose voxels send messages (mlp-comm). '
-      + 'This figure is our first five runs of each brain: attention has the highest median, but five are too few for the tests. '
-      + 'With ten runs of each (our results page), attention beats mlp (Holm p 0.017), while between attention and mlp-comm no difference is detected.',
+      + 'This figure shows only our first five runs of each brain: attention has the highest median, but its small print finds "no difference detected" for every pair, even attention and mlp, because five runs are too few to be sure. '
+      + `We then ran ten of each (${FOUND}): with ten, attention is faster than mlp, while attention and mlp-comm still cannot be told apart.`,
     read: `${BOXES} A point is the mean speed of one run's best robot over ten hilly terrains it was not trained on; higher is faster.`,
     runs: [{ kind: 'scratch', shape: 'biped-4x3', evals: 30000, controllers: ['attention', 'mlp-comm', 'mlp'] }],
   },
@@ -57,9 +59,9 @@ export const FIGURES = [
     id: 'validation-comb',
     file: 'fig4-rq1-comb-7x2-30000-unseen.svg',
     title: 'Three brains on the comb, each run\'s best walking on ten unseen terrains',
-    paper: 'The paper\'s Fig. 4 found attention ahead on the comb too. This figure is our first five runs of each, where the tests detect no difference between the three brains; '
-      + 'with ten runs of each (our results page), attention beats mlp (Holm p 0.034), while between attention and mlp-comm no difference is detected, '
-      + 'nor when five runs of each (seeds 1-5, on which mlp-comm had led) go on to twice the evaluations (60,000).',
+    paper: 'The paper\'s Fig. 4 found attention ahead on the comb too. This figure shows only our first five runs of each, too few to tell the three brains apart; '
+      + `with ten runs of each (${FOUND}), attention is faster than mlp, while attention and mlp-comm cannot be told apart, `
+      + 'nor when five runs of each (the five on which mlp-comm had led) go on to twice the evaluations (60,000).',
     read: `${BOXES} A point is the mean speed of one run's best robot over ten hilly terrains it was not trained on.`,
     runs: [{ kind: 'scratch', shape: 'comb-7x2', evals: 30000, controllers: ['attention', 'mlp-comm', 'mlp'] }],
   },
@@ -70,7 +72,7 @@ export const FIGURES = [
     paper: 'The paper\'s Fig. 6: with every voxel\'s attention frozen as it was at one moment, the robots barely move.',
     read: 'Each run\'s best robot, its attention frozen as it was at the second on the horizontal axis of a walk, then walked 30 s afresh from standing, frozen from its first step: its speed. '
       + 'The frozen curve hugs zero: frozen, the robots move a few centimetres per second at most, where the same robots walk about 4 m/s unfrozen (the other line: the middle of the runs, over a whole 30-s walk). '
-      + 'This figure is our first five runs; the results page gives the middle of ten.',
+      + `This figure shows our first five runs; the middle of ten is in ${FOUND}.`,
     runs: [{ kind: 'scratch', shape: 'biped-4x3', evals: 30000, controllers: ['attention'] }],
   },
   {
@@ -88,8 +90,8 @@ export const FIGURES = [
     file: 'fig3-comb-budget-comb-7x2-60000.svg',
     title: 'Attention and mlp-comm on the comb, evolved for twice as long',
     paper: 'The paper stopped at 30,000 evaluations, saying every curve had levelled off by then. Ours were still rising, so five runs of each '
-      + '(seeds 1-5, the ones on which mlp-comm had led at 30,000) '
-      + 'went on to 60,000: both brains got faster in every run, and still no difference is detected between their speeds on ten unseen terrains (p 0.55; p: see the glossary).',
+      + '(the five on which mlp-comm had led at 30,000) '
+      + 'went on to 60,000: both brains got faster in every run, and their speeds on ten unseen terrains still cannot be told apart.',
     read: 'Speed of the best robot of each generation (the median run; shaded, the middle half) against evaluations, five runs of each brain; '
       + 'the first 30,000 evaluations of each run (up to the dashed line) are exactly the run the other comb figures show.',
     runs: [{ kind: 'scratch', shape: 'comb-7x2', evals: 60000, controllers: ['attention', 'mlp-comm'] }],
@@ -101,14 +103,15 @@ export const FIGURES = [
     report: 'report-codesign/',
     file: 'codesign-rq3-unseen.svg',
     title: 'Searching for a body: a frozen brain from the biped against brains evolved with the body',
-    paper: 'Our own question (the paper moved brains only between bodies of the same kind). Ten searches per brain, each 6,000 evaluations from a 3 × 3 box: '
-      + 'with the biped\'s attention kept frozen, the searches ended on faster bodies than with a plain network (mlp; Holm p 0.006) or a messaging one (mlp-comm; Holm p 0.027) evolved along with the body; '
-      + 'against attention evolved from scratch with the body, no difference is detected (Holm p 0.25). '
-      + 'Fine-tuned along with the body, the same attention ended on the fastest middle body of all, 3.34 m/s, but against attention from scratch no difference is detected either (Holm p 0.071). '
+    paper: 'Our own question (the paper moved brains only between bodies of the same kind). Ten searches per brain, each 6,000 evaluations from a 3 × 3 box. '
+      + 'With the biped\'s attention kept frozen, the searches ended on faster bodies than with a plain network (mlp) or a messaging one (mlp-comm) evolved along with the body; '
+      + 'against attention evolved from scratch with the body, ten searches were too few to tell. '
+      + 'The box "finetune" sits highest of the five (the fastest median), yet ten searches were again too few to tell it apart from attention evolved from scratch. '
       + 'The fastest body of each brain is in the playground\'s list of modules.',
     read: `${BOXES} A point is one search's final best body, with its brain, walking ten hilly terrains it was not trained on. `
-      + 'The boxes: frozen, the biped\'s attention kept frozen; finetune, the same attention fine-tuned along with the body; '
-      + 'scratch-attention, scratch-mlp and scratch-mlp-comm, each brain evolved from scratch along with the body ("rq3" in the title is the name of this search in our study\'s files).',
+      + 'The boxes: frozen, the biped\'s attention kept exactly as it was evolved (as the Fine-tune button keeps it), only the body and the output weights evolving; '
+      + 'finetune, started from the same module, every gene evolving with the body, its attention too (a name from our study\'s files: not what the Fine-tune button does); '
+      + 'scratch-attention, scratch-mlp and scratch-mlp-comm, each brain evolved from scratch along with the body. The figure\'s title calls this search "rq3": only its name in our files.',
     runs: [],
   },
   {
