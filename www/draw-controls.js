@@ -2,23 +2,25 @@
 /**
  * The controls of “1 · Draw” around the editor's grid: the presets, undo and redo (also
  * Ctrl+Z, Ctrl+Shift+Z and Ctrl+Y), clear, erase mode for touch screens, and the rows typed
- * as text. Each change of the drawing is handed to the page (`changed`), none while a run
- * uses the robot.
+ * as text (a typed field: rows refused stay typed, marked and said under the field, until the
+ * field holds rows again). Each change of the drawing is handed to the page (`changed`), none
+ * while a run uses the robot.
  */
+import { Drawing } from './drawing.js';
+import { TypedField } from './typed-field.js';
 
 /**
  * @param {Document} doc
  * @param {import('./core.js').Defaults} defaults
  * @param {import('./drawing.js').Drawing} drawing
  * @param {import('./editor.js').Editor} editor
- * @param {{changed: () => void, running: () => boolean, message: (text: string) => void}} hooks
- *   message: about the rows typed ('' takes it away)
+ * @param {import('./message.js').MessageBox} messages where rows refused are said
+ * @param {{changed: () => void, running: () => boolean}} hooks
  */
-export function wireDrawControls(doc, defaults, drawing, editor, hooks) {
+export function wireDrawControls(doc, defaults, drawing, editor, messages, hooks) {
   const el = (/** @type {string} */ id) => /** @type {any} */ (doc.getElementById(id));
   const presetSelect = /** @type {HTMLSelectElement} */ (el('preset'));
-  const rowsInput = /** @type {HTMLInputElement} */ (el('rows'));
-  const redraw = () => { hooks.message(''); editor.draw(); hooks.changed(); }; // the rows are valid again
+  const redraw = () => { editor.draw(); hooks.changed(); };
   for (const p of defaults.presets) presetSelect.append(new Option(p.name, p.rows));
   presetSelect.addEventListener('change', () => {
     if (!presetSelect.value) return;
@@ -41,9 +43,9 @@ export function wireDrawControls(doc, defaults, drawing, editor, hooks) {
     if (key === 'z' && !e.shiftKey) { e.preventDefault(); undo(); }
     if ((key === 'z' && e.shiftKey) || key === 'y') { e.preventDefault(); redo(); }
   });
-  rowsInput.addEventListener('change', () => {
-    const problem = drawing.setRows(rowsInput.value.trim() || '0');
-    if (problem) { hooks.message(problem); rowsInput.value = drawing.rows(); return; }
-    redraw();
+  const rows = (/** @type {string} */ text) => text.trim() || '0'; // nothing typed: an empty drawing
+  new TypedField(el('rows'), messages, { // the drawing's rule, tried on a blank drawing of the same grid
+    problem: (text) => new Drawing(drawing.width, drawing.height).setRows(rows(text)),
+    use: (text) => { drawing.setRows(rows(text)); redraw(); },
   });
 }

@@ -65,6 +65,7 @@ const editor = new Editor(el('editor'), drawing, {
 });
 const viewer = new Viewer(document, {
   message: showMessage,
+  messages,
   clicked: (pick) => editWalking(robot, pick),
   missed: () => messages.show('Click a voxel to remove it, or a spot right next to one (its own width away at most) to add one there.', 'note'),
 });
@@ -138,18 +139,23 @@ new SearchEstimate(el('codesign-estimate'), () => ({ evaluations: Number(el('cod
   rows: el('codesign-from').value === 'box' ? BOX : drawing.rows(), workers: Number(runs.inputs.workers.value) || 1, running: bodySearch.running,
   brain: searchBrain() }), () => estimate.currentPace());
 
+/** The viewer's terrain changed: the speed is measured on it, and it is kept. */
+function terrainChanged() {
+  robot.remeasure();
+  keeper.schedule();
+}
+
 function wire() {
-  wireDrawControls(document, defaults, drawing, editor, {
+  wireDrawControls(document, defaults, drawing, editor, messages, {
     changed: () => robot.bodyChanged(),
     running: () => robot.running,
-    message: (text) => showMessage(text, 'rows'),
   });
   for (const c of defaults.controllers) controllerSelect.append(new Option(c));
   controllerSelect.addEventListener('change', () => robot.controllerChosen());
   el('share').addEventListener('click', () => keeper.share());
   el('glossary-open').addEventListener('click', () => { el('glossary').open = true; el('glossary').scrollIntoView({ behavior: 'smooth' }); });
   for (const input of Object.values(runs.inputs)) input.addEventListener('change', () => keeper.schedule());
-  viewer.terrain.addEventListener('change', () => { robot.remeasure(); keeper.schedule(); });
+  viewer.terrain.listen(terrainChanged);
   runs.inputs.seconds.addEventListener('change', () => {
     if (robot.brain?.seconds) return; // a trained brain walks the episodes it was trained on
     viewer.setSeconds(robot.episodeSeconds());
@@ -225,7 +231,7 @@ fillResults(el('results-plain-body'), (id) => study.show(id));
 wireWords(document);
 challenge = new Challenge(document, lab, {
   defaults, rows: () => drawing.rows(), race, message: showMessage, pin: (text) => messages.show(text, 'pinned'),
-  setView: (terrain) => { viewer.terrain.value = terrain; viewer.terrain.dispatchEvent(new Event('change')); },
+  setView: (terrain) => { viewer.terrain.value = terrain; viewer.reload(); terrainChanged(); },
   setRun: (values) => { runs.setValues(values); keeper.schedule(); },
   setBody: (rows) => robot.setBody(rows),
 });

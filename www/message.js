@@ -6,7 +6,9 @@
  *   again is shown once, as the newest.
  * - An error about an input has a source ('rows', 'run-settings', 'import', ...): a newer
  *   message from that source replaces it, and it goes once that input is valid (drop). Errors
- *   without a source (a crashed worker, a damaged link) only go by their close button.
+ *   without a source (a crashed worker, a damaged link) only go by their close button. A source
+ *   may have a place of its own (a typed field's, right under it: typed-field.js). An error may
+ *   carry its exact rule, folded under it for those who want it.
  * - A note ("Link copied") goes away by itself after a while; a newer note replaces it.
  * - A pinned note (a challenge's rules) looks like a note and stays until it is closed.
  * - The validation message (the drawing is not a robot yet) stays while that is so: the
@@ -31,13 +33,21 @@ export class MessageBox {
     this.drawingBox = drawingBox;
     /** @type {Map<HTMLElement, number>} the notes' timers */
     this.timers = new Map();
+    /** @type {Map<string, HTMLElement>} the sources whose errors have a place of their own */
+    this.places = new Map();
+  }
+
+  /** Errors of `source` go in `box` from now on (a typed field's own, next to it). @param {string} source @param {HTMLElement} box */
+  place(source, box) {
+    this.places.set(source, box);
   }
 
   /**
    * Shows `words` (nothing when empty) of a kind, in place of the message of its source.
    * @param {string} words @param {Kind} [kind] @param {string} [source] the input it is about
+   * @param {string} [detail] the exact rule, folded under the words
    */
-  show(words, kind = 'error', source) {
+  show(words, kind = 'error', source, detail) {
     const sentence = plain(words);
     if (kind !== 'error') this.clear(kind); // one note, one validation message at a time
     if (source) this.drop(source);
@@ -45,7 +55,7 @@ export class MessageBox {
     for (const old of this.entries()) {
       if (old.dataset.kind === kind && old.firstChild?.textContent === sentence) this.remove(old);
     }
-    const entry = document.createElement('p');
+    const entry = document.createElement('div');
     entry.className = 'message';
     entry.dataset.kind = kind;
     if (source) entry.dataset.source = source;
@@ -61,11 +71,20 @@ export class MessageBox {
     close.textContent = '\u00d7';
     close.addEventListener('click', () => this.remove(entry));
     entry.append(text, close);
-    const box = kind === 'validation' ? this.drawingBox : this.box;
+    if (detail) {
+      const more = document.createElement('details');
+      const summary = document.createElement('summary');
+      summary.textContent = 'The exact rule';
+      more.append(summary, detail);
+      entry.append(more);
+    }
+    const box = kind === 'validation' ? this.drawingBox : (source && this.places.get(source)) || this.box;
     box.append(entry);
     box.hidden = false;
-    // An error said while the person is further down the page: brought into view to be read.
-    if (kind === 'error' && box.getBoundingClientRect().bottom < 0) box.scrollIntoView({ block: 'nearest' });
+    // An error under its field: the least scroll that shows it all (the field, just above it, stays in view).
+    if (kind === 'error' && box !== this.box) entry.scrollIntoView({ block: 'nearest' });
+    // Another said while the person is further down the page: brought into view to be read.
+    else if (kind === 'error' && box.getBoundingClientRect().bottom < 0) box.scrollIntoView({ block: 'nearest' });
     if (kind === 'note') this.timers.set(entry, window.setTimeout(() => this.remove(entry), NOTE_MS));
   }
 
@@ -81,7 +100,7 @@ export class MessageBox {
 
   /** @returns {HTMLElement[]} the messages shown, oldest first */
   entries() {
-    const boxes = this.drawingBox === this.box ? [this.box] : [this.box, this.drawingBox];
+    const boxes = [...new Set([this.box, this.drawingBox, ...this.places.values()])];
     return /** @type {HTMLElement[]} */ (boxes.flatMap((b) => [...b.children]));
   }
 

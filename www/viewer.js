@@ -4,15 +4,20 @@
  * figures and the attention maps (one of them read enlarged), with Play / Hold / Restart,
  * Freeze the attention, speed and terrain. It shows
  * whatever body and brain the page gives it; the worker answers 'loaded' or 'error' and a
- * refused load leaves the previous robot walking. Messages: protocol.js.
+ * refused load leaves the previous robot walking. Its terrain is a typed field (typed-field.js):
+ * a terrain the core refuses stays typed, said in a student's words, and the robot walks on
+ * the last one accepted. Messages: protocol.js.
  */
 import { AttentionPanel } from './attention.js';
 import { AttentionReader } from './attention-reader.js';
+import { checkTerrain } from './core.js';
 import { FreezeControl } from './freeze.js';
 import { spawn } from './kit.js';
 import { FromWorker, ToWorker, frameIsConsistent } from './protocol.js';
 import { Readout } from './readout.js';
 import { Renderer } from './renderer.js';
+import { terrainRefused } from './terrain-words.js';
+import { TypedField } from './typed-field.js';
 
 /** Workers restarted after a crash before the page gives up. */
 const MAX_RESTARTS = 3;
@@ -20,6 +25,7 @@ const MAX_RESTARTS = 3;
 /**
  * @typedef {object} ViewerHooks
  * @property {(text: string) => void} message  shows an error
+ * @property {import('./message.js').MessageBox} messages  where a terrain typed is refused
  * @property {(pick: {voxel: number, dx: number, dy: number}) => void} clicked  a click on or next to a voxel
  * @property {() => void} missed  a click on the scene neither on nor next to a voxel
  */
@@ -44,7 +50,11 @@ export class Viewer {
     this.status = el('status');
     this.buttons = { play: el('sim-play'), hold: el('sim-hold'), restart: el('sim-restart') };
     this.speed = /** @type {HTMLSelectElement} */ (el('speed'));
-    this.terrain = /** @type {HTMLInputElement} */ (el('terrain'));
+    /** The terrain: its `value` is the one walked on, whatever is typed. */
+    this.terrain = new TypedField(el('terrain'), hooks.messages, {
+      problem: async (text) => { const rule = await checkTerrain(text); return rule && terrainRefused(text, rule); },
+      use: () => this.reload(),
+    });
     this.gait = { frequency: /** @type {HTMLInputElement} */ (el('frequency')), phase: /** @type {HTMLInputElement} */ (el('phase')) };
     /** The episode the worker runs now (the last one that loaded). @type {import('./protocol.js').EpisodeParams | null} */
     this.current = null;
@@ -67,9 +77,7 @@ export class Viewer {
     buttons.hold.addEventListener('click', () => this.worker.postMessage({ type: ToWorker.PAUSE }));
     buttons.restart.addEventListener('click', () => { this.worker.postMessage({ type: ToWorker.RESET }); this.goOn(); });
     this.speed.addEventListener('change', () => this.worker.postMessage({ type: ToWorker.SPEED, speed: Number(this.speed.value) }));
-    for (const input of [this.terrain, this.gait.frequency, this.gait.phase]) {
-      input.addEventListener('change', () => { if (this.wanted) this.show(this.wanted.shape, this.wanted.brain, false); });
-    }
+    for (const input of Object.values(this.gait)) input.addEventListener('change', () => this.reload());
     this.canvas.addEventListener('click', (e) => {
       const pick = this.renderer.pick(e.clientX, e.clientY);
       if (pick) this.hooks.clicked(pick); else this.hooks.missed();
@@ -78,6 +86,11 @@ export class Viewer {
       const voxel = this.attention.pick(e.clientX, e.clientY);
       if (voxel >= 0) this.reader.open(voxel, this.attention.cells[2 * voxel], this.attention.cells[2 * voxel + 1]);
     });
+  }
+
+  /** Walks the robot again from the start (the terrain or the gait changed). */
+  reload() {
+    if (this.wanted) this.show(this.wanted.shape, this.wanted.brain, false);
   }
 
   /** @returns {Worker} a new simulation worker, told to load the wanted episode */
@@ -173,8 +186,10 @@ export class Viewer {
   onError(text, fatal) {
     this.hooks.message(text);
     if (!fatal) {
+      const refused = this.wanted;
       this.wanted = this.current;
-      if (this.current) this.terrain.value = this.current.terrain; // a refused terrain does not stay typed
+      // A terrain the page set (a link, a kept state) and the core refused: the one walked on instead.
+      if (this.current && refused?.terrain !== this.current.terrain) this.terrain.value = this.current.terrain;
       return;
     }
     this.worker.terminate();

@@ -98,8 +98,9 @@ test('drag draws a row, right-drag erases it, typed rows and presets replace the
   await waitForText(page, 'status', /^5 voxels/);
   await page.locator('#rows').fill('1x1');
   await page.locator('#rows').press('Enter');
-  await waitForText(page, 'message', /rows hold only 1/);
-  assert.equal(await page.locator('#rows').inputValue(), '111-101', 'a refused entry shows the drawing again');
+  await waitForText(page, 'rows-message', /rows hold only 1/);
+  assert.equal(await page.locator('#rows').inputValue(), '1x1', 'a refused entry stays typed, to be corrected');
+  assert.match(String(await page.locator('#status').textContent()), /^5 voxels/, 'the robot keeps its body');
   await byTestId(page, 'preset').selectOption({ label: 'comb-7x2' });
   await waitForText(page, 'status', /^11 voxels/);
   await params(32 + 4 * 11 + 1);
@@ -109,12 +110,13 @@ test('drag draws a row, right-drag erases it, typed rows and presets replace the
 test('a bad terrain shows a readable message and the robot keeps walking', async () => {
   await page.locator('#terrain').fill('hilly-one');
   await page.locator('#terrain').press('Enter');
-  await waitForText(page, 'message', /terrain/i);
+  await waitForText(page, 'terrain-message', /^“hilly-one” is not a terrain\. Try flat/);
   const t0 = await figure(page, 'sim-time');
   await waitForFigure(page, 'sim-time', `v >= ${t0 + 0.5}`, 20_000);
   assert.match(String(await page.locator('#status').textContent()), /^11 voxels/, 'still the comb');
   await page.locator('#terrain').fill('hilly-1-10-0');
   await page.locator('#terrain').press('Enter');
+  await byTestId(page, 'terrain-message').waitFor({ state: 'hidden' }); // a terrain again: its message went
   assert.deepEqual(problems, []);
 });
 
