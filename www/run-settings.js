@@ -11,6 +11,7 @@ import { messageOf } from './kit.js';
 import { planWords } from './run-plan.js';
 import { MAX_EVALUATORS } from './protocol.js';
 import { RUN_KEYS } from './share.js';
+import { RUN_TIME } from './run-time.js';
 import { count, decimal } from './format.js';
 
 export class RunSettings {
@@ -52,7 +53,7 @@ export class RunSettings {
     this.buttons.quick.addEventListener('click', () => this.preset(this.quick(defaults.quick)));
     this.buttons.paper.addEventListener('click', () => this.preset(defaults.paper));
     const words = (/** @type {import('./core.js').RunPreset} */ p) => `population ${count(p.population)}, ${p.seconds}-s episodes, ${count(p.budget)} evaluations`;
-    this.buttons.quick.title = `Population, episodes and evaluations for a run of a minute or two: ${words(defaults.quick)}`;
+    this.buttons.quick.title = `Population, episodes and evaluations for a quick run, ${RUN_TIME}: ${words(defaults.quick)}`;
     this.buttons.paper.title = `The paper's settings: ${words(defaults.paper)}`;
     for (const button of [this.buttons.quick, this.buttons.paper]) button.addEventListener('click', () => { this.untouched = false; });
     this.buttons.dice.addEventListener('click', () => freshSeed().then((seed) => { this.inputs.seed.value = String(seed); },
