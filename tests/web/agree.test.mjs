@@ -153,11 +153,11 @@ test('numbers that agree: during a fine-tune the walking best shows its own trai
   const agreed = await page.waitForFunction(() => {
     const driver = document.getElementById('driver')?.textContent ?? '';
     const note = document.querySelector('[data-testid="speed-note"]')?.textContent ?? '';
-    const best = /fine-tuning: ([−-]?\d+\.\d\d) m\/s in one evaluation/.exec(driver)?.[1];
+    const best = /\(fine-tuning\): ([−-]?\d+\.\d\d) m\/s in one evaluation/.exec(driver)?.[1];
     return best && note.startsWith(`In training: ${best} m/s`) ? [driver, note] : false;
   }, undefined, { timeout: 60_000 });
   const [driver, note] = /** @type {string[]} */ (await agreed.jsonValue());
-  const best = /fine-tuning: ([−-]?\d+\.\d\d) m\/s in one evaluation/.exec(driver)?.[1];
+  const best = /\(fine-tuning\): ([−-]?\d+\.\d\d) m\/s in one evaluation/.exec(driver)?.[1];
   assert.ok(best, driver);
   assert.match(note, new RegExp(`^In training: ${best} m/s \\(its best single evaluation, on a hilly-1-10 terrain drawn fresh for that evaluation, 2-s episodes\\)\\. `
     + 'The viewer measures its speed as it walks, over a 2-s episode on hilly-1-10-0 \\(under the robot, once the episode is over\\)\\. Training draws a fresh terrain'), note);
