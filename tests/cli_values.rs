@@ -37,8 +37,16 @@ fn a_negative_number_after_a_flag_is_its_value() {
         vsr(&[&["evolve"][..], &args].concat())
     };
     let cases = [
-        ("--evals", "-5", "invalid value '-5' for '--evals <EVALS>'"),
-        ("--seed", "-1", "invalid value '-1' for '--seed <SEED>'"),
+        (
+            "--evals",
+            "-5",
+            "invalid value '-5' for '--evals <EVALS>': not a whole number, 0 or more",
+        ),
+        (
+            "--seed",
+            "-1",
+            "invalid value '-1' for '--seed <SEED>': not a whole number, 0 or more",
+        ),
         (
             "--seconds",
             "-3",

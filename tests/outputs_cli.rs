@@ -78,3 +78,32 @@ fn ablate_says_what_frozen_means_and_prints_the_unfrozen_velocity() {
         3
     );
 }
+
+/// `vsr evolve ... | head -1`: stdout closed before the run ends is not an error; the run
+/// finishes and writes its file (println! panicked there: exit 101, no run file).
+#[test]
+fn a_closed_stdout_does_not_end_the_run() {
+    let dir = std::env::temp_dir().join(format!("vsr-pipe-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("run.json");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_vsr"))
+        .args(
+            format!(
+                "evolve --shape biped-4x3 --controller mlp --evals 100 --seed 2 --population 10 \
+                 --seconds 1 --threads 1 --out {}",
+                out.display()
+            )
+            .split_whitespace(),
+        )
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take()); // nobody reads: every line it prints meets a closed pipe
+    let done = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&done.stderr);
+    assert!(done.status.success(), "{:?}: {stderr}", done.status);
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    assert!(out.exists(), "the run file is written");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -17,9 +17,9 @@ pub struct Args {
     /// The terrain of the recording and of the frozen episodes.
     #[arg(long, default_value = ABLATION_TERRAIN)]
     terrain: String,
-    /// Freeze at every whole second 0 ..= LAST.
-    #[arg(long, value_name = "LAST", default_value_t = 30)]
-    last_second: u32,
+    /// Freeze at every whole second 0 ..= LAST [default: the episode's length, whole seconds].
+    #[arg(long, value_name = "LAST")]
+    last_second: Option<u32>,
     /// Simulated seconds of each frozen episode [default: the run's own episode length,
     /// config.seconds in the run file].
     #[arg(long)]
@@ -35,10 +35,9 @@ pub struct Args {
 /// Runs the command.
 pub fn run(args: Args) -> Result<()> {
     args.seconds.map(check_seconds).transpose()?;
-    if f64::from(args.last_second) > MAX_SECONDS {
+    if let Some(last) = args.last_second.filter(|&l| f64::from(l) > MAX_SECONDS) {
         return Err(Error::Input(format!(
-            "--last-second must be at most {MAX_SECONDS}, got {}",
-            args.last_second
+            "--last-second must be at most {MAX_SECONDS}, got {last}"
         )));
     }
     if let Some(out) = &args.out {
@@ -46,15 +45,23 @@ pub fn run(args: Args) -> Result<()> {
     }
     let run = crate::runfile::load(&args.genome)?;
     let seconds = args.seconds.unwrap_or(run.config.seconds);
+    // Whole seconds of the episode, at most MAX_SECONDS: a u32 without loss.
+    let last_second = args.last_second.unwrap_or(seconds.floor() as u32);
+    if f64::from(last_second) > seconds {
+        eprintln!(
+            "vsr: note: freezing up to {last_second} s, past the end of a {seconds}-s episode: \
+             the walk that records the matrices goes on beyond it"
+        );
+    }
     let best = run.best;
-    let points = ablate(&best, &args.terrain, args.last_second, seconds)?;
+    let points = ablate(&best, &args.terrain, last_second, seconds)?;
     if let Some(out) = &args.out {
         crate::atomic::write_json(out, &points, "ablation file")?;
     }
     if args.json {
         let body = serde_json::to_string(&points)
             .map_err(|e| Error::Io(format!("cannot print JSON: {e}")))?;
-        println!("{body}");
+        say!("{body}");
         return Ok(());
     }
     let unfrozen = unfrozen_velocity(&best, &args.terrain, seconds)?;
@@ -64,14 +71,14 @@ pub fn run(args: Args) -> Result<()> {
 
 /// The text output: what the rows mean, the unfrozen velocity, one row per freeze second.
 fn print_table(terrain: &str, seconds: f64, unfrozen: f64, points: &[AblationPoint]) {
-    println!(
+    say!(
         "Frozen at s: every voxel's attention matrix as it was s seconds into a walk on \
          {terrain},\nthen held fixed (no longer computed from the sensors) for a fresh \
          {seconds}-s walk on {terrain}.\nUnfrozen: the same walk with the attention live."
     );
-    println!("{:>13}  {:>14.3}", "unfrozen", unfrozen);
-    println!("frozen at (s)  velocity (m/s)");
+    say!("{:>13}  {:>14.3}", "unfrozen", unfrozen);
+    say!("frozen at (s)  velocity (m/s)");
     for p in points {
-        println!("{:>13}  {:>14.3}", p.freeze_second, p.velocity);
+        say!("{:>13}  {:>14.3}", p.freeze_second, p.velocity);
     }
 }

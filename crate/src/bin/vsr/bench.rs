@@ -69,29 +69,34 @@ pub fn run(args: Args) -> vsr::Result<()> {
         if let Some(e) = evolution {
             out["evolution"] = e;
         }
-        println!("{out}");
+        say!("{out}");
         return Ok(());
     }
     print_rows(&args, rows);
     batch::print(&batch);
     if let Some(e) = evolution {
-        println!();
+        say!();
         evolution::print(&e);
     }
     Ok(())
 }
 
 fn print_rows(args: &Args, rows: Vec<serde_json::Value>) {
-    println!(
+    say!(
         "single thread, gait 1,1.5 on {}, best of {}",
-        args.terrain, args.repeats
+        args.terrain,
+        args.repeats
     );
-    println!(
+    say!(
         "{:<10} {:>12} {:>10} {:>10} {:>12}",
-        "shape", "steps/s", "ms/eval", "evals/s", "sim s/wall s"
+        "shape",
+        "steps/s",
+        "ms/eval",
+        "evals/s",
+        "sim s/wall s"
     );
     for r in rows {
-        println!(
+        say!(
             "{:<10} {:>12.0} {:>10.2} {:>10.1} {:>12.0}",
             r["shape"].as_str().unwrap_or(""),
             r["steps_per_second"].as_f64().unwrap_or(0.0),

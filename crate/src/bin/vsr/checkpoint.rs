@@ -43,13 +43,17 @@ impl Checkpointer {
     /// start. A checkpoint of another run, or a damaged one, is an error naming the file
     /// (nothing is deleted: the user decides).
     pub fn start(&self, config: EvolutionConfig, earlier: Option<&Path>) -> Result<Evolution> {
-        if let Some(evolution) = resume_from(&self.path, &config)? {
+        if let Some(evolution) =
+            resume_from(&self.path, &config, "delete it to start the run afresh")?
+        {
             return Ok(evolution);
         }
         let Some(earlier) = earlier else {
             return Evolution::new(config);
         };
-        match resume_from(earlier, &config)? {
+        // Another run's file, maybe: never advise deleting it.
+        let advice = "leave out --continue to start this run afresh (the file is left as it is)";
+        match resume_from(earlier, &config, advice)? {
             Some(evolution) => Ok(evolution),
             None => {
                 eprintln!(
@@ -105,8 +109,9 @@ impl Checkpointer {
     }
 }
 
-/// The run `config` continued from the checkpoint at `path`; `None` if there is no such file.
-fn resume_from(path: &Path, config: &EvolutionConfig) -> Result<Option<Evolution>> {
+/// The run `config` continued from the checkpoint at `path`; `None` if there is no such file; a
+/// file that cannot continue this run is an error that ends with `advice`.
+fn resume_from(path: &Path, config: &EvolutionConfig, advice: &str) -> Result<Option<Evolution>> {
     let text = match fs::read_to_string(path) {
         Ok(text) => text,
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
@@ -121,13 +126,8 @@ fn resume_from(path: &Path, config: &EvolutionConfig) -> Result<Option<Evolution
         let at = (c.ga.generation, c.ga.evaluations, c.code.clone());
         Evolution::resume(config.clone(), c).map(|e| (e, at))
     });
-    let (evolution, (generation, evaluations, code)) = resumed.map_err(|e| {
-        Error::Input(format!(
-            "{}: {}; delete it to start the run afresh",
-            path.display(),
-            e.message()
-        ))
-    })?;
+    let (evolution, (generation, evaluations, code)) = resumed
+        .map_err(|e| Error::Input(format!("{}: {}; {advice}", path.display(), e.message())))?;
     eprintln!(
         "resuming from {} (generation {generation}, {evaluations} evaluations done)",
         path.display()

@@ -56,6 +56,16 @@ fn command() -> clap::Command {
     negative_values(Cli::command())
 }
 
+/// A count that could not be read, in words: Rust's "invalid digit found in string" (for
+/// `--evals -5` or `--evals ten`) says what a count is instead.
+fn plain_parse_error(text: &str) -> String {
+    text.replace(
+        ": invalid digit found in string",
+        ": not a whole number, 0 or more",
+    )
+    .replace(": number too large to fit in target type", ": too large")
+}
+
 fn parse() -> Result<Cli, clap::Error> {
     let mut command = command();
     let matches = command.try_get_matches_from_mut(std::env::args_os())?;
@@ -66,10 +76,13 @@ fn parse() -> Result<Cli, clap::Error> {
 pub fn run() -> i32 {
     let cli = match parse() {
         Ok(cli) => cli,
+        Err(e) if e.use_stderr() => {
+            eprint!("{}", plain_parse_error(&e.render().to_string()));
+            return 2;
+        }
         Err(e) => {
-            let code = if e.use_stderr() { 2 } else { 0 };
-            let _ = e.print();
-            return code;
+            let _ = e.print(); // --help, --version
+            return 0;
         }
     };
     let result = match cli.command {

@@ -181,7 +181,7 @@ pub fn run(args: Args) -> Result<()> {
         std::fs::remove_file(&checkpoint)
             .map_err(|e| Error::Io(format!("cannot delete {}: {e}", checkpoint.display())))?;
     }
-    println!(
+    say!(
         "{} brain ({}): {} bodies found in {} evaluations; best {} ({} voxels) at {:.3} m/s; \
          {:.1} s on {} threads; wrote {}",
         run.config.brain,

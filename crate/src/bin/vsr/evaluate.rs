@@ -60,6 +60,6 @@ pub fn run(args: Args) -> vsr::Result<()> {
         "steps": outcome.steps,
         "seconds": outcome.seconds,
     });
-    println!("{body}");
+    say!("{body}");
     Ok(())
 }

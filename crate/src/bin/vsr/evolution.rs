@@ -28,7 +28,7 @@ pub fn execute(mut config: EvolutionConfig, options: &RunOptions) -> Result<()> 
     let mut evolution = checkpointer.start(config, options.r#continue.as_deref())?;
     if evolution.is_done() && options.out.exists() {
         // A kept final checkpoint next to its run file: the run is complete.
-        println!(
+        say!(
             "{} is complete (its checkpoint is at the end of the budget): nothing to do; \
              delete {}.checkpoint to run it again",
             options.out.display(),
@@ -73,7 +73,7 @@ pub fn execute(mut config: EvolutionConfig, options: &RunOptions) -> Result<()> 
 /// One line on stdout about a finished run.
 fn print_summary(run: &RunFile, out: &Path) {
     let (last, timing) = (run.generations.last(), run.timing);
-    println!(
+    say!(
         "{} {} on {}: best {:.3} m/s after {} evaluations ({}) in {:.1} s on {}; wrote {}",
         run.config.controller,
         run.config.shape.to_rows(),

@@ -35,27 +35,40 @@ pub fn run(args: Args) -> Result<()> {
 }
 
 fn print(f: &Fidelity) {
-    println!("gait (f Hz, phi)   ours mean +- sd   reference mean +- sd   CCD off");
+    say!("gait (f Hz, phi)   ours mean +- sd   reference mean +- sd   CCD off");
     for g in &f.gaits {
         let cf = g
             .ccd_free
             .map_or("-".to_string(), |c| format!("{:.3}", c.mean));
-        println!(
+        say!(
             "{} {:>4}, {:<5}  {:>6.3} +- {:.3}     {:>6.3} +- {:.3}          {cf}",
-            g.shape, g.f, g.phi, g.ours.mean, g.ours.sd, g.reference.mean, g.reference.sd
+            g.shape,
+            g.f,
+            g.phi,
+            g.ours.mean,
+            g.ours.sd,
+            g.reference.mean,
+            g.reference.sd
         );
     }
     let a = f.agreement();
-    println!(
+    say!(
         "{}/{} means within 2 reference sd; rank correlation {:.2}; mean {:.3} m/s here, {:.3} \
          on the reference",
-        a.within_2sd, a.gaits, a.rho, a.mean_ours, a.mean_reference
+        a.within_2sd,
+        a.gaits,
+        a.rho,
+        a.mean_ours,
+        a.mean_reference
     );
     if let Some(c) = a.ccd_free {
-        println!(
+        say!(
             "on the {} gaits measured with CCD off: mean |ours - reference| {:.3} m/s, \
              |ours - CCD off| {:.3} m/s (signed-rank p = {:.2e})",
-            c.gaits, c.to_reference, c.to_ccd_free, c.test.p
+            c.gaits,
+            c.to_reference,
+            c.to_ccd_free,
+            c.test.p
         );
     }
 }

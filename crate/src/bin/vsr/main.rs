@@ -9,6 +9,17 @@
 //! `checkpoint.rs`, `trajectory.rs`, `runfile.rs` and `atomic.rs` (files). Subcommands never
 //! import each other.
 
+/// Prints a line on stdout as `println!` does, except that a stdout closed early (`vsr evolve
+/// ... | head -1`) is not an error: the command goes on and finishes its work (its files), and
+/// only the lines nobody reads any more are dropped (`println!` panics there, losing the run).
+#[cfg(not(target_arch = "wasm32"))]
+macro_rules! say {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stdout(), $($arg)*);
+    }};
+}
+
 #[cfg(not(target_arch = "wasm32"))]
 mod ablate;
 #[cfg(not(target_arch = "wasm32"))]

@@ -12,6 +12,6 @@ pub struct Args {
 /// Runs the command.
 pub fn run(args: Args) -> vsr::Result<()> {
     let (shape, kind) = args.robot.parse()?;
-    println!("{}", kind.param_count(shape.voxel_count()));
+    say!("{}", kind.param_count(shape.voxel_count()));
     Ok(())
 }

@@ -60,7 +60,7 @@ impl Progress {
     /// the bar's message on a terminal, else a line on stdout with the time and evaluations.
     pub fn generation_line(&self, text: &str) {
         if self.lines {
-            println!("{}", self.line(text));
+            say!("{}", self.line(text));
         } else {
             self.bar.set_message(text.to_string());
         }

@@ -114,9 +114,9 @@ pub fn run(args: Args) -> vsr::Result<()> {
             "wall_seconds": wall,
             "trace": trace,
         });
-        println!("{body}");
+        say!("{body}");
     } else {
-        println!(
+        say!(
             "{} on {} with gait {},{}: velocity {:.4} m/s, distance {:.3} m, {} steps ({:.2} s simulated) in {:.1} ms",
             args.shape, args.terrain, gait.frequency, gait.phase, outcome.velocity,
             outcome.distance, outcome.steps, outcome.seconds, wall * 1000.0

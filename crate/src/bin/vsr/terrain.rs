@@ -17,10 +17,10 @@ pub fn run(args: Args) -> vsr::Result<()> {
     let t = Terrain::parse(&args.terrain)?;
     if args.json {
         let body = serde_json::json!({ "xs": t.xs(), "ys": t.ys() });
-        println!("{body}");
+        say!("{body}");
     } else {
         for (x, y) in t.xs().iter().zip(t.ys()) {
-            println!("{x} {y}");
+            say!("{x} {y}");
         }
     }
     Ok(())

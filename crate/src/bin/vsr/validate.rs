@@ -41,13 +41,13 @@ pub fn run(args: Args) -> Result<()> {
     if args.json {
         let body = serde_json::to_string(&validation)
             .map_err(|e| Error::Io(format!("cannot print JSON: {e}")))?;
-        println!("{body}");
+        say!("{body}");
         return Ok(());
     }
     for t in &validation.terrains {
-        println!("{:<16} {:>8.3} m/s", t.terrain, t.velocity);
+        say!("{:<16} {:>8.3} m/s", t.terrain, t.velocity);
     }
-    println!("{:<16} {:>8.3} m/s", "median", validation.median);
-    println!("{:<16} {:>8.3} m/s", "mean", validation.mean);
+    say!("{:<16} {:>8.3} m/s", "median", validation.median);
+    say!("{:<16} {:>8.3} m/s", "mean", validation.mean);
     Ok(())
 }

@@ -97,7 +97,7 @@ pub fn measure(repeats: usize) -> Result<Value> {
 /// Prints what [`measure`] returned.
 pub fn print(b: &Value) {
     let num = |v: &Value| v.as_f64().unwrap_or(f64::NAN);
-    println!(
+    say!(
         "batch: {} evaluations (generation {} of the {} {} run, seed {}) on 1 thread, best of {}:",
         b["evaluations"],
         b["generation"],
@@ -110,7 +110,7 @@ pub fn print(b: &Value) {
         ("alone", "alone"),
         ("together (4 in SIMD lanes)", "together"),
     ] {
-        println!(
+        say!(
             "  {what:<27} {:>7.2} ms per evaluation, {:>6.1} evaluations/s ({:.2} ms of CPU)",
             num(&b[key]["ms_per_evaluation"]),
             num(&b[key]["evaluations_per_second"]),

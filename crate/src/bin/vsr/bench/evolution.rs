@@ -141,18 +141,25 @@ pub fn measure(population: usize, repeats: usize) -> Result<Value> {
 /// Prints what [`measure`] returned as a table.
 pub fn print(e: &Value) {
     let num = |v: &Value| v.as_f64().unwrap_or(f64::NAN);
-    println!(
+    say!(
         "evolution steps on biped-4x3: generations 0-1 (population {}, {} evaluations), 30-s \
          episodes on fresh hilly-1-10 terrains",
-        e["population"], e["evaluations"]
+        e["population"],
+        e["evaluations"]
     );
     let all = format!("evals/s {} thr", e["threads"]);
-    println!(
+    say!(
         "{:<15} {:>7} {:>13} {:>13} {:>8} {:>11} {:>7}",
-        "controller", "params", "evals/s 1 thr", all, "sensors", "controller", "total"
+        "controller",
+        "params",
+        "evals/s 1 thr",
+        all,
+        "sensors",
+        "controller",
+        "total"
     );
     for r in e["controllers"].as_array().into_iter().flatten() {
-        println!(
+        say!(
             "{:<15} {:>7} {:>13.1} {:>13.1} {:>7.1}% {:>10.1}% {:>6.1}%",
             r["controller"].as_str().unwrap_or(""),
             r["params"],
@@ -163,7 +170,7 @@ pub fn print(e: &Value) {
             100.0 * num(&r["total_cost"])
         );
     }
-    println!(
+    say!(
         "costs: time in sensors and in the controller / time in physics, same gait episode \
          ({} terrains, best of {}; physics {:.1} ms per episode)",
         e["cost_terrains"],

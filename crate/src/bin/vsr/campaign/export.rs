@@ -66,11 +66,11 @@ pub fn run(args: Args) -> Result<()> {
                 .find(|e| e.file == name && args.to.join(&name).exists())
             {
                 Some(kept) => {
-                    println!("{name}: no finished run yet, the previous export kept");
+                    say!("{name}: no finished run yet, the previous export kept");
                     modules.push(kept.clone());
                 }
                 None => {
-                    println!("{name}: not yet (no finished run validated on both sets)");
+                    say!("{name}: not yet (no finished run validated on both sets)");
                     pending.push(name);
                 }
             }
@@ -97,9 +97,11 @@ pub fn run(args: Args) -> Result<()> {
         let text = fs::read(&run_path)
             .map_err(|e| Error::Io(format!("cannot read {}: {e}", run_path.display())))?;
         crate::atomic::write(&args.to.join(&name), &text, "module")?;
-        println!(
+        say!(
             "{name}: seed {} of {} validated run(s), training {:.2} m/s",
-            entry.provenance.seed, entry.provenance.chosen_from, entry.provenance.training_best
+            entry.provenance.seed,
+            entry.provenance.chosen_from,
+            entry.provenance.training_best
         );
         modules.push(entry);
     }
@@ -130,7 +132,7 @@ pub fn run(args: Args) -> Result<()> {
     )?;
     let readme = readme(&manifest, &pending, &campaign_file, &args.to);
     crate::atomic::write(&args.to.join("README.md"), readme.as_bytes(), "README")?;
-    println!(
+    say!(
         "{} modules and {} bodies in {}",
         manifest.modules.len(),
         manifest.bodies.len(),
@@ -217,7 +219,7 @@ fn remove_unlisted(dir: &Path, listed: &[String], manifest: &Manifest) -> Result
         if path.exists() {
             fs::remove_file(&path)
                 .map_err(|e| Error::Io(format!("cannot remove {}: {e}", path.display())))?;
-            println!("removed {file} (no longer chosen)");
+            say!("removed {file} (no longer chosen)");
         }
     }
     Ok(())

@@ -49,14 +49,14 @@ pub fn export(
         let Some(choice) = choice else {
             match kept() {
                 Some(entry) => {
-                    println!(
+                    say!(
                         "{name}: {ready} of {planned} runs finished and validated, the previous \
                          export kept"
                     );
                     done.bodies.push(entry);
                 }
                 None => {
-                    println!(
+                    say!(
                         "{name}: not yet ({ready} of {planned} runs finished and validated on \
                          both sets)"
                     );
@@ -95,7 +95,7 @@ pub fn export(
                 .map_err(|e| Error::Io(format!("cannot create {}: {e}", dir.display())))?;
         }
         crate::atomic::write(&path, cut.to_json().as_bytes(), "body")?;
-        println!(
+        say!(
             "{name}: seed {} of {} validated run(s), entry {}, {} voxels, unseen {:.2} m/s",
             entry.provenance.seed,
             entry.provenance.chosen_from,

@@ -23,7 +23,7 @@ pub fn run(args: Args) -> Result<()> {
     let path = args.csv.unwrap_or_else(|| out.join("campaign.csv"));
     crate::atomic::write(&path, merge::csv(&results).as_bytes(), "table")?;
     let found = results.data.iter().filter(|(_, d)| d.run.is_some()).count();
-    println!(
+    say!(
         "{} runs of {} in {}; {} planned outputs missing",
         found,
         results.data.len(),

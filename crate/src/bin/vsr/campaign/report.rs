@@ -45,14 +45,14 @@ pub fn run(args: Args) -> Result<()> {
     }
     let path = dir.join("report.md");
     crate::atomic::write(&path, built.markdown.as_bytes(), "report")?;
-    println!(
+    say!(
         "wrote {} and {} figures; {} planned outputs missing",
         path.display(),
         built.figures.len(),
         results.missing.len()
     );
     if let Some(summary) = &built.noninferiority {
-        println!("{}", summary.line());
+        say!("{}", summary.line());
     }
     Ok(())
 }

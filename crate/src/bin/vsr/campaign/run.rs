@@ -230,7 +230,7 @@ fn summarise(jobs: &[Job], states: &[State], skipped: usize, out: &Path) -> Resu
         count(State::Failed),
         count(State::Waiting),
     );
-    println!(
+    say!(
         "{} jobs: {} done ({} already before this run), {} failed, {} not started \
          (their input is missing); outputs in {}",
         jobs.len(),

@@ -40,7 +40,7 @@ pub fn run(args: Args) -> Result<()> {
         Some(n) => n,
         None => std::thread::available_parallelism().map_or(1, |n| n.get()),
     };
-    print!("{}", status(&jobs, cores));
+    say!("{}", status(&jobs, cores).trim_end_matches('\n'));
     Ok(())
 }
 

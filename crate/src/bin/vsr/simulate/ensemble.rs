@@ -59,10 +59,10 @@ pub fn run(setup: &Setup, runs: usize, json: bool) -> Result<()> {
             "sd": e.sd,
             "wall_seconds": wall,
         });
-        println!("{body}");
+        say!("{body}");
         return Ok(());
     }
-    println!(
+    say!(
         "{} on {name} with gait {},{}: {runs} starts shifted by {ENSEMBLE_SHIFT} m from {} m",
         setup.shape.to_rows(),
         setup.gait.frequency,
@@ -70,9 +70,9 @@ pub fn run(setup: &Setup, runs: usize, json: bool) -> Result<()> {
         setup.base
     );
     for (offset, v) in e.offsets.iter().zip(&e.velocities) {
-        println!("  start offset {offset:.5} m: velocity {v:.4} m/s");
+        say!("  start offset {offset:.5} m: velocity {v:.4} m/s");
     }
     let sd = e.sd.map_or("-".to_string(), |s| format!("{s:.4}"));
-    println!("mean {:.4} m/s, sd {sd} m/s ({wall:.2} s)", e.mean);
+    say!("mean {:.4} m/s, sd {sd} m/s ({wall:.2} s)", e.mean);
     Ok(())
 }
