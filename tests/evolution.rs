@@ -196,6 +196,15 @@ fn every_load_error_says_what_is_wrong() {
         .unwrap_err()
         .to_string();
     assert!(err.contains("not valid JSON (near line 1"), "{err}");
+    assert!(!err.contains("NaN"), "{err}");
+    // Python's json.dumps writes a NaN gene as NaN, which JSON cannot hold: said so.
+    let err = RunFile::from_json("{\"best\": {\"genome\": [0.5, NaN, 1.0]}}")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("NaN or Infinity, which JSON cannot hold"),
+        "{err}"
+    );
     // A genome of another controller: 73 attention genes labelled mlp (41 expected).
     let err = load_error(|v| {
         v["best"]["controller"] = json!("mlp");

@@ -153,6 +153,25 @@ pub struct RunFile {
     pub timing: Option<Timing>,
 }
 
+/// Why JSON stops near (`line`, `column`) when it is a number JSON cannot hold (NaN or
+/// Infinity, which Python's `json.dumps` writes unless `allow_nan=False`), else "".
+fn not_a_number_near(text: &str, line: usize, column: usize) -> &'static str {
+    let Some(row) = text.lines().nth(line.saturating_sub(1)) else {
+        return "";
+    };
+    let near: String = row
+        .chars()
+        .skip(column.saturating_sub(12))
+        .take(24)
+        .collect();
+    if near.contains("NaN") || near.contains("Infinity") {
+        ": a number there is NaN or Infinity, which JSON cannot hold (a gene or a figure that is \
+         not a number; Python's json.dumps writes it unless allow_nan=False)"
+    } else {
+        ""
+    }
+}
+
 impl RunFile {
     /// A run file of the current format and version.
     pub fn new(
@@ -186,9 +205,10 @@ impl RunFile {
                     "the run file is cut off: it ends before its JSON is complete".to_string()
                 }
                 _ => format!(
-                    "the run file is not valid JSON (near line {}, character {})",
+                    "the run file is not valid JSON (near line {}, character {}){}",
                     e.line(),
-                    e.column()
+                    e.column(),
+                    not_a_number_near(text, e.line(), e.column())
                 ),
             })
         })?;
