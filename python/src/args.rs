@@ -56,6 +56,21 @@ pub fn whole_usize(value: &Bound<'_, PyAny>, name: &str) -> PyResult<usize> {
     usize::try_from(n).map_err(|_| input(format!("{name} is too large: {n}")))
 }
 
+/// A number of threads: None (every core) or an integer of at least 1, anything else a
+/// `ValueError` that says so (-1 and 0 alike).
+pub fn optional_threads(value: Option<&Bound<'_, PyAny>>) -> PyResult<Option<usize>> {
+    let Some(v) = value.filter(|v| !v.is_none()) else {
+        return Ok(None);
+    };
+    match v.extract::<usize>() {
+        Ok(n) if n >= 1 => Ok(Some(n)),
+        _ => Err(input(format!(
+            "threads must be an integer of at least 1, or None for every core; got {}",
+            describe(v)
+        ))),
+    }
+}
+
 /// An optional [`whole_usize`] (None when not given).
 pub fn optional_usize(value: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Option<usize>> {
     value

@@ -8,7 +8,7 @@ use rayon::prelude::*;
 use vsr::experiment::evaluate::fitness;
 use vsr::simulation::Shape;
 
-use crate::args::{optional_usize, seconds as check_seconds, terrain, whole};
+use crate::args::{optional_threads, seconds as check_seconds, terrain, whole};
 use crate::errors::{input, to_py};
 
 /// Velocities (m/s) of `genomes[i]` driving `controller` on `shapes[i]`; NaN where the episode
@@ -26,7 +26,7 @@ pub fn evaluate_bodies<'py>(
     threads: Option<Bound<'py, PyAny>>,
     noise_seed: Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-    let threads = optional_usize(threads.as_ref(), "threads")?;
+    let threads = optional_threads(threads.as_ref())?;
     let noise_seed = whole(&noise_seed, "noise_seed")?;
     if shapes.len() != genomes.len() {
         return Err(input(format!(

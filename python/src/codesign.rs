@@ -10,7 +10,7 @@ use vsr::controllers::ControllerKind;
 use vsr::experiment::codesign::source_in_file;
 use vsr::experiment::{BrainMode, Codesign, CodesignConfig, Job, Timing, TrainingTerrain};
 
-use crate::args::{optional_usize, whole};
+use crate::args::{optional_threads, optional_usize, whole};
 use crate::errors::to_py;
 use crate::evaluate::pool;
 
@@ -37,7 +37,7 @@ pub fn codesign(
 ) -> PyResult<String> {
     let (evals, seed) = (whole(&evals, "evals")?, whole(&seed, "seed")?);
     let batch = optional_usize(batch.as_ref(), "batch")?;
-    let threads = optional_usize(threads.as_ref(), "threads")?;
+    let threads = optional_threads(threads.as_ref())?;
     let brain: BrainMode = brain.parse().map_err(to_py)?;
     let controller: ControllerKind = controller.parse().map_err(to_py)?;
     let module = match module {

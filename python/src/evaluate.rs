@@ -9,7 +9,7 @@ use pyo3::prelude::*;
 use rayon::prelude::*;
 use vsr::experiment::evaluate::fitness;
 
-use crate::args::{optional_usize, robot, rows, setup, whole};
+use crate::args::{optional_threads, robot, rows, setup, whole};
 use crate::errors::{input, to_py};
 
 /// Genome length of `controller` on `shape`.
@@ -35,7 +35,7 @@ pub fn evaluate<'py>(
     noise_seed: Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyArray1<f64>>> {
     let (shape, kind, terrain, seconds) = setup(shape, controller, terrain, seconds)?;
-    let threads = optional_usize(threads.as_ref(), "threads")?;
+    let threads = optional_threads(threads.as_ref())?;
     let noise = Some(whole(&noise_seed, "noise_seed")?);
     let (count, length) = (genomes.shape()[0], genomes.shape()[1]);
     let data = rows(&genomes)?;

@@ -78,12 +78,13 @@ def test_bad_arguments(vsr_bin, tmp_path):
     with pytest.raises(ValueError) as e:
         vsr.evaluate(GENOMES, "biped-4x3", "attention", "flat", seconds=-1.0)
     assert str(e.value) == expected == "invalid input: episode seconds must be in (0, 3600], got -1"
-    with pytest.raises(ValueError, match="threads must be at least 1"):
-        vsr.evaluate(GENOMES, "biped-4x3", "attention", "flat", threads=0)
+    for threads in (0, -1, 2.5):
+        with pytest.raises(ValueError, match=r"^invalid input: threads must be an integer of at "
+                                             r"least 1, or None for every core; got "):
+            vsr.evaluate(GENOMES, "biped-4x3", "attention", "flat", threads=threads)
 
 
 @pytest.mark.parametrize("call", [
-    lambda: vsr.evaluate(GENOMES, "biped-4x3", "attention", "flat", threads=-1),
     lambda: vsr.evaluate(GENOMES, "biped-4x3", "attention", "flat", noise_seed=-1),
     lambda: vsr.evaluate_bodies(["biped-4x3"], GENOMES[:1], "attention", "flat", noise_seed=-1),
     lambda: vsr.simulate(GENOMES[0], "biped-4x3", "attention", "flat", noise_seed=-1),
