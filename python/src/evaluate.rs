@@ -19,6 +19,10 @@ pub fn param_count(shape: &str, controller: &str) -> PyResult<usize> {
     Ok(kind.param_count(shape.voxel_count()))
 }
 
+/// Episodes per thread between two looks at Python's signals (Ctrl-C): about a second of
+/// 30-s episodes.
+const CHUNK_PER_THREAD: usize = 32;
+
 /// Velocities (m/s) of each row of `genomes`; NaN where the episode became unstable (the
 /// command line reports an error there instead).
 #[pyfunction]
@@ -46,18 +50,31 @@ pub fn evaluate<'py>(
             .map_err(to_py)?;
     }
     let pool = pool(threads)?;
-    let velocities = py.detach(|| {
-        let run = || {
-            (0..count)
-                .into_par_iter()
-                .map(|i| fitness(&shape, terrain.clone(), kind, row(i), noise, seconds))
-                .collect::<Vec<f64>>()
-        };
-        match &pool {
-            Some(pool) => pool.install(run),
-            None => run(),
-        }
-    });
+    // In chunks, with Python's signals looked at between them: Ctrl-C stops a large batch
+    // within a chunk (KeyboardInterrupt), not at its end. Every episode is independent, so the
+    // chunks change no velocity.
+    let workers = pool
+        .as_ref()
+        .map_or_else(rayon::current_num_threads, |p| p.current_num_threads());
+    let chunk = (CHUNK_PER_THREAD * workers).max(1);
+    let mut velocities = Vec::with_capacity(count);
+    for start in (0..count).step_by(chunk) {
+        let end = (start + chunk).min(count);
+        let part = py.detach(|| {
+            let run = || {
+                (start..end)
+                    .into_par_iter()
+                    .map(|i| fitness(&shape, terrain.clone(), kind, row(i), noise, seconds))
+                    .collect::<Vec<f64>>()
+            };
+            match &pool {
+                Some(pool) => pool.install(run),
+                None => run(),
+            }
+        });
+        velocities.extend(part);
+        py.check_signals()?;
+    }
     Ok(PyArray1::from_vec(py, velocities))
 }
 
