@@ -117,3 +117,19 @@ def test_a_gene_beyond_float32_is_refused_with_its_value():
 def test_the_package_exports_only_its_api():
     assert not {"json", "np", "os"} & set(dir(vsr))
     assert all(hasattr(vsr, name) for name in vsr.__all__)
+
+
+@pytest.mark.parametrize("call, named", [
+    (lambda: vsr.evaluate(GENOMES, "biped-4x3", 3, "flat"), "controller"),
+    (lambda: vsr.evaluate(GENOMES, None, "attention", "flat"), "shape"),
+    (lambda: vsr.validate(GENOMES[0], "biped-4x3", "attention", set=1), "set"),
+    (lambda: vsr.simulate(GENOMES[0], "biped-4x3", "attention", 0), "terrain"),
+])
+def test_a_word_that_is_not_a_string_is_named(call, named):
+    with pytest.raises(TypeError, match=rf"^{named} must be a string such as "):
+        call()
+
+
+def test_a_run_file_given_as_a_genome_says_where_its_genes_are():
+    with pytest.raises(TypeError, match=r"got a dict \(a run file\? its genes are run\['best'\]\['genome'\]\)"):
+        vsr.validate({"best": {}}, "biped-4x3", "attention")

@@ -29,6 +29,7 @@ import numpy as _np
 
 from . import _vsr
 from ._arrays import genes as _genes
+from ._arrays import text as _text
 from ._vsr import Controller, Episode, UnstableError, param_count
 from .runfile import load_run, new_run, save_run
 
@@ -51,6 +52,11 @@ __all__ = [
 __version__ = "0.1.0"
 
 
+def _robot(shape, controller):
+    """`shape` and `controller`, each a string (else a TypeError naming it)."""
+    return _text(shape, "shape", "biped-4x3"), _text(controller, "controller", "attention")
+
+
 def evaluate(genomes, shape, controller, terrain, seconds=30.0, threads=None, noise_seed=0):
     """Velocity (m/s, float64) of each row of `genomes` driving `controller` on `shape` over
     `terrain` for `seconds`, with sensor noise seeded by `noise_seed`: row i gives exactly
@@ -63,7 +69,8 @@ def evaluate(genomes, shape, controller, terrain, seconds=30.0, threads=None, no
     if genomes.ndim == 1:
         genomes = genomes[None, :]
     genomes = _genes(genomes, 2, "genomes")
-    return _vsr.evaluate(genomes, shape, controller, terrain, seconds, threads, noise_seed)
+    return _vsr.evaluate(genomes, *_robot(shape, controller), _text(terrain, "terrain", "flat"),
+                         seconds, threads, noise_seed)
 
 
 def evaluate_bodies(shapes, genomes, controller, terrain, seconds=30.0, threads=None, noise_seed=0):
@@ -74,8 +81,8 @@ def evaluate_bodies(shapes, genomes, controller, terrain, seconds=30.0, threads=
     Runs on `threads` threads (all cores when None) with the GIL released; NaN where an
     episode exploded."""
     genomes = [_genes(g, 1, f"genome {i}") for i, g in enumerate(genomes)]
-    return _vsr.evaluate_bodies(list(shapes), genomes, controller, terrain, seconds, threads,
-                                noise_seed)
+    return _vsr.evaluate_bodies(list(shapes), genomes, _text(controller, "controller", "attention"),
+                                _text(terrain, "terrain", "flat"), seconds, threads, noise_seed)
 
 
 def validate(genome, shape, controller, set="paper", seconds=30.0):
@@ -86,7 +93,7 @@ def validate(genome, shape, controller, set="paper", seconds=30.0):
     one episode), ``velocities`` (float64 array), ``median``, ``mean``. Raises UnstableError
     if an episode explodes."""
     genome = _genes(genome, 1, "the genome")
-    return _vsr.validate(genome, shape, controller, set, seconds)
+    return _vsr.validate(genome, *_robot(shape, controller), _text(set, "set", "unseen"), seconds)
 
 
 def ablate(genome, shape, controller, terrain="hilly-1-10-0", last_second=30, seconds=30.0):
@@ -97,7 +104,8 @@ def ablate(genome, shape, controller, terrain="hilly-1-10-0", last_second=30, se
     unfrozen walk. The sensor noise of every walk is seeded as ``validate`` seeds
     hilly-1-10-K for `terrain` hilly-1-10-K, as it seeds hilly-1-10-0 for any other."""
     genome = _genes(genome, 1, "the genome")
-    return _vsr.ablate(genome, shape, controller, terrain, last_second, seconds)
+    return _vsr.ablate(genome, *_robot(shape, controller), _text(terrain, "terrain", "flat"),
+                       last_second, seconds)
 
 
 def simulate(genome, shape, controller, terrain, seconds=30.0, noise_seed=0, trajectory=False):
@@ -106,7 +114,8 @@ def simulate(genome, shape, controller, terrain, seconds=30.0, noise_seed=0, tra
     ``centre`` (steps, 2) and ``corners`` (steps, voxels, 4, 2): every voxel's outer corners
     SW, SE, NE, NW after every step (m). Raises UnstableError if the simulation explodes."""
     genome = _genes(genome, 1, "the genome")
-    return _vsr.simulate(genome, shape, controller, terrain, seconds, noise_seed, trajectory)
+    return _vsr.simulate(genome, *_robot(shape, controller), _text(terrain, "terrain", "flat"),
+                         seconds, noise_seed, trajectory)
 
 
 def codesign(brain, evals, seed, module=None, controller="attention", start=None, seconds=30.0,

@@ -12,6 +12,10 @@ FLOAT32_MAX = float(np.finfo(np.float32).max)
 def genes(array, ndim, what):
     """`array` as C-contiguous float32 of `ndim` dimensions (2: one genome per row), named
     `what` in messages ("genomes", "the genome", "genome 3")."""
+    if isinstance(array, dict):
+        # a run file's dict (vsr.load_run) given where its genes belong
+        raise TypeError(f"{what} must be an array of genes, got a dict (a run file? its genes are "
+                        "run['best']['genome'])")
     array = np.asarray(array)
     if array.ndim != ndim:
         shape = ("a 2-D array, one genome per row (or a 1-D array, one genome)" if ndim == 2
@@ -34,3 +38,11 @@ def _check_range(array, ndim, what):
         where = f"gene {at[1]} of genome {at[0]}" if ndim == 2 else f"gene {at[0]} of {what}"
         raise ValueError(f"invalid input: {where} is {float(wide[at])!r}, out of float32's range "
                          f"(genes are float32: at most {FLOAT32_MAX:.7g} in magnitude)")
+
+
+def text(value, what, example):
+    """`value` if it is a string, else a TypeError that names the argument `what` (the
+    engine's own conversion names none)."""
+    if not isinstance(value, str):
+        raise TypeError(f"{what} must be a string such as {example!r}, got {value!r}")
+    return value
