@@ -1,14 +1,15 @@
 //! `evaluate_bodies`: many robots, each with its own body and genome (a researcher's own body
 //! search), on one terrain, each exactly the episode `vsr evaluate --genome` runs for that
-//! body and genome; spread over a rayon pool with the GIL released, results in input order.
+//! body and genome; on a pool with the GIL released, Ctrl-C seen and progress logged between
+//! chunks (`batch`), results in input order.
 
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::prelude::*;
-use rayon::prelude::*;
 use vsr::experiment::evaluate::fitness;
 use vsr::simulation::Shape;
 
 use crate::args::{optional_threads, seconds as check_seconds, terrain, whole};
+use crate::batch::Pool;
 use crate::errors::{input, to_py};
 
 /// Velocities (m/s) of `genomes[i]` driving `controller` on `shapes[i]`; NaN where the episode
@@ -52,28 +53,17 @@ pub fn evaluate_bodies<'py>(
             .map_err(to_py)?;
         robots.push((shape, genes));
     }
-    let pool = crate::evaluate::pool(threads)?;
     let ground = std::sync::Arc::new(ground);
-    let velocities = py.detach(|| {
-        let run = || {
-            robots
-                .par_iter()
-                .map(|(shape, genes)| {
-                    fitness(
-                        shape,
-                        ground.clone(),
-                        kind,
-                        genes,
-                        Some(noise_seed),
-                        seconds,
-                    )
-                })
-                .collect::<Vec<f64>>()
-        };
-        match &pool {
-            Some(pool) => pool.install(run),
-            None => run(),
-        }
-    });
+    let velocities = Pool::new(threads)?.episodes(py, robots.len(), |i| {
+        let (shape, genes) = &robots[i];
+        fitness(
+            shape,
+            ground.clone(),
+            kind,
+            genes,
+            Some(noise_seed),
+            seconds,
+        )
+    })?;
     Ok(PyArray1::from_vec(py, velocities))
 }

@@ -1,18 +1,20 @@
 //! `codesign`: a body search around a brain, as `vsr codesign` runs it (the same settings
 //! rules, `CodesignConfig::with_module`, and the same bits for any number of threads), with
-//! the GIL released; gives the co-design run file's text, which `vsr evaluate --genome` and
-//! the page read.
+//! the GIL released but for a moment between iterations: each iteration's line goes to the
+//! `vsr` logger and Ctrl-C is looked at. Gives the co-design run file's text, which `vsr
+//! evaluate --genome` and the page read.
 
 use pyo3::prelude::*;
 use rayon::prelude::*;
+use std::sync::Mutex;
 use std::time::Instant;
 use vsr::controllers::ControllerKind;
 use vsr::experiment::codesign::source_in_file;
 use vsr::experiment::{BrainMode, Codesign, CodesignConfig, Job, Timing, TrainingTerrain};
 
 use crate::args::{optional_threads, optional_usize, whole};
+use crate::batch::{info, Pool};
 use crate::errors::to_py;
-use crate::evaluate::pool;
 
 /// The co-design run file (JSON text) of a body search; `module` is a pretrained module's run
 /// file text (for `frozen` and `finetune`).
@@ -59,25 +61,35 @@ pub fn codesign(
     }
     config.validate().map_err(to_py)?;
     let mut search = Codesign::new(config).map_err(to_py)?;
-    let pool = pool(threads)?;
-    let threads = pool
-        .as_ref()
-        .map_or_else(rayon::current_num_threads, |p| p.current_num_threads());
+    let pool = Pool::new(threads)?;
+    let threads = pool.threads();
     let started = Instant::now();
     let clock = || started.elapsed().as_secs_f64();
+    // Between iterations, with the GIL: the iteration's line to the `vsr` logger and a look at
+    // Ctrl-C; a Python error (KeyboardInterrupt) stops the search and is raised as it is.
+    let stopped: Mutex<Option<PyErr>> = Mutex::new(None);
     let run = py.detach(|| {
-        let evaluate = |jobs: &[Job]| {
-            let all = || jobs.par_iter().map(Job::fitness).collect();
-            match &pool {
-                Some(pool) => pool.install(all),
-                None => all(),
-            }
+        let evaluate = |jobs: &[Job]| pool.install(|| jobs.par_iter().map(Job::fitness).collect());
+        let after = |s: &Codesign| {
+            let looked = Python::attach(|py| {
+                if let Some(record) = s.history().last() {
+                    info(py, &record.summary())?;
+                }
+                py.check_signals()
+            });
+            looked.map_err(|e| {
+                *stopped.lock().unwrap_or_else(|p| p.into_inner()) = Some(e);
+                vsr::Error::Input("stopped from Python".into())
+            })
         };
-        search.run(evaluate, |_| Ok(()), clock)?;
+        search.run(evaluate, after, clock)?;
         search.run_file(Some(Timing {
             threads,
             wall_seconds: clock(),
         }))
     });
+    if let Some(e) = stopped.into_inner().unwrap_or_else(|p| p.into_inner()) {
+        return Err(e);
+    }
     Ok(run.map_err(to_py)?.to_json())
 }

@@ -5,6 +5,7 @@
 //! exception carrying the engine's message (see `errors`).
 
 mod args;
+mod batch;
 mod bodies;
 mod codesign;
 mod controller;

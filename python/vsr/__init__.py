@@ -62,9 +62,10 @@ def evaluate(genomes, shape, controller, terrain, seconds=30.0, threads=None, no
     `terrain` for `seconds`, with sensor noise seeded by `noise_seed`: row i gives exactly
     what ``vsr evaluate`` prints for that genome (``--noise-seed`` defaults to 0 there too).
     A 1-D `genomes` is one genome: an array of one velocity. Runs on `threads` threads (all
-    cores when None) with the GIL released. Genes are float32 (a float64 array is rounded to
-    float32 once, as a run file stores them). An episode whose simulation became non-finite
-    gives NaN."""
+    cores when None) with the GIL released; a large batch runs in chunks (32 episodes per
+    thread), Ctrl-C stops it between two, and each logs its progress ("vsr" logger, INFO).
+    Genes are float32 (a float64 array is rounded to float32 once, as a run file stores
+    them). An episode whose simulation became non-finite gives NaN."""
     genomes = _np.asarray(genomes)
     if genomes.ndim == 1:
         genomes = genomes[None, :]
@@ -78,8 +79,8 @@ def evaluate_bodies(shapes, genomes, controller, terrain, seconds=30.0, threads=
     ``shapes[i]`` (a preset or rows, e.g. ``"110-111"``) over `terrain` for `seconds`, each
     exactly what ``vsr evaluate`` prints for that body and genome. For a body search of your
     own: bodies differ, so genomes differ in length (``param_count(shape, controller)``).
-    Runs on `threads` threads (all cores when None) with the GIL released; NaN where an
-    episode exploded."""
+    Runs on `threads` threads (all cores when None) with the GIL released, in chunks as
+    ``evaluate`` (Ctrl-C, progress on the "vsr" logger); NaN where an episode exploded."""
     genomes = [_genes(g, 1, f"genome {i}") for i, g in enumerate(genomes)]
     return _vsr.evaluate_bodies(list(shapes), genomes, _text(controller, "controller", "attention"),
                                 _text(terrain, "terrain", "flat"), seconds, threads, noise_seed)
@@ -128,6 +129,8 @@ def codesign(brain, evals, seed, module=None, controller="attention", start=None
     inside a `grid` of (width, height) cells, bodies of `voxels` (min, max); `batch` new
     bodies per iteration; `evals` evaluations of `seconds` on `terrain`. Runs on `threads`
     threads (all cores when None) with the GIL released: any count gives the same result.
+    Each iteration logs the command line's progress line ("vsr" logger, INFO: shown after
+    ``logging.basicConfig(level=logging.INFO)``); Ctrl-C stops it between iterations.
     Returns the co-design run file as a dict (``archive``: the gallery, each entry with
     ``shape``, ``genome``, ``fitness``, ``cell``; ``best``; ``history``), genomes as float32
     arrays; with `out`, also writes it there (``vsr evaluate --genome OUT --entry I``

@@ -153,10 +153,7 @@ pub fn run(args: Args) -> Result<()> {
     };
     let after = |s: &Codesign| -> Result<()> {
         if let Some(r) = s.history().last() {
-            progress.generation_line(&format!(
-                "iteration {}: best {:.3} m/s, {} bodies in the archive",
-                r.iteration, r.best, r.filled
-            ));
+            progress.generation_line(&r.summary());
         }
         let due = args.checkpoint_every > 0.0
             && last_checkpoint.elapsed().as_secs_f64() >= args.checkpoint_every;

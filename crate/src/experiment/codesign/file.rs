@@ -45,6 +45,16 @@ pub struct CodesignRecord {
     pub wall_seconds: f64,
 }
 
+impl CodesignRecord {
+    /// The progress line of this iteration, as `vsr codesign` prints it and Python logs it.
+    pub fn summary(&self) -> String {
+        format!(
+            "iteration {}: best {:.3} m/s, {} bodies in the archive",
+            self.iteration, self.best, self.filled
+        )
+    }
+}
+
 /// One archive entry as the file shows it; see the module doc.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Entry {
