@@ -1,7 +1,7 @@
 #![cfg(not(target_arch = "wasm32"))]
 //! `vsr evolve --keep-checkpoint` and `--continue`: a longer run continues a shorter run's kept
 //! checkpoint and gives the run from generation 0 bit for bit; a missing checkpoint is a note
-//! and a checkpoint past the budget is refused.
+//! and a checkpoint past the budget is refused, the file left as it is.
 
 mod checkpoint_util;
 use checkpoint_util::{comparable, evolve_with, scratch};
@@ -72,4 +72,11 @@ fn a_longer_run_continues_a_shorter_runs_kept_checkpoint_bit_for_bit() {
     assert_eq!(out.status.code(), Some(2), "{stderr}");
     assert!(stderr.contains("past this run's budget"), "{stderr}");
     assert!(!std::path::Path::new(&past).exists());
+    // The file given may be another run's: the advice is to leave out --continue, never to
+    // delete it, and it is left as it is.
+    assert!(
+        stderr.contains("leave out --continue") && !stderr.contains("delete"),
+        "{stderr}"
+    );
+    assert!(std::path::Path::new(&format!("{longer}.checkpoint")).exists());
 }
