@@ -5,10 +5,13 @@
  * run, Reveal says to press Evolve first (it never grades against another run); while the run
  * is still going, it says to wait for its end (a generation's answer is not the run's) and
  * reveals nothing; once the run ends the box says so by itself; then Reveal answers from that run.
+ * A guess given before the run is locked once the run shows its first generation (its speeds
+ * would otherwise let the pair change their prediction into a reading).
  */
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
 import { EVOLVE_FIRST, RUN_GOING } from '../../www/classroom/exercises.js';
+import { LOCKED } from '../../www/classroom/guess-lock.js';
 import { CHAPTERS } from '../../www/tour/chapters.js';
 import { byTestId, openPage, start, waitForText } from './harness.mjs';
 
@@ -43,6 +46,10 @@ test('chapter 5: Reveal waits for the run in progress, then answers from it', as
   await waitForText(page, 'run-status', /^finished$/, 90_000);
   // The run has ended and Reveal not been pressed again: the box says so by itself.
   await page.waitForFunction(() => document.querySelector('[data-testid="tour-answer"]')?.textContent === 'Your run has ended: press Reveal.', undefined, { timeout: 5_000 });
+  // The guess, given before the run, was locked once the run showed its generations.
+  assert.equal(await byTestId(page, 'tour-guess-locked').textContent(), LOCKED);
+  assert.deepEqual(await task.locator('input[type=radio]').evaluateAll((els) => els.map((e) => /** @type {HTMLInputElement} */ (e).disabled)), [true, true, true]);
+  assert.equal(await task.locator('input[type=radio]').nth(1).isChecked(), true, 'the guess kept');
   await byTestId(page, 'tour-reveal').click();
   await page.locator('[data-testid="tour-exercise"][data-state="revealed"]').waitFor({ timeout: 60_000 });
   assert.match(String(await byTestId(page, 'tour-answer').textContent()), /From this page's latest run: generation 0's best walked/);

@@ -10,6 +10,7 @@
 import { messageOf } from '../kit.js';
 import { CHAPTERS } from '../tour/chapters.js';
 import { exerciseOf } from './exercises.js';
+import { keepGuess } from './guess-lock.js';
 import { lessonPlanNodes } from './lesson-plan.js';
 import { addressField, chapterLink, onlyHere, pageAddress } from './sheet-address.js';
 import { withTerms } from './simple-words.js';
@@ -36,6 +37,8 @@ export class Classroom {
     this.lab = lab;
     /** The student's answers by chapter, kept while the page is open. @type {Map<number, string>} */
     this.answers = new Map();
+    /** The chapters whose guess is locked (guess-lock.js). @type {Set<number>} */
+    this.locked = new Set();
   }
 
   /**
@@ -147,6 +150,7 @@ export class Classroom {
       reveal.disabled = false;
     });
     ready();
+    if (ex.lock) keepGuess({ box, index, locked: this.locked, given, showing: () => ex.lock?.(this.lab) ?? null });
     return box;
   }
 

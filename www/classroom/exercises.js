@@ -27,6 +27,7 @@ export const SATURATED = 0.9;
  * @property {string} [unit]         the number's unit
  * @property {string} [try]          what to do after answering, to see it happen
  * @property {(lab: import('./lab.js').Lab) => string} [wait]  why Reveal must wait (its answer is still being made), or ''
+ * @property {(lab: import('./lab.js').Lab) => object | null} [lock]  what shows the answer now (a run), or null: a guess given before a new one comes is locked (guess-lock.js)
  * @property {(lab: import('./lab.js').Lab) => Promise<Key>} key
  */
 
@@ -167,6 +168,8 @@ export const TASKS = [
     try: 'Press Evolve, and when it ends press “Race first, middle and last” under “Side by side”.',
     // Revealed during the run, its answer would be a generation's, not the run's end; before it, another run's.
     wait: evolutionWait,
+    // The run prints each generation's best as it goes: a guess given before it is kept as it was.
+    lock: (lab) => { const run = lab.latestRun(); return ownRun(run) ? run.bests : null; },
     async key(lab) {
       // The page's own run counts only if it is this chapter's (a later chapter's run is another question). A
       // student's Reveal waits for one (evolutionWait); the teacher's keys, without one, answer from the study's run.
