@@ -2,7 +2,7 @@
 //! several, in any order, resumed from its run file), a frozen module's block kept exactly in
 //! every archive entry, the run file read back as a body with its brain, and bad input refused
 //! in words. `vsr codesign` itself: 1 and 2 threads give the same file, `vsr evaluate` and
-//! `vsr validate` read its best and its entries.
+//! `vsr validate` read its best and its entries, `vsr ablate` ablates an entry.
 
 mod cli_util;
 
@@ -204,6 +204,25 @@ fn vsr_codesign_is_the_same_on_one_and_two_threads_and_its_best_replays() {
         "1",
     ]);
     assert!(text(&o).contains("entry 99 does not exist"), "{}", text(&o));
+    // `vsr ablate --entry`: the frozen-attention ablation of that gallery body, as the library
+    // ablates that entry.
+    let o = vsr(&[
+        "ablate",
+        "--genome",
+        a.to_str().unwrap(),
+        "--entry",
+        "1",
+        "--seconds",
+        "1",
+        "--last-second",
+        "1",
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", text(&o));
+    let printed: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let entry = best_in_file(&std::fs::read_to_string(&a).unwrap(), Some(1)).unwrap();
+    let expected = vsr::experiment::ablate(&entry, "hilly-1-10-0", 1, 1.0).unwrap();
+    assert_eq!(printed, serde_json::to_value(&expected).unwrap());
     let o = vsr(&[
         "codesign",
         "--brain",

@@ -1,19 +1,20 @@
-//! `vsr ablate --genome RUN.json`: the frozen-attention ablation, one velocity per freeze
+//! `vsr ablate --genome RUN.json [--entry I]`: the frozen-attention ablation, one velocity per freeze
 //! time (see `vsr::experiment::ablation`). The text output says what "frozen at s" means and
 //! puts the unfrozen velocity (the same robot, its attention live) above the frozen ones.
 
 use std::path::PathBuf;
 
-use vsr::experiment::config::{check_seconds, MAX_SECONDS};
+use vsr::experiment::config::MAX_SECONDS;
 use vsr::experiment::{ablate, unfrozen_velocity, AblationPoint, ABLATION_TERRAIN};
 use vsr::{Error, Result};
 
 /// Arguments of `vsr ablate`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// The run file whose best individual (attention or slow-attention) is ablated.
-    #[arg(long)]
-    genome: PathBuf,
+    /// The individual ablated (attention or slow-attention): a run's best, or a co-design
+    /// run file's best or archive entry.
+    #[command(flatten)]
+    individual: crate::runfile::Individual,
     /// The terrain of the recording and of the frozen episodes.
     #[arg(long, default_value = ABLATION_TERRAIN)]
     terrain: String,
@@ -34,7 +35,6 @@ pub struct Args {
 
 /// Runs the command.
 pub fn run(args: Args) -> Result<()> {
-    args.seconds.map(check_seconds).transpose()?;
     if let Some(last) = args.last_second.filter(|&l| f64::from(l) > MAX_SECONDS) {
         return Err(Error::Input(format!(
             "--last-second must be at most {MAX_SECONDS}, got {last}"
@@ -43,8 +43,7 @@ pub fn run(args: Args) -> Result<()> {
     if let Some(out) = &args.out {
         crate::atomic::check_writable(out)?;
     }
-    let run = crate::runfile::load(&args.genome)?;
-    let seconds = args.seconds.unwrap_or(run.config.seconds);
+    let (best, seconds) = args.individual.load(args.seconds)?;
     // Whole seconds of the episode, at most MAX_SECONDS: a u32 without loss.
     let last_second = args.last_second.unwrap_or(seconds.floor() as u32);
     if f64::from(last_second) > seconds {
@@ -53,7 +52,6 @@ pub fn run(args: Args) -> Result<()> {
              the walk that records the matrices goes on beyond it"
         );
     }
-    let best = run.best;
     let points = ablate(&best, &args.terrain, last_second, seconds)?;
     if let Some(out) = &args.out {
         crate::atomic::write_json(out, &points, "ablation file")?;

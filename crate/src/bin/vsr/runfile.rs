@@ -10,13 +10,6 @@ use vsr::{Error, Result};
 
 pub use crate::atomic::check_writable;
 
-/// Reads and validates a run file, naming the file in every error.
-pub fn load(path: &Path) -> Result<RunFile> {
-    let text = fs::read_to_string(path)
-        .map_err(|e| Error::Io(format!("cannot read run file {}: {e}", path.display())))?;
-    RunFile::from_json(&text).map_err(|e| in_file(path, e))
-}
-
 /// The module in a run file or a co-design run file (its best body with its brain), to
 /// fine-tune or to search bodies around, naming the file in every error.
 pub fn load_source(path: &Path) -> Result<vsr::experiment::SourceRun> {
@@ -25,7 +18,8 @@ pub fn load_source(path: &Path) -> Result<vsr::experiment::SourceRun> {
     vsr::experiment::codesign::source_in_file(&text).map_err(|e| in_file(path, e))
 }
 
-/// The individual a command walks (`vsr evaluate`, `vsr validate`): `--genome` and `--entry`.
+/// The individual a command walks (`vsr evaluate`, `vsr validate`, `vsr ablate`): `--genome`
+/// and `--entry`.
 #[derive(clap::Args, Debug)]
 pub struct Individual {
     /// The run file whose best individual is walked (or a co-design run file: its best body
