@@ -1,8 +1,8 @@
 //! Box plots (`Plot::Boxes`): one box per label, its runs as dots. Frame and grid are
 //! svg.rs's; colours `palette`'s.
 
+use super::chart_frame::{chart, plot_error, range, Area, FINE_GRID, GRID};
 use super::palette::looks;
-use super::svg::{chart, plot_error, range, Area, FINE_GRID, GRID};
 use plotters::prelude::*;
 use vsr::study::report::figures::{BoxData, Figure};
 use vsr::Result;

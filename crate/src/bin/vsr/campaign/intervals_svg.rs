@@ -2,8 +2,8 @@
 //! dashed vertical marks (a non-inferiority test's margin and no difference). Frame, grid and
 //! marks are svg.rs's.
 
+use super::chart_frame::{chart, marked, plot_error, range, Area, FINE_GRID, GRID};
 use super::palette::looks;
-use super::svg::{chart, marked, plot_error, range, Area, FINE_GRID, GRID};
 use plotters::prelude::*;
 use vsr::study::report::figures::{Figure, IntervalRow, Mark, Role};
 use vsr::Result;

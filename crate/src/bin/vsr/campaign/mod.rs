@@ -6,6 +6,7 @@
 
 mod bodies_svg;
 mod boxes_svg;
+mod chart_frame;
 pub mod command;
 mod export;
 mod export_bodies;
