@@ -2,9 +2,9 @@
 /**
  * The controls of “1 · Draw” around the editor's grid: the presets, undo and redo (also
  * Ctrl+Z, Ctrl+Shift+Z and Ctrl+Y), clear, erase mode for touch screens, and the rows typed
- * as text (a typed field: rows refused stay typed, marked and said under the field, until the
- * field holds rows again). Each change of the drawing is handed to the page (`changed`), none
- * while a run uses the robot.
+ * as text (`rowsField`, a typed field: rows refused stay typed, marked and said under the
+ * field, until the field holds rows again). Each change of the drawing is handed to the page
+ * (`changed`), none while a run uses the robot.
  */
 import { Drawing } from './drawing.js';
 import { TypedField } from './typed-field.js';
@@ -14,10 +14,9 @@ import { TypedField } from './typed-field.js';
  * @param {import('./core.js').Defaults} defaults
  * @param {import('./drawing.js').Drawing} drawing
  * @param {import('./editor.js').Editor} editor
- * @param {import('./message.js').MessageBox} messages where rows refused are said
  * @param {{changed: () => void, running: () => boolean}} hooks
  */
-export function wireDrawControls(doc, defaults, drawing, editor, messages, hooks) {
+export function wireDrawControls(doc, defaults, drawing, editor, hooks) {
   const el = (/** @type {string} */ id) => /** @type {any} */ (doc.getElementById(id));
   const presetSelect = /** @type {HTMLSelectElement} */ (el('preset'));
   const redraw = () => { editor.draw(); hooks.changed(); };
@@ -43,9 +42,20 @@ export function wireDrawControls(doc, defaults, drawing, editor, messages, hooks
     if (key === 'z' && !e.shiftKey) { e.preventDefault(); undo(); }
     if ((key === 'z' && e.shiftKey) || key === 'y') { e.preventDefault(); redo(); }
   });
+}
+
+/**
+ * The rows typed as text: a typed field whose rule is the drawing's, tried on a blank drawing of
+ * the same grid; accepted rows become the drawing (`changed` is then told). The page shows the
+ * drawing's rows through the field's `value` (robot.js), which settles it.
+ * @param {Document} doc @param {import('./drawing.js').Drawing} drawing
+ * @param {import('./editor.js').Editor} editor @param {import('./message.js').MessageBox} messages
+ * @param {() => void} changed
+ */
+export function rowsField(doc, drawing, editor, messages, changed) {
   const rows = (/** @type {string} */ text) => text.trim() || '0'; // nothing typed: an empty drawing
-  new TypedField(el('rows'), messages, { // the drawing's rule, tried on a blank drawing of the same grid
+  return new TypedField(/** @type {HTMLInputElement} */ (doc.getElementById('rows')), messages, {
     problem: (text) => new Drawing(drawing.width, drawing.height).setRows(rows(text)),
-    use: (text) => { drawing.setRows(rows(text)); redraw(); },
+    use: (text) => { drawing.setRows(rows(text)); editor.draw(); changed(); },
   });
 }

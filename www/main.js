@@ -8,7 +8,7 @@
  * are searched around a brain by the body-search panel (codesign/).
  */
 import { ready } from './core.js';
-import { wireDrawControls } from './draw-controls.js';
+import { rowsField, wireDrawControls } from './draw-controls.js';
 import { Drawing } from './drawing.js';
 import { Editor } from './editor.js';
 import { Keeper } from './keeper.js';
@@ -102,7 +102,8 @@ const runs = new RunPanel(document, defaults, {
 const estimate = new RunEstimate(/** @type {HTMLElement} */ (document.getElementById('run-estimate')), runs.form, () => runs.pace, () => drawing.rows(), defaults.quick,
   () => runs.compare.checked);
 runs.compare.addEventListener('change', () => estimate.refresh());
-robot = new Robot(document, { defaults, drawing, editor, viewer, messages, speedNote, runs,
+const rows = rowsField(document, drawing, editor, messages, () => robot.bodyChanged());
+robot = new Robot(document, { defaults, drawing, editor, viewer, messages, speedNote, runs, rows,
   keep: () => { keeper.schedule(); challenge?.watch(drawing.rows()); } });
 follower = new RunFollower(robot, modules, () => runs.mode === 'finetune');
 const bodySearch = new CodesignPanel(document, {
@@ -146,7 +147,7 @@ function terrainChanged() {
 }
 
 function wire() {
-  wireDrawControls(document, defaults, drawing, editor, messages, {
+  wireDrawControls(document, defaults, drawing, editor, {
     changed: () => robot.bodyChanged(),
     running: () => robot.running,
   });

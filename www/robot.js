@@ -28,6 +28,7 @@ const UNCHECKED = { ok: false, message: '', voxels: 0, pieces: [], params: [] };
  * @property {import('./editor.js').Editor} editor
  * @property {import('./viewer.js').Viewer} viewer
  * @property {import('./message.js').MessageBox} messages
+ * @property {import('./typed-field.js').TypedField} rows  the rows typed as text (draw-controls.js)
  * @property {import('./speed-note.js').SpeedNote} speedNote
  * @property {import('./run-panel.js').RunPanel} runs
  * @property {() => void} keep  the state changed: keep it (and its link) soon
@@ -38,7 +39,6 @@ export class Robot {
   constructor(doc, parts) {
     this.parts = parts;
     this.el = (/** @type {string} */ id) => /** @type {any} */ (doc.getElementById(id));
-    this.rowsInput = /** @type {HTMLInputElement} */ (this.el('rows'));
     this.controllerSelect = /** @type {HTMLSelectElement} */ (this.el('controller'));
     this.presetSelect = /** @type {HTMLSelectElement} */ (this.el('preset'));
     /** @type {Brain | null} */
@@ -80,7 +80,7 @@ export class Robot {
    */
   updateCheck() {
     const rows = this.parts.drawing.rows();
-    this.rowsInput.value = rows;
+    this.parts.rows.value = rows; // the field shows what the page uses: its message about typed rows goes
     this.presetSelect.value = this.parts.defaults.presets.find((p) => p.rows === rows)?.rows ?? '';
     const ticket = ++this.checks;
     const checked = checkShape(rows);
@@ -123,7 +123,7 @@ export class Robot {
     this.el('redo').disabled = running || !drawing.canRedo;
     this.el('clear').disabled = running;
     this.presetSelect.disabled = running;
-    this.rowsInput.disabled = running;
+    this.parts.rows.input.disabled = running;
     this.el('module-load').disabled = running || !this.check.ok;
     this.el('module-open').disabled = running;
     runs.update();

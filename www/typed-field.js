@@ -7,12 +7,10 @@
  * under the field, so that it is read where the person looks and the page does not move away
  * from the field (on a phone too). That message stays until it is closed, replaced by the next
  * one about the field, or the field holds a valid value again: typed and accepted, or written
- * there by the page (a stroke on the grid, a preset, Undo, a tour's chapter, a link), since the
- * page writes into the field only what it uses.
+ * there by the page through this field's `value` (a stroke on the grid, a preset, Undo, a
+ * tour's chapter, a link), since the page writes into the field only what it uses. The page
+ * writes through `value` only, never into the input itself.
  */
-
-/** The inputs' own `value`, which the page's writes into the field go through. */
-const VALUE = /** @type {PropertyDescriptor} */ (Object.getOwnPropertyDescriptor(HTMLInputElement.prototype, 'value'));
 
 /** Why a text is refused: words, or words and the exact rule (folded under them). @typedef {string | {words: string, detail: string}} Refusal */
 
@@ -29,7 +27,7 @@ export class TypedField {
     this.rule = rule;
     this.source = input.id;
     /** The text the page uses. */
-    this.accepted = VALUE.get?.call(input) ?? '';
+    this.accepted = input.value;
     /** Counts what happened to the field: a check's answer counts only if nothing happened since it was asked. */
     this.ticket = 0;
     /** @type {((text: string) => void)[]} called with each accepted text typed, after `use` */
@@ -44,12 +42,6 @@ export class TypedField {
     (input.closest('label') ?? input).after(box);
     input.setAttribute('aria-describedby', box.id);
     messages.place(this.source, box);
-    const field = this;
-    Object.defineProperty(input, 'value', {
-      configurable: true,
-      get() { return VALUE.get?.call(input); },
-      set(text) { VALUE.set?.call(input, text); field.settle(String(text)); },
-    });
     input.addEventListener('change', () => this.changed());
   }
 
@@ -57,14 +49,14 @@ export class TypedField {
   get value() { return this.accepted; }
 
   /** Writes `text` into the field as the page's own: accepted. @param {string} text */
-  set value(text) { this.input.value = text; }
+  set value(text) { this.input.value = text; this.settle(text); }
 
   /** Also calls `listener` with each accepted text typed. @param {(text: string) => void} listener */
   listen(listener) { this.listeners.push(listener); }
 
   /** The person changed the text: it is checked, then used, or refused and kept to be corrected. */
   async changed() {
-    const text = String(VALUE.get?.call(this.input));
+    const text = this.input.value;
     const ticket = ++this.ticket;
     const refusal = await this.rule.problem(text);
     if (ticket !== this.ticket) return; // written or typed again since
