@@ -233,7 +233,7 @@ wireWords(document);
 challenge = new Challenge(document, lab, {
   defaults, rows: () => drawing.rows(), race, message: showMessage, pin: (text) => messages.show(text, 'pinned'),
   setView: (terrain) => { viewer.terrain.value = terrain; viewer.reload(); terrainChanged(); },
-  setRun: (values) => { runs.setValues(values); keeper.schedule(); },
+  setRun: (values) => { runs.setValues(values); runs.inputs.seconds.dispatchEvent(new Event('change')); }, // walked and kept as if typed
   setBody: (rows) => robot.setBody(rows),
 });
 

@@ -53,12 +53,16 @@ test('a class challenge: ranked by the link the teacher made, duplicates, the sa
   links.push(await shareLink(fresh.page, /shape=/));
   await fresh.page.context().close();
   assert.match(links[0], /view=hilly-1-10-0.*budget=2000/, 'a share link holds its view and its run budget');
+  assert.match(links[2], /gait=/, 'a share link holds its phase gait');
   const damaged = links[0].replace(/genome=[^&]{12}/, 'genome=!!!!');
   const otherTerrain = links[0].replace(/view=[^&]*/, 'view=flat'); // the same robot, only the terrain changed
   const overBudget = links[1].replace(/budget=\d+/, 'budget=5000');
 
-  // No challenge link yet: the form's rules, and the table says so.
+  // No challenge link yet: the form's rules, and the table says so. Nothing pasted: said what to do.
   await byTestId(page, 'challenge').locator('summary').click();
+  await page.locator('#challenge-rank').click();
+  await waitForText(page, 'challenge-status', /^Paste your students' links in the box first/);
+  assert.equal(await page.locator('#challenge-link-box').isVisible(), false, 'no link field before a link');
   await byTestId(page, 'challenge-compare').fill('Eve not-a-link');
   let { caption } = await rank(page);
   assert.match(caption, /^No challenge link made yet, so ranked by the rules in the form above: any body; /);
@@ -66,37 +70,52 @@ test('a class challenge: ranked by the link the teacher made, duplicates, the sa
   // Defect 1: the link's body is the one drawn when it was made, whatever is drawn when the class is ranked.
   const drawn = await page.locator('#rows').inputValue();
   assert.equal(drawn, '1111-1111-1001');
+  // A terrain the core refuses: said in words, and no link made (a class would work on a broken challenge).
+  await page.locator('#challenge-terrain').fill('hilly');
+  await page.locator('#challenge-make').click();
+  await waitForText(page, 'challenge-status', /^No challenge link made: “hilly” is not a terrain\. Try flat/);
+  assert.equal(await page.locator('#challenge-link-box').isVisible(), false);
+  await page.locator('#challenge-terrain').fill('hilly-1-10-0');
   await page.locator('#challenge-fixed').check();
   await page.locator('#challenge-make').click();
+  await waitForText(page, 'challenge-status', /^Challenge link made/);
   const challengeUrl = await page.locator('#challenge-link').inputValue();
   assert.match(challengeUrl, /\?challenge=1&terrain=hilly-1-10-0&seconds=30&body=1111-1111-1001&budget=2000&seed=1$/);
   await page.locator('#rows').fill('11111-11111-10101');
   await page.locator('#rows').press('Enter');
   await waitForText(page, 'shape-status', /^13 voxels/);
   const pasted = [`Ana ${links[0]}`, `Ben: ${links[1]}`, links[2], `Cleo ${damaged}`, 'Dan https://example.com/#shape=1', 'Eve not-a-link',
-    `Fay ${links[0]}`, `Gus ${otherTerrain}`, `Hal ${overBudget}`].join('\n');
+    `Fay ${links[0]}`, `Gus ${otherTerrain}`, `Hal ${overBudget}`, `Ivy ${challengeUrl}`, `Jo ${links[2].replace(/gait=[^&]*/, 'gait=2%2C-1')}`].join('\n');
   await byTestId(page, 'challenge-compare').fill(pasted);
   let rows;
   ({ rows, caption } = await rank(page));
   console.log(`# challenge table: ${JSON.stringify(rows)}`);
   assert.match(caption, /^Ranked by the rules of the challenge link you made: the body 1111-1111-1001; speeds measured again by this page over 30 s on hilly-1-10-0; at most 2,000 evaluations\. The form above \(or the robot drawn now\) differs from your link/);
-  assert.match(String(await page.locator('#challenge-rules').textContent()), /^Challenge: the body 1111-1111-1001;/, 'the rules line keeps the link\'s body');
-  assert.equal(rows.filter((r) => /not the challenge's body/.test(r[5])).length, 0, 'no entry rejected for the new drawing');
+  assert.match(String(await page.locator('#challenge-rules').textContent()), /^What your students will see: Challenge: the body 1111-1111-1001,/, 'the rules line keeps the link\'s body');
+  assert.deepEqual(rows.filter((r) => /not the challenge's body/.test(r[5])).map((r) => r[1]), ['Dan'], 'no entry rejected for the new drawing (Dan\'s is one voxel)');
 
   // The places: the fastest first, the same robot under two names placed and said; the rest after them.
-  assert.equal(rows.length, 9, 'every line has a row');
-  assert.deepEqual(rows.slice(0, 4).map((r) => [r[0], r[1]]), [['1', 'Ana'], ['2', 'Gus'], ['3', 'Ben'], ['4', 'entry 3']]);
-  assert.ok(rows.slice(4).every((r) => r[0] === '–'), 'the others have no place');
+  assert.equal(rows.length, 11, 'every line has a row');
+  const placed = rows.filter((r) => r[0] !== '–');
+  assert.deepEqual(placed.map((r) => r[0]), ['1', '2', '3', '4', '5']);
+  assert.deepEqual(placed.map((r) => r[1]).sort(), ['Ana', 'Ben', 'Gus', 'Jo', 'line 3 (no name)']);
+  assert.ok(rows.slice(5).every((r) => r[0] === '–'), 'the others have no place');
   const row = (/** @type {string} */ name) => rows.find((r) => r[1] === name) ?? [];
   assert.equal(row('Ana')[3], 'attention');
   assert.match(row('Ana')[5], /^the pretrained module biped-4x3-attention, unchanged: not evolved here; the same robot as Gus \(same body and brain\) under another name$/);
   assert.match(row('Gus')[5], /the same robot as Ana \(same body and brain\) under another name; raced once, as Ana$/);
   assert.equal(row('Gus')[4], row('Ana')[4], 'the same robot, the same speed');
-  assert.equal(row('entry 3')[3], 'no brain (phase gait)');
-  const speeds = rows.slice(0, 4).map((r) => Number.parseFloat(r[4].replace('−', '-')));
+  assert.equal(row('line 3 (no name)')[3], 'no brain (phase gait)');
+  assert.equal(row('line 3 (no name)')[5], 'no brain: the clock of the phase gait drives it, nothing evolved');
+  // Jo's own clock (f 2, φ −1), walked as Jo's page walked it: another robot than line 3's, another speed.
+  assert.equal(row('Jo')[5], 'no brain: the clock of the phase gait drives it, nothing evolved');
+  assert.notEqual(row('Jo')[4], row('line 3 (no name)')[4]);
+  const speeds = placed.map((r) => Number.parseFloat(r[4].replace('−', '-')));
   assert.ok(speeds.every((s, i) => i === 0 || speeds[i - 1] >= s), `ranked by speed: ${speeds}`);
-  assert.match(row('Cleo')[5], /damaged/);
-  assert.match(row('Dan')[5], /another page/);
+  assert.match(row('Cleo')[5], /^its brain did not come through whole \(.*\): the link seems cut short; ask Cleo to copy it again with “Share link”$/);
+  assert.equal(row('Cleo')[3], '–', 'no brain shown for a brain that did not come through');
+  assert.match(row('Dan')[5], /made at another address \(example\.com\/\), read all the same/);
+  assert.match(row('Ivy')[5], /^this is the challenge link, not a robot: ask Ivy to press “Share link”/);
   assert.match(row('Eve')[5], /not a share link/, 'a line without a link keeps its name');
   assert.equal(row('Fay')[5], 'the same link as Ana: counted once, in Ana\'s row', 'a link pasted again is counted once');
   assert.match(row('Hal')[5], /^evolved with 5,000 evaluations \(as its link says\), more than the challenge's 2,000; .*the same robot as Ben \(same body and brain\) under another name$/);
@@ -122,10 +141,10 @@ test('a class challenge: ranked by the link the teacher made, duplicates, the sa
   await waitForText(page, 'status', /voxels/);
   assert.equal(await page.locator('.challenge-teacher').getAttribute('open'), '', 'the teacher\'s part opens on what was kept');
   assert.equal(await page.locator('#challenge-link').inputValue(), challengeUrl);
-  assert.match(String(await page.locator('#challenge-rules').textContent()), /^Challenge: the body 1111-1111-1001;/);
+  assert.match(String(await page.locator('#challenge-rules').textContent()), /^What your students will see: Challenge: the body 1111-1111-1001,/);
   assert.equal(await page.locator('#challenge-fixed').isChecked(), true);
   assert.equal(await byTestId(page, 'challenge-compare').inputValue(), pasted);
-  assert.match(String(await byTestId(page, 'challenge-status').textContent()), /^Back from your last visit: the challenge link you made and the class's 9 links\. Press “Rank the class”/);
+  assert.match(String(await byTestId(page, 'challenge-status').textContent()), /^Back from your last visit: the challenge link you made and the class's 11 links\. Press “Rank the class”/);
   await byTestId(page, 'challenge-compare').fill(`Ana ${links[0]}`);
   ({ rows, caption } = await rank(page));
   assert.match(caption, /^Ranked by the rules of the challenge link you made: the body 1111-1111-1001;/, 'ranked by the kept rules');
@@ -134,10 +153,11 @@ test('a class challenge: ranked by the link the teacher made, duplicates, the sa
   await page.context().close();
 
   const student = await openPage(env.browser, `${challengeUrl.replace(/^https?:\/\/[^/]+\//, env.url)}`, { width: 1400, height: 900 });
-  await waitForText(student.page, 'challenge-rules', /the body 1111-1111-1001; speed measured over 30 s on hilly-1-10-0; evolve with 2,000 evaluations, seed 1/);
-  await waitForText(student.page, 'message', /^Challenge: .*speed measured over 30 s on hilly-1-10-0; .*further down/); // at the top, where a student looks first
+  await waitForText(student.page, 'challenge-rules', /^Challenge: the body 1111-1111-1001, as fast as it can over 30 s on hilly-1-10-0\. 1 · Your body is drawn for you\. 2 · Evolve its brain: the run is set for you \(2,000 evaluations, seed 1, 30-s walks\)\. 3 · Press “Share link”/);
+  await waitForText(student.page, 'message', /^Challenge: .*over 30 s on hilly-1-10-0\. .*further down/); // at the top, where a student looks first
   assert.equal(await student.page.locator('#terrain').inputValue(), 'hilly-1-10-0');
   assert.equal(await student.page.locator('#run-budget').inputValue(), '2000');
+  assert.equal(await student.page.locator('#run-seconds').inputValue(), '30', 'trained over the walks the teacher measures');
   assert.equal(await byTestId(student.page, 'challenge-status').isVisible(), false, 'a student\'s page keeps no teacher\'s challenge');
   assert.deepEqual(student.problems, []);
   await student.page.context().close();
@@ -151,9 +171,11 @@ test('a challenge of at most 12 voxels: a student\'s drawing of 13 is told at on
   const grid = await small.page.locator('#editor').boundingBox();
   await waitForText(small.page, 'rule-warning', /breaks the challenge's rules: 13 voxels, more than the challenge's 12\. Your teacher's ranking will not count it/, 5_000);
   assert.deepEqual(await small.page.locator('#editor').boundingBox(), grid, 'the warning does not move the grid under the student\'s finger');
+  assert.equal(await small.page.locator('#editor.breaks-rules').count(), 1, 'the grid itself is outlined (the line under it may be off a phone\'s screen)');
   await small.page.locator('#rows').fill('11111-11111-11000');
   await small.page.locator('#rows').press('Enter');
   await byTestId(small.page, 'rule-warning').waitFor({ state: 'hidden', timeout: 5_000 }); // 12 voxels: within the rules again
+  assert.equal(await small.page.locator('#editor.breaks-rules').count(), 0);
   assert.deepEqual(small.problems, []);
   await small.page.context().close();
 });

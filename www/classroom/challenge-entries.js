@@ -10,8 +10,10 @@
  *   cannot be read or measured: no place, listed after the places with why;
  * - the same link pasted again: measured and placed once, under its first name; each later
  *   copy listed after the places as "the same link as <name>";
- * - for the teacher to judge, placed but said: a pretrained module unchanged (not evolved for
- *   the challenge), and the same robot (body and genome) under two names (it races once).
+ * - for the teacher to judge, placed but said: no brain (the phase gait's clock, the student's
+ *   own, drives it), a pretrained module unchanged or a brain built on one (evolved elsewhere
+ *   first), a link made at another address of the page, and the same robot (body and genome,
+ *   or body and clock) under two names (it races once).
  */
 import { messageOf } from '../kit.js';
 import { decodeState } from '../share.js';
@@ -34,15 +36,18 @@ import { bodyProblem, budgetProblem } from './challenge-rules.js';
  * @param {string} text @returns {{name: string, link: string}[]}
  */
 export function linesOf(text) {
-  return text.split('\n').map((l) => l.trim()).filter((l) => l !== '').map((line, i) => {
+  return text.split('\n').map((l, i) => ({ line: l.trim(), number: i + 1 })).filter(({ line }) => line !== '').map(({ line, number }) => {
     // The link starts at its address or its #; a line with neither is read as a name and a
     // (broken) link, its last word, so that the table still says whose line it was.
     const found = line.search(/https?:\/\/|#/);
     const at = found >= 0 ? found : line.search(/\S+$/);
     const name = (at > 0 ? line.slice(0, at) : '').replace(/[\s:,-]+$/, '').trim();
-    return { name: name || `entry ${i + 1}`, link: line.slice(Math.max(at, 0)) };
+    return { name: name || `line ${number} (no name)`, link: line.slice(Math.max(at, 0)) };
   });
 }
+
+/** The same page whatever its address's last step: `/` and `/index.html`. @param {string} path */
+const pageOf = (path) => path.replace(/index\.html$/, '');
 
 /** @param {string} name @returns {Entry} an entry with nothing read yet */
 function blank(name) {
@@ -92,7 +97,7 @@ function markSameRobots(ordered) {
       e.notes.push(`the same robot as ${others} (same body and brain) under another name`);
       if (e !== first) e.same = first.name;
     }
-    for (const e of group.slice(1)) if (!e.problem) e.notes.push(`raced once, as ${first.name}`);
+    for (const e of group.slice(1)) if (!e.problem && e.genome) e.notes.push(`raced once, as ${first.name}`);
   }
 }
 
@@ -104,41 +109,58 @@ function markSameRobots(ordered) {
 async function readEntry(name, link, r, { lab, defaults }) {
   const entry = blank(name);
   const hash = link.indexOf('#');
-  if (hash < 0) return { ...entry, problem: 'not a share link of this page (it has no robot after #)' };
-  try {
-    const url = new URL(link, location.href);
-    if (url.origin !== location.origin || url.pathname !== location.pathname) {
-      return { ...entry, problem: `a link to another page (${url.host}${url.pathname}), not this playground's` };
-    }
-  } catch { return { ...entry, problem: 'not a link' }; }
+  if (hash < 0) {
+    return { ...entry, problem: /[?&]challenge=/.test(link)
+      ? `this is the challenge link, not a robot: ask ${name} to press “Share link” and send that link`
+      : 'not a share link of this page (it has no robot after #)' };
+  }
+  /** @type {URL} */
+  let url;
+  try { url = new URL(link, location.href); } catch { return { ...entry, problem: 'not a link' }; }
   const read = await decodeState(link.slice(hash), defaults.controllers, defaults.grid);
   if ('error' in read) return { ...entry, problem: `damaged link: ${read.error}` };
   const { state } = read;
   const brain = state.brain;
-  // A brain that is a pretrained module, unchanged, was not evolved for the challenge: said, for the teacher to judge.
+  // A brain that is a pretrained module, unchanged, was not evolved for the challenge; one built on a module was
+  // evolved elsewhere first: both said, for the teacher to judge.
   const pretrained = brain ? await lab.pretrainedWith(brain.genome).catch(() => '') : '';
   const genome = brain ? { controller: brain.controller, genome: brain.genome } : null;
-  const named = { ...entry, rows: state.rows, brain: brain ? brain.controller : 'no brain (phase gait)', genome,
-    notes: pretrained ? [`the pretrained module ${pretrained.replace(/\.json$/, '')}, unchanged: not evolved here`] : [] };
-  if (read.damaged) return { ...named, problem: `its brain is damaged: ${read.damaged}` };
+  const gait = state.gait ? gaitOf(state.gait) : defaults.gait; // the student's own clock, as their page walked it
+  const notes = [
+    url.origin + pageOf(url.pathname) === location.origin + pageOf(location.pathname) ? '' : `made at another address (${url.host}${url.pathname}), read all the same`,
+    brain || read.damaged ? '' : 'no brain: the clock of the phase gait drives it, nothing evolved',
+    pretrained ? `the pretrained module ${pretrained.replace(/\.json$/, '')}, unchanged: not evolved here`
+      : brain?.module ? `built on the pretrained module ${brain.module.replace(/^pretrained\/|\.json$/g, '')}, evolved elsewhere${brain.oneShot ? ', transplanted and not fine-tuned' : ', then fine-tuned'}` : '',
+  ].filter(Boolean);
+  const named = { ...entry, rows: state.rows, brain: brain ? brain.controller : 'no brain (phase gait)', genome, notes };
+  if (read.damaged) {
+    return { ...named, brain: '', genome: null, problem: `its brain did not come through whole (${read.damaged}): the link seems cut short; ask ${name} to copy it again with “Share link”` };
+  }
   const broken = bodyProblem(state.rows, r);
   if (broken) return { ...named, problem: broken };
-  const measured = { ...named, robot: robotKey(state.rows, genome), problem: budgetProblem(state.run.budget, r) };
+  const measured = { ...named, robot: robotKey(state.rows, genome, gait), problem: budgetProblem(state.run.budget, r) };
   try {
     const walk = await lab.walk({ rows: state.rows, terrain: r.terrain, seconds: r.seconds,
-      ...(genome ? { brain: genome } : { gait: defaults.gait }) });
+      ...(genome ? { brain: genome } : { gait }) });
     return { ...measured, speed: walk.speed };
   } catch (error) {
     return { ...measured, problem: `could not be measured: ${messageOf(error)}` };
   }
 }
 
+/** A share link's phase gait, "F,PHI" (checked by the link reader). @param {string} text */
+function gaitOf(text) {
+  const [frequency, phase] = text.split(',').map(Number);
+  return { frequency, phase };
+}
+
 /**
- * A robot as text: its body and its brain's every bit (the phase gait is the page's, the same for all).
+ * A robot as text: its body and its brain's every bit, or the clock of its phase gait.
  * @param {string} rows @param {{controller: string, genome: Float32Array} | null} genome
+ * @param {{frequency: number, phase: number}} gait
  */
-function robotKey(rows, genome) {
-  if (!genome) return `${rows} gait`;
+function robotKey(rows, genome, gait) {
+  if (!genome) return `${rows} gait ${gait.frequency} ${gait.phase}`;
   const bytes = new Uint8Array(genome.genome.buffer, genome.genome.byteOffset, genome.genome.byteLength);
   return `${rows} ${genome.controller} ${bytes.join('.')}`;
 }

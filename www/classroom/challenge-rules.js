@@ -85,11 +85,12 @@ export function budgetWords(r) {
   return `${Number.isFinite(Number(r.budget)) ? count(Number(r.budget)) : r.budget} evaluations`;
 }
 
-/** The rules in words, for the student. @param {Rules} r */
+/** The rules in words, for the student: what to do, in three steps. @param {Rules} r */
 export function rulesWords(r) {
-  return `Challenge: ${bodyWords(r)}; speed measured over ${r.seconds} s on ${r.terrain}; evolve with ${budgetWords(r)}, seed ${r.seed} (the number that fixes evolution's random draws). `
-    + `Under your robot the speed is over the page's episode; your teacher measures it again over ${r.seconds} s on ${r.terrain}, so it may differ. `
-    + 'When your robot walks, press “Share link” and send the link to your teacher.';
+  return `Challenge: ${bodyWords(r)}, as fast as it can over ${r.seconds} s on ${r.terrain}. `
+    + `1 · ${r.body ? 'Your body is drawn for you' : 'Draw your robot'}. `
+    + `2 · Evolve its brain: the run is set for you (${budgetWords(r)}, seed ${r.seed}, ${r.seconds}-s walks). `
+    + '3 · Press “Share link” and send the link to your teacher, who walks every robot again the same way.';
 }
 
 /** The rules in a line, for the teacher's table. @param {Rules} r */

@@ -33,6 +33,9 @@ export function showRanking(table, ranking, caption) {
     const measured = Number.isFinite(e.speed);
     const note = [e.problem, ...e.notes].filter((n) => n !== '').join('; ');
     for (const c of [place, e.name, e.rows || '–', e.brain || '–', measured ? `${decimal(e.speed)} m/s` : '–', note]) row.insertCell().textContent = c;
+    // A body may break between its rows, after each "-", and nowhere else.
+    row.cells[2].replaceChildren(...e.rows.split('-').flatMap((part, i) => (i ? ['-', doc.createElement('wbr'), part] : [part])));
+    if (!e.rows) row.cells[2].textContent = '–';
     if (measured) row.cells[4].dataset.value = String(e.speed);
   }
 }

@@ -9,7 +9,9 @@
  * made and the links pasted are kept for the teacher's next visit (challenge-store.js). The best
  * four with a brain race side by side.
  */
+import { checkTerrain } from '../core.js';
 import { messageOf } from '../kit.js';
+import { terrainRefused } from '../terrain-words.js';
 import { linesOf, rankEntries } from './challenge-entries.js';
 import { bodyProblem, challengeLink, rankingWords, rulesFrom, rulesOf, rulesWords, sameRules } from './challenge-rules.js';
 import { keepChallenge, loadChallenge } from './challenge-store.js';
@@ -35,6 +37,7 @@ export class Challenge {
     this.form = { terrain: el('challenge-terrain'), seconds: el('challenge-seconds'), voxels: el('challenge-voxels'),
       fixed: el('challenge-fixed'), budget: el('challenge-budget'), seed: el('challenge-seed') };
     this.linkOut = /** @type {HTMLInputElement} */ (el('challenge-link'));
+    this.linkBox = /** @type {HTMLElement} */ (el('challenge-link-box'));
     this.box = /** @type {HTMLTextAreaElement} */ (el('challenge-compare'));
     this.status = /** @type {HTMLElement} */ (el('challenge-status'));
     this.table = /** @type {HTMLTableElement} */ (el('challenge-table'));
@@ -42,6 +45,8 @@ export class Challenge {
     this.raceButton = /** @type {HTMLButtonElement} */ (el('challenge-race'));
     /** The line under the grid that says which rule a student's drawing breaks, while it does. */
     this.warning = /** @type {HTMLElement} */ (el('rule-warning'));
+    /** The grid, outlined while the drawing breaks the rules (the line under it may be off a phone's screen). */
+    this.grid = /** @type {HTMLElement} */ (el('editor'));
     /** @type {Entry[]} the placed entries of the last ranking, fastest first */
     this.ranked = [];
     /** @type {Rules | null} the rules of the last ranking */
@@ -53,7 +58,7 @@ export class Challenge {
     this.made = kept.rules;
     /** Whether the last keep failed (said once, not at every key). */
     this.unkept = false;
-    el('challenge-make').addEventListener('click', () => this.make());
+    el('challenge-make').addEventListener('click', () => { this.make().catch((error) => this.say(`The challenge link could not be made: ${messageOf(error)}`)); });
     this.rankButton.addEventListener('click', () => this.rank());
     this.raceButton.addEventListener('click', () => this.raceBest());
     this.box.addEventListener('input', () => this.keep());
@@ -123,7 +128,7 @@ export class Challenge {
     // The rules at the top as well, where a student opening the link looks first (the panel is far down).
     this.page.pin(`${rulesWords(r)} (The rules are also under “Class challenge”, further down.)`);
     this.page.setView(r.terrain);
-    this.page.setRun({ budget: r.budget, seed: r.seed });
+    this.page.setRun({ budget: r.budget, seed: r.seed, seconds: String(r.seconds) }); // trained over the walks it is measured on
     if (r.body) await this.page.setBody(r.body).catch((error) => this.page.message(`the challenge's body: ${messageOf(error)}`));
   }
 
@@ -137,29 +142,46 @@ export class Challenge {
     // Under the grid, not above it: a line that appeared above would move the grid under the student's finger.
     this.warning.textContent = problem ? `Your robot breaks the challenge's rules: ${problem}. Your teacher's ranking will not count it: change the drawing (Undo goes back a step).` : '';
     this.warning.hidden = !problem;
+    this.grid.classList.toggle('breaks-rules', problem !== '');
   }
 
-  /** Makes the challenge link of the form's rules: from now on, the rules the class is ranked by. */
-  make() {
+  /**
+   * Makes the challenge link of the form's rules (a terrain the core refuses is said, and no link
+   * made): from now on, the rules the class is ranked by. The link is copied where the browser lets it.
+   */
+  async make() {
+    const terrain = this.form.terrain.value.trim();
+    const rule = await checkTerrain(terrain);
+    if (rule) {
+      this.say(`No challenge link made: ${terrainRefused(terrain, rule).words}`);
+      return;
+    }
     this.opened = null; // a new challenge made here, not the one the page was opened from
     this.warning.hidden = true;
+    this.grid.classList.remove('breaks-rules');
     this.made = this.formRules();
     this.showMade(this.made);
-    this.say('');
     this.keep();
+    const copied = await navigator.clipboard?.writeText(this.linkOut.value).then(() => true, () => false) ?? false;
+    this.say(copied ? 'Challenge link made and copied: paste it where your class will find it (a chat, a message, the board).'
+      : 'Challenge link made: copy it from the field below and send it to your class.');
   }
 
   /** Shows the made challenge's link and rules. @param {Rules} r */
   showMade(r) {
     this.linkOut.value = challengeLink(r);
-    this.linkOut.hidden = false;
-    this.rulesLine.textContent = rulesWords(r);
+    this.linkBox.hidden = false;
+    this.rulesLine.textContent = `What your students will see: ${rulesWords(r)}`;
     this.rulesLine.hidden = false;
   }
 
   /** Reads, measures and ranks every line of the compare box. */
   async rank() {
     const { rules, source } = this.rankingRules();
+    if (linesOf(this.box.value).length === 0) {
+      this.say('Paste your students\' links in the box first, one a line (a name before each if you like).');
+      return;
+    }
     // A form (or drawing) changed since the link was made does not count, and the caption says so.
     const changed = this.made && !this.opened && !sameRules(this.formRules(), this.made)
       ? ' The form above (or the robot drawn now) differs from your link: it counts only once you make a new link.' : '';
@@ -172,19 +194,21 @@ export class Challenge {
       this.ranked = ranking.placed;
       this.rankedBy = rules;
       showRanking(this.table, ranking, `${source}: ${rankingWords(rules)}.${changed}`);
-      this.say('');
+      // The race takes robots with a brain: when no placed robot has one, the button says why it is off.
+      this.say(ranking.placed.length && !this.racers(ranking.placed).length
+        ? 'No placed robot has a brain (the phase gait\'s clock drives them all), so there is nothing for “Race the best four” to race.' : '');
     } catch (error) {
       this.say(`The class could not be ranked: ${messageOf(error)}`);
     } finally {
       this.rankButton.disabled = false;
-      this.raceButton.disabled = this.racers().length === 0;
+      this.raceButton.disabled = this.racers(this.ranked).length === 0;
       this.section.dataset.state = 'ranked';
     }
   }
 
-  /** The best four placed entries with a brain, each robot once. */
-  racers() {
-    return this.ranked.filter((e) => e.genome && !e.same).slice(0, 4);
+  /** The best four of `placed` with a brain, each robot once. @param {Entry[]} placed */
+  racers(placed) {
+    return placed.filter((e) => e.genome && !e.same).slice(0, 4);
   }
 
   /** Races the best four entries that have a brain, on the challenge's terrain. */
@@ -194,7 +218,7 @@ export class Challenge {
     const race = this.page.race;
     race.clear();
     race.seconds.value = String(r.seconds);
-    for (const e of this.racers()) {
+    for (const e of this.racers(this.ranked)) {
       const g = /** @type {{controller: string, genome: Float32Array}} */ (e.genome);
       race.add({ label: e.name, shape: e.rows, controller: g.controller, genome: g.genome });
     }
