@@ -106,6 +106,7 @@ const rows = rowsField(document, drawing, editor, messages, () => robot.bodyChan
 robot = new Robot(document, { defaults, drawing, editor, viewer, messages, speedNote, runs, rows,
   keep: () => { keeper.schedule(); challenge?.watch(drawing.rows()); } });
 follower = new RunFollower(robot, modules, () => runs.mode === 'finetune');
+messages.place('codesign', el('codesign-message')); // the body search's problems, under its buttons
 const bodySearch = new CodesignPanel(document, {
   body: () => ({ rows: drawing.rows(), ok: robot.check.ok, message: robot.check.message }),
   module: () => modules.selected(),
@@ -133,11 +134,17 @@ function searchBrain() {
   const kind = el('codesign-brain').value;
   if (kind === 'scratch') return `a new ${controllerSelect.value} brain, evolved from scratch with the body`;
   const option = modules.select.selectedOptions[0];
-  return option?.value ? `the module ${option.text.replace(/ · .*$/, '')}, ${kind === 'frozen' ? 'its attention kept' : 'every gene evolving from it'}` : 'no module chosen yet (under “3 · Give it a brain”)';
+  if (!option?.value) return 'no module chosen yet (under “3 · Give it a brain”)';
+  const name = `the module “${option.text.replace(/ · .*$/, '')}”`;
+  // Said before the search refuses it (the core's rule: only an attention module drives other bodies).
+  const other = modules.info && modules.info.controller !== 'attention' ? modules.info.controller : '';
+  return other ? `${name} is ${other}: only an attention module can drive other bodies; choose one, or “a new brain, from scratch”`
+    : `${name}, ${kind === 'frozen' ? 'its attention kept' : 'every gene evolving from it'}`;
 }
-// The body search's estimate: its start body (the drawing stands for the module's own, drawn when it was opened).
+// The body search's estimate: its start body (the module's own once it is described; else the drawing stands for it).
+const startRows = () => ({ box: BOX, module: modules.info?.shape ?? drawing.rows() })[el('codesign-from').value] ?? drawing.rows();
 new SearchEstimate(el('codesign-estimate'), () => ({ evaluations: Number(el('codesign-budget').value), seconds: Number(el('codesign-seconds').value),
-  rows: el('codesign-from').value === 'box' ? BOX : drawing.rows(), workers: Number(runs.inputs.workers.value) || 1, running: bodySearch.running,
+  rows: startRows(), workers: Number(runs.inputs.workers.value) || 1, running: bodySearch.running,
   brain: searchBrain() }), () => estimate.currentPace());
 
 /** The viewer's terrain changed: the speed is measured on it, and it is kept. */

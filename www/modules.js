@@ -48,6 +48,8 @@ export class ModuleList {
     this.held = new Map();
     /** Descriptions asked: only the latest one's answer is shown. */
     this.described = 0;
+    /** What the selected module is, once described (null: none chosen). @type {{shape: string, controller: string} | null} */
+    this.info = null;
     /** Each module's full name, by key (the list shows a short one: see {@link shortLabel}). @type {Map<string, string>} */
     this.labels = new Map();
     /** Whether the list keeps its speeds to itself (while the tour's question waits for an answer: {@link quiet}). */
@@ -215,6 +217,7 @@ export class ModuleList {
       const module = await this.selected();
       const info = module ? await describeRun(module.text) : null;
       if (ticket !== this.described) return; // another module was chosen meanwhile
+      this.info = info;
       if (!info) { this.details.textContent = ''; return; }
       const body = (/** @type {string} */ rows) => bodyWords(rows, this.presets);
       const rows = info.foundBySearch ? `drives ${body(info.shape)} found by a body search`

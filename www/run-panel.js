@@ -287,7 +287,7 @@ export class RunPanel {
     b.evolve.disabled = off;
     b.finetune.disabled = off || this.hooks.source() === null;
     b.finetune.title = b.finetune.disabled && !running && this.hooks.source() === null
-      ? 'Fine-tune trains a module transplanted onto your robot: choose one under “Transplant a module” and press “Load onto my robot” (the brain driving your robot now was not loaded from there)'
+      ? 'Fine-tune trains a module transplanted onto your robot: choose one under “Transplant a module” and press “Load onto my robot” (the brain driving your robot now was not loaded from there; Evolve starts a new brain, from scratch)'
       : 'Train the module on your robot: evolve the rest of its brain for this body while its attention stays as it is';
     this.form.lock(running);
     b.pause.disabled = !running;

@@ -41,7 +41,7 @@ import { size } from './format.js';
 export const RUN_KEYS = Object.freeze(['population', 'seconds', 'budget', 'seed', 'terrain']);
 
 /** The parts of a brain in a link: read only with its genome. */
-const BRAIN_PARTS = Object.freeze(['brain', 'genome', 'label', 'module', 'brain-seconds', 'brain-speed', 'brain-terrain', 'one-shot']);
+const BRAIN_PARTS = Object.freeze(['brain', 'genome', 'label', 'module', 'brain-seconds', 'brain-speed', 'brain-terrain', 'brain-walks', 'one-shot']);
 /** Every part a link may hold (encodeState writes them, decodeState reads them): any other is left out, and said. */
 const PARTS = Object.freeze(['shape', 'controller', 'view', 'gait', ...RUN_KEYS.map(runPart), ...BRAIN_PARTS]);
 
@@ -66,6 +66,7 @@ export function encodeState(state) {
     if (trained && Number.isFinite(trained.speed)) {
       p.set('brain-speed', String(trained.speed));
       p.set('brain-terrain', trained.terrain);
+      if (trained.walks) p.set('brain-walks', String(trained.walks)); // the mean of this many (a body search's)
     }
     if (state.brain.oneShot) p.set('one-shot', '1');
   }
@@ -223,11 +224,15 @@ async function trainingNotes(p) {
   const oneShot = p.get('one-shot');
   if (oneShot !== null && oneShot !== '1') return { error: `one-shot flag "${oneShot.slice(0, 20)}" is not 1` };
   if ((speed === null) !== (terrain === null)) return { error: 'training speed and training terrain do not come together (one is missing)' };
-  if (speed === null || terrain === null) return { trained: null, oneShot: oneShot === '1' };
+  const walks = p.get('brain-walks');
+  if (speed === null || terrain === null) {
+    return walks === null ? { trained: null, oneShot: oneShot === '1' } : { error: 'a number of training walks without a training speed' };
+  }
   if (speed.trim() === '' || !Number.isFinite(Number(speed))) return { error: `training speed "${speed.slice(0, 20)}" is not a number` };
+  if (walks !== null && !/^[1-9]\d{0,8}$/.test(walks)) return { error: `training walks "${walks.slice(0, 20)}" is not a whole number of at least 1` };
   const problem = await checkTrainingTerrain(terrain);
   if (problem) return { error: `training terrain: ${problem}` };
-  return { trained: { speed: Number(speed), terrain }, oneShot: oneShot === '1' };
+  return { trained: { speed: Number(speed), terrain, ...(walks === null ? {} : { walks: Number(walks) }) }, oneShot: oneShot === '1' };
 }
 
 /**

@@ -96,6 +96,6 @@ async function training(trained, seconds) {
   const fresh = (await checkTerrain(trained.terrain)) !== ''; // a family (hilly-1-10), not one terrain
   return fresh
     ? { where: `a ${trained.terrain} terrain drawn fresh for that evaluation, ${seconds}-s episodes`,
-      why: 'Training draws a fresh terrain for every evaluation, each generation, and keeps the fastest; the viewer keeps one terrain, so the two differ.' }
+      why: `Training draws a fresh terrain for every evaluation${trained.walks ? ' (the body search walks each body it keeps again, every round)' : ', each generation,'} and keeps the fastest; the viewer keeps one terrain, so the two differ.` }
     : { where: `${trained.terrain}, ${seconds}-s episodes`, why: 'Training used other sensor noise (or another terrain), so the two can differ.' };
 }

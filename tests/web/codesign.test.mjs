@@ -176,6 +176,18 @@ test('the panel searches live, the gallery fills, a click loads a body that walk
     const p = new URLSearchParams(link.hash.slice(1));
     return p.get('shape') === rows && p.get('brain') === 'attention' && (p.get('genome') ?? '').length > 0;
   }, entry.shape);
+  // Opened again, it says of its training speed what the page said (the mean of how many walks, not "its latest").
+  const inTraining = async (/** @type {import('playwright-core').Page} */ p) => {
+    await p.waitForFunction(() => /In training: /.test(document.getElementById('speed-note')?.textContent ?? ''));
+    return String(await p.locator('#speed-note').textContent()).match(/In training: [^(]*\([^,]*/)?.[0];
+  };
+  const said = await inTraining(page);
+  assert.match(String(said), /the mean of its \d+ evaluations|one evaluation only/);
+  const reopened = await openPage(env.browser, await page.locator('#share-link').inputValue());
+  await waitForText(reopened.page, 'driver', /a body found by the body search/);
+  assert.equal(await inTraining(reopened.page), said);
+  assert.deepEqual(reopened.problems, []);
+  await reopened.page.context().close();
   assert.deepEqual(problems, []);
   await page.context().close();
 });
@@ -185,17 +197,20 @@ test('a wrong module and a drawing that is no body are refused in words that sta
   await chooseModule(page, 'pretrained/biped-4x3-mlp-comm.json');
   await byTestId(page, 'codesign-brain').selectOption('frozen');
   await byTestId(page, 'codesign').click();
-  await waitForText(page, 'message', /The body search did not start: this module is mlp-comm, not attention: only an attention module can be reassembled into other bodies/);
-  await waitForText(page, 'codesign-status', /^The search did not start: the message at the top of the page says why\.$/);
+  // Said under the panel's buttons, in view, not at the top of the page (which would leave the form behind).
+  await waitForText(page, 'codesign-message', /The body search did not start: this module is mlp-comm, not attention: only an attention module can be reassembled into other bodies/);
+  assert.ok(await byTestId(page, 'codesign-message').evaluate((e) => { const r = e.getBoundingClientRect(); return r.top >= 0 && r.bottom <= innerHeight; }), 'the reason in view');
+  assert.equal(await page.locator('#message').textContent(), '', 'nothing at the top of the page');
+  await waitForText(page, 'codesign-status', /^The search did not start: the message under the buttons says why\.$/);
   assert.equal(await page.evaluate(() => document.body.dataset.codesign), 'not');
   assert.equal(await byTestId(page, 'codesign-body').count(), 0);
   await page.waitForTimeout(2000);
-  assert.match(String(await page.locator('#message').textContent()), /only an attention module/, 'the words stay');
+  assert.match(String(await byTestId(page, 'codesign-message').textContent()), /only an attention module/, 'the words stay');
 
   await page.locator('#clear').click();
   await page.locator('#codesign-from').selectOption('drawing');
   await byTestId(page, 'codesign').click();
-  await waitForText(page, 'message', /Your drawing is not a body the search can start from.*Draw one piece of touching voxels/);
+  await waitForText(page, 'codesign-message', /Your drawing is not a body the search can start from.*Draw one piece of touching voxels/);
   await screenshot(page, 'codesign-refused.png');
 
   // From scratch, any module's body is a start: a new attention brain on the MLP-Comm module's biped.
@@ -206,6 +221,7 @@ test('a wrong module and a drawing that is no body are refused in words that sta
   await byTestId(page, 'codesign').click();
   await page.waitForFunction(() => document.body.dataset.codesign === 'finished', undefined, { timeout: 60_000 });
   await waitForText(page, 'codesign-summary', /^Brain: attention from scratch, bodies from the module's own body · /);
+  assert.equal(await byTestId(page, 'codesign-message').isVisible(), false, 'a search that starts takes the refusal away');
   assert.ok(await byTestId(page, 'codesign-body').count() >= 1);
   assert.deepEqual(problems, []);
   await page.context().close();

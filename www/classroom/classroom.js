@@ -154,6 +154,9 @@ export class Classroom {
     return box;
   }
 
+  /** Whether chapter `index`'s question leaves the page's speeds shown (it is not about them). @param {number} index */
+  speedsShown(index) { return exerciseOf(index)?.speedsShown === true; }
+
   /** The teacher's tools: a row of buttons for the tour's box. */
   tools() {
     const doc = this.doc;

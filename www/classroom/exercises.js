@@ -27,6 +27,7 @@ export const SATURATED = 0.9;
  * @property {string} [unit]         the number's unit
  * @property {string} [try]          what to do after answering, to see it happen
  * @property {(lab: import('./lab.js').Lab) => string} [wait]  why Reveal must wait (its answer is still being made), or ''
+ * @property {boolean} [speedsShown]  its question is not about speeds: the page's speeds are not held back until Reveal
  * @property {(lab: import('./lab.js').Lab) => object | null} [lock]  what shows the answer now (a run), or null: a guess given before a new one comes is locked (guess-lock.js)
  * @property {(lab: import('./lab.js').Lab) => Promise<Key>} key
  */
@@ -251,6 +252,7 @@ export const TASKS = [
     ask: 'The body search keeps the brain\'s attention module exactly as it is while it changes the body. Of the brain\'s numbers (its genes), how many stay exactly the same on every body it tries?',
     unit: 'genes',
     try: 'Press “Search bodies”, click a body in the gallery to watch it walk, and read its gene count under “3 · Give it a brain”.',
+    speedsShown: true, // a question about genes; the gallery shows every body's speed anyway
     async key(lab) {
       const box = '111-111-111'; // the search's start, a 3 × 3 box
       const biped = /** @type {string} */ (setup(GAIT).rows);

@@ -111,7 +111,7 @@ export class Gallery {
     const across = document.createElement('p');
     across.className = 'axis-title';
     across.textContent = 'across: body size (number of voxels) · up: number of feet (separate pieces of the bottom row) · '
-      + 'under each body: its speed in training (m/s), the mean of ×this many walks (more walks, a surer speed)';
+      + 'under each body: its speed in training (m/s), then × how many walks that speed is the mean of (more walks, a surer speed)';
     // On a narrow screen the larger bodies are off to the right: said above the grid.
     const hint = document.createElement('p');
     hint.className = 'axis-title scroll-hint';
@@ -146,7 +146,7 @@ export class Gallery {
       button.classList.toggle('chosen', this.chosen === key);
       const speed = entry.fitness === null ? 'fell over (no speed)' : `${decimal(entry.fitness)} m/s`;
       button.title = `${entry.voxels} voxels, ${entry.feet} ${entry.feet === 1 ? 'foot' : 'feet'}: ${speed}`
-        + ` (measured ${entry.measurements} time${entry.measurements === 1 ? '' : 's'}; found in round ${entry.found})`
+        + ` (measured ${entry.measurements} time${entry.measurements === 1 ? '' : 's'}; found in round ${entry.found + 1})`
         + `${isNew ? ', new in the latest round' : ''}. Click to watch it walk.`;
       button.setAttribute('aria-label', button.title);
       const [canvas, label] = /** @type {[HTMLCanvasElement, HTMLElement]} */ ([button.children[0], button.children[1]]);

@@ -17,8 +17,9 @@ import { BOX_WORDS, BRAIN_WORDS, planSearch, QUICK } from './plan.js';
 import { count, decimal } from '../format.js';
 import { bestEntry, exportName, summaryWords } from './summary.js';
 
-/** The status of a search that could not start (the message at the top says why). */
-const NOT_STARTED = 'The search did not start: the message at the top of the page says why.';
+/** Where the panel's problems are said (under its buttons, main.js places them), and a refused search's status. */
+const SOURCE = 'codesign';
+const NOT_STARTED = 'The search did not start: the message under the buttons says why.';
 
 /**
  * @typedef {object} CodesignHooks
@@ -29,7 +30,7 @@ const NOT_STARTED = 'The search did not start: the message at the top of the pag
  * @property {(brain: import('../brain.js').Brain) => Promise<void>} open  loads a body with its brain into the editor
  * @property {(racers: import('../race-lane.js').Racer[]) => void} race  races these robots (the race emptied first)
  * @property {() => void} share             shares the robot on the page as a link
- * @property {(text: string) => void} message  an error, in words that stay until closed
+ * @property {(text: string, source?: string) => void} message  an error, in words that stay until closed ('' with a source: its error goes)
  */
 
 /** @typedef {{controller: string, shape: string, genome: number[], fitness: number}} Entry */
@@ -47,6 +48,7 @@ export class CodesignPanel {
     for (const option of this.brain.options) option.textContent = BRAIN_WORDS[/** @type {keyof BRAIN_WORDS} */ (option.value)].menu;
     this.from = /** @type {HTMLSelectElement} */ (el('codesign-from'));
     this.from.querySelector('option[value="box"]')?.replaceChildren(BOX_WORDS);
+    for (const n of doc.querySelectorAll('.codesign-batch')) n.textContent = String(QUICK.batch); // the legend's round, as planned
     this.budget = /** @type {HTMLInputElement} */ (el('codesign-budget'));
     this.seconds = /** @type {HTMLInputElement} */ (el('codesign-seconds'));
     this.buttons = {
@@ -88,10 +90,7 @@ export class CodesignPanel {
     this.update();
   }
 
-  setQuick() {
-    this.budget.value = String(QUICK.budget);
-    this.seconds.value = String(QUICK.seconds);
-  }
+  setQuick() { [this.budget.value, this.seconds.value] = [String(QUICK.budget), String(QUICK.seconds)]; }
 
   wire() {
     const b = this.buttons;
@@ -99,9 +98,7 @@ export class CodesignPanel {
     b.stop.addEventListener('click', () => this.coordinator?.postMessage({ type: ToCodesign.STOP }));
     b.race.addEventListener('click', () => this.raceFirstLast());
     b.share.addEventListener('click', () => { if (this.chosen) this.load(this.chosen, true); });
-    b.export.addEventListener('click', () => {
-      if (this.runFile) download(this.runFile, exportName(JSON.parse(this.runFile).config));
-    });
+    b.export.addEventListener('click', () => { if (this.runFile) download(this.runFile, exportName(JSON.parse(this.runFile).config)); });
     this.brain.addEventListener('change', () => this.update());
   }
 
@@ -117,7 +114,7 @@ export class CodesignPanel {
     this.update();
   }
 
-  /** Starts a search with the panel's settings; a problem is said in words and starts nothing. */
+  /** Starts a search with the panel's settings; a problem is said in words (under the buttons) and starts nothing. */
   async start() {
     if (this.running || this.starting) return;
     this.starting = true;
@@ -132,6 +129,7 @@ export class CodesignPanel {
       this.starting = false;
     }
     if ('error' in plan) { this.refuse(plan.error); return; }
+    this.hooks.message('', SOURCE); // a refusal said before
     this.coordinator?.terminate(); // the previous search's archive
     this.asked.clear();
     this.runFile = null;
@@ -158,7 +156,7 @@ export class CodesignPanel {
 
   /** A search that cannot start: says why. @param {string} why */
   refuse(why) {
-    this.hooks.message(`The body search did not start: ${why}`);
+    this.hooks.message(`The body search did not start: ${why}`, SOURCE);
     this.setStatus(NOT_STARTED, 'not');
     this.update();
   }
@@ -227,7 +225,7 @@ export class CodesignPanel {
     which.terminate();
     this.coordinator = null;
     this.running = false;
-    this.hooks.message(error);
+    this.hooks.message(error, SOURCE);
     this.setStatus(status);
     this.update();
   }

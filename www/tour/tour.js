@@ -156,7 +156,7 @@ export class Tour {
     });
     if (task) for (const el of held) el.hidden = true;
     // So does the rest of the page: the robot's and the module list's speeds, the study's figures and findings.
-    this.holdAnswers(Boolean(task), false);
+    this.holdAnswers(Boolean(task) && !this.classroom?.speedsShown(i), false);
     this.raceHeld = Boolean(task && chapter.setup.race);
     if (task) body.append(task);
     body.append(paragraph(doc, chapter.task, 'Do', 'tour-task'), ...held);
