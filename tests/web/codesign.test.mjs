@@ -222,6 +222,11 @@ test('a wrong module and a drawing that is no body are refused in words that sta
   await page.waitForFunction(() => document.body.dataset.codesign === 'finished', undefined, { timeout: 60_000 });
   await waitForText(page, 'codesign-summary', /^Brain: attention from scratch, bodies from the module's own body · /);
   assert.equal(await byTestId(page, 'codesign-message').isVisible(), false, 'a search that starts takes the refusal away');
+  // Refused now, the gallery below is said to be the last search's (not the refused one's).
+  await page.locator('#codesign-budget').fill('0');
+  await byTestId(page, 'codesign').click();
+  await waitForText(page, 'codesign-message', /evaluations must be a whole number of at least 1, not "0"/);
+  await waitForText(page, 'codesign-summary', /^Your last search: Brain: attention from scratch/);
   assert.ok(await byTestId(page, 'codesign-body').count() >= 1);
   assert.deepEqual(problems, []);
   await page.context().close();

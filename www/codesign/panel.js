@@ -157,6 +157,7 @@ export class CodesignPanel {
   /** A search that cannot start: says why. @param {string} why */
   refuse(why) {
     this.hooks.message(`The body search did not start: ${why}`, SOURCE);
+    if (this.summary.textContent) this.summary.textContent = this.summary.textContent.replace(/^(Your last search: )?/, 'Your last search: '); // whose gallery
     this.setStatus(NOT_STARTED, 'not');
     this.update();
   }
