@@ -107,6 +107,7 @@ robot = new Robot(document, { defaults, drawing, editor, viewer, messages, speed
   keep: () => { keeper.schedule(); challenge?.watch(drawing.rows()); } });
 follower = new RunFollower(robot, modules, () => runs.mode === 'finetune');
 messages.place('codesign', el('codesign-message')); // the body search's problems, under its buttons
+messages.place('watch', el('watch-message')); // what a click in the gallery did, above the robot it brought
 const bodySearch = new CodesignPanel(document, {
   body: () => ({ rows: drawing.rows(), ok: robot.check.ok, message: robot.check.message }),
   module: () => modules.selected(),
@@ -115,11 +116,13 @@ const bodySearch = new CodesignPanel(document, {
   open: async (brain) => { // the body found walks above: brought into view to be watched
     const drawn = drawing.rows();
     await robot.openBrain(() => brain);
-    if (drawn !== brain.rows && drawing.rows() === brain.rows) {
+    const replaced = drawn !== brain.rows && drawing.rows() === brain.rows;
+    if (replaced) {
       messages.show('The body you clicked, with its brain, now stands in “1 · Draw” in place of your drawing: Undo there brings '
-        + 'the shape of your drawing back, driven by this brain.', 'note');
+        + 'the shape of your drawing back, driven by this brain.', 'note', 'watch');
     }
-    el('scene').scrollIntoView({ block: 'nearest', behavior: 'instant' });
+    // The robot in view, with the note just above it (on a phone the top of the page is far away).
+    el(replaced ? 'watch-message' : 'scene').scrollIntoView({ block: replaced ? 'start' : 'nearest', behavior: 'instant' });
   },
   race: (racers) => {
     race.clear();

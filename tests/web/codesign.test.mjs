@@ -159,6 +159,9 @@ test('the panel searches live, the gallery fills, a click loads a body that walk
   await page.waitForFunction((rows) => document.body.dataset.codesignLoaded === rows, entry.shape);
   await waitForText(page, 'shape-status', new RegExp(`· ${entry.shape}$`));
   await waitForText(page, 'driver', /a body found by the body search/);
+  // The drawing was replaced: said just above the robot, in view (not at the top of the page).
+  await waitForText(page, 'watch-message', /^The body you clicked, with its brain, now stands in “1 · Draw” in place of your drawing/);
+  assert.ok(await byTestId(page, 'watch-message').evaluate((e) => e.getBoundingClientRect().top >= 0 && e.getBoundingClientRect().bottom <= innerHeight), 'the note in view');
   const x0 = await figure(page, 'robot-x');
   await page.waitForTimeout(1500);
   assert.notEqual(await figure(page, 'robot-x'), x0, 'it walks');

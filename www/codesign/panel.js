@@ -16,6 +16,7 @@ import { Gallery, paintLegend } from './gallery.js';
 import { BOX_WORDS, BRAIN_WORDS, planSearch, QUICK } from './plan.js';
 import { count, decimal } from '../format.js';
 import { bestEntry, exportName, summaryWords } from './summary.js';
+import { voxelCount } from '../run-estimate.js';
 
 /** Where the panel's problems are said (under its buttons, main.js places them), and a refused search's status. */
 const SOURCE = 'codesign';
@@ -270,7 +271,7 @@ export class CodesignPanel {
     const { first, last } = this.bests;
     if (!first || !last) return;
     const racer = (/** @type {Entry} */ e, /** @type {string} */ when) => ({
-      label: `${when}: ${e.shape} (${this.what})`, shape: e.shape, controller: e.controller, genome: new Float32Array(e.genome),
+      label: `${when}, ${voxelCount(e.shape)} voxels (${this.what})`, shape: e.shape, controller: e.controller, genome: new Float32Array(e.genome),
     });
     this.hooks.race([racer(first, 'best after the first round'), racer(last, 'best at the end')]);
   }
