@@ -201,7 +201,7 @@ fn fine_tuning_never_changes_the_attention_block() {
         serde_json::json!({"shape": "comb-7x2", "seed": 2, "seconds": 1.0,
         "terrain": "flat", "population": 4, "budget": 12}),
     );
-    let mut evolution = Evolution::finetune(ATTENTION_RUN, settings).expect("valid");
+    let mut evolution = Evolution::finetune(ATTENTION_RUN, settings, None).expect("valid");
     let run = RunFile::from_json(ATTENTION_RUN).expect("pretrained");
     assert_eq!(evolution.genome_length(), 77);
     for _ in 0..2 {

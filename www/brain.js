@@ -17,7 +17,7 @@ import { decimal } from './format.js';
  * @property {{left: number, bottom: number}} origin  where that body sat on the grid
  * @property {string} label          where it came from, in words
  * @property {string | null} module  the pretrained file it came from, if any
- * @property {string | null} source  the run file whose attention block it carries (fine-tuning), if any
+ * @property {Source | null} source  the run file whose attention block it carries (fine-tuning), if any
  * @property {number | null} [seconds] the episode length it was trained on (s), if known
  * @property {Trained | null} [trained] its training figure, if it walks as it was trained
  * @property {boolean} [oneShot]     a module put on a body it was not trained on, not fine-tuned yet
@@ -34,6 +34,30 @@ import { decimal } from './format.js';
  */
 
 /** @typedef {{left: number, bottom: number}} Origin */
+
+/**
+ * @typedef {object} Source  what Fine-tune starts from (as `vsr finetune --from FILE [--entry I]`)
+ * @property {string} text          a run file, or a body search's file
+ * @property {number | null} entry  the body of the body search's file (its archive entry), null: its best
+ */
+
+/**
+ * A body found by the body search, with its brain (an attention brain fine-tunes from it).
+ * @param {{controller: string, shape: string, genome: number[], fitness: number, index: number, source: string}} entry
+ *   the body search's entry `index` and its file
+ * @param {{seconds: number, terrain: string} | null} settings the search's @param {string} what what it evolved, in words
+ * @param {number} [walks] how many walks its speed is the mean of
+ * @returns {Brain}
+ */
+export function foundBody(entry, settings, what, walks) {
+  return {
+    controller: entry.controller, genome: new Float32Array(entry.genome), rows: entry.shape, origin: { left: 0, bottom: 0 },
+    module: null, source: entry.controller === 'attention' ? { text: entry.source, entry: entry.index } : null,
+    seconds: settings?.seconds ?? null,
+    trained: Number.isFinite(entry.fitness) && settings ? { speed: entry.fitness, terrain: settings.terrain, walks } : null,
+    label: `a body found by the body search (${what}): ${Number.isFinite(entry.fitness) ? `${decimal(entry.fitness)} m/s in training` : 'no speed'}`,
+  };
+}
 
 /**
  * A module put on the body `rows`: the core's transplant (rejects with a readable Error when
@@ -81,7 +105,7 @@ export async function followEdit(brain, rows, origin, seed, edit) {
 /**
  * The best single evaluation seen during a run.
  * @param {Float32Array} genome @param {number} fitness @param {import('./protocol.js').EvolveSettings} settings
- * @param {string} kind @param {boolean} finetuning @param {string | null} source @param {Origin} origin
+ * @param {string} kind @param {boolean} finetuning @param {Source | null} source @param {Origin} origin
  * @returns {Brain}
  */
 export function bestSoFar(genome, fitness, settings, kind, finetuning, source, origin) {
@@ -102,7 +126,7 @@ export function bestSoFar(genome, fitness, settings, kind, finetuning, source, o
 export function runResult(best, runFile, settings, origin, label) {
   return {
     controller: best.controller, genome: new Float32Array(best.genome), rows: settings.shape, origin, module: null,
-    source: best.controller === 'attention' ? runFile : null, label,
+    source: best.controller === 'attention' ? { text: runFile, entry: null } : null, label,
     seconds: settings.seconds, trained: { speed: best.fitness, terrain: settings.terrain }, run: true,
   };
 }
@@ -112,7 +136,7 @@ function pretrainedKey(module) {
   return module.key.startsWith('pretrained/') ? module.key : null;
 }
 
-/** @param {{controller: string}} info @param {string} text */
+/** @param {{controller: string}} info @param {string} text @returns {Source | null} */
 function attentionSource(info, text) {
-  return info.controller === 'attention' ? text : null;
+  return info.controller === 'attention' ? { text, entry: null } : null;
 }

@@ -46,12 +46,12 @@ onReadyMessage(ready, fail, (/** @type {any} */ msg) => {
  * Starts the run; bad settings answer 'error' before any worker starts.
  * @param {import('./protocol.js').EvolveSettings} settings
  * @param {number} workers
- * @param {string | null} source the run file to fine-tune from, or null
+ * @param {import('./brain.js').Source | null} source the run file to fine-tune from (and its body, for a body search's file), or null
  */
 function start(settings, workers, source) {
   if (evolution) { fail('this coordinator already runs an evolution'); return; }
   try {
-    evolution = source === null ? new Evolution(settings) : Evolution.finetune(source, settings);
+    evolution = source === null ? new Evolution(settings) : Evolution.finetune(source.text, settings, source.entry ?? undefined);
   } catch (error) {
     fail(messageOf(error));
     return;

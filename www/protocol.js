@@ -175,8 +175,10 @@ export function frameIsConsistent(frame) {
  *                                       begin a run of {@link EvolveSettings} with `workers`
  *                                       evaluation workers: from scratch (source null, as
  *                                       `vsr evolve`), or fine-tuning the best of the run file
- *                                       `source` (JSON text, as `vsr finetune --from`); bad
- *                                       settings answer 'error'
+ *                                       `source.text` (JSON text, as `vsr finetune --from`;
+ *                                       of a body search's file, its body `source.entry`, as
+ *                                       `--entry`, or its best for null); bad settings
+ *                                       answer 'error'
  *   {type: 'pause'} / {type: 'resume'}  stop / go on handing out jobs (jobs under way finish)
  *   {type: 'step'}                      while paused: run one more generation, then pause
  *   {type: 'stop'}                      end the run now; the unfinished generation is dropped

@@ -50,12 +50,12 @@ export async function applyState(robot, state) {
   runs.setValues(state.run);
   robot.brain = null;
   if (state.brain) {
-    const brain = { ...state.brain, rows: state.rows, origin: robot.parts.drawing.origin(), source: /** @type {string | null} */ (null) };
+    const brain = { ...state.brain, rows: state.rows, origin: robot.parts.drawing.origin(), source: /** @type {import('./brain.js').Source | null} */ (null) };
     robot.brain = brain;
     if (state.brain.module) {
       try {
         const text = await fetch(state.brain.module).then((r) => (r.ok ? r.text() : Promise.reject(new Error(`HTTP ${r.status}`))));
-        brain.source = text;
+        brain.source = { text, entry: null };
         brain.seconds ??= await describeRun(text).then((info) => info.seconds, () => null); // kept before its seconds were: the module's
       } catch (error) {
         robot.error(`the module ${state.brain.module} could not be fetched, so this robot cannot be fine-tuned: ${messageOf(error)}`);

@@ -19,7 +19,7 @@ import { RunSettings } from './run-settings.js';
  * @typedef {object} RunHooks
  * @property {() => {rows: string, ok: boolean}} body   the drawing now
  * @property {() => string} controller                   the family chosen for Evolve
- * @property {() => string | null} source                the run file of the module on the robot, if any
+ * @property {() => import('./brain.js').Source | null} source  the run file of the module on the robot, if any
  * @property {(genome: Float32Array, fitness: number, settings: import('./protocol.js').EvolveSettings, kind: string) => void} best
  *   a new best seen during a run (with "walk the best so far")
  * @property {(run: FinishedRun) => void} finished     a run ended with a run file

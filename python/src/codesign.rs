@@ -43,7 +43,7 @@ pub fn codesign(
     let brain: BrainMode = brain.parse().map_err(to_py)?;
     let controller: ControllerKind = controller.parse().map_err(to_py)?;
     let module = match module {
-        Some(text) => Some(source_in_file(text).map_err(to_py)?),
+        Some(text) => Some(source_in_file(text, None).map_err(to_py)?),
         None => None,
     };
     let mut config = CodesignConfig::with_module(brain, module, controller, start, evals, seed)

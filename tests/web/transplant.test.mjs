@@ -100,7 +100,7 @@ test('the page\'s fine-tuning equals vsr finetune bit for bit', async () => {
         if (data.type === FromCoordinator.DONE) resolve(data.runFile);
         if (data.type === FromCoordinator.ERROR) reject(new Error(data.message));
       };
-      coordinator.postMessage({ type: ToCoordinator.START, settings, workers: 2, source });
+      coordinator.postMessage({ type: ToCoordinator.START, settings, workers: 2, source: { text: source, entry: null } });
     });
     coordinator.terminate();
     return runFile;

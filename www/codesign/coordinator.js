@@ -90,7 +90,9 @@ function sendEntry(cell, ticket) {
   try {
     const index = search.gallery().findIndex((/** @type {{cell: number[]}} */ e) => e.cell[0] === cell[0] && e.cell[1] === cell[1]);
     if (index < 0) throw new Error('no body in that cell yet');
-    self.postMessage({ type: FromCodesign.ENTRY, cell, ticket, entry: search.entry(index) });
+    // with the search's file so far (entry `index` in it): what Fine-tune starts from
+    const source = search.runFile(pool?.workers.length ?? 1, wallSeconds());
+    self.postMessage({ type: FromCodesign.ENTRY, cell, ticket, entry: { ...search.entry(index), index, source } });
   } catch (error) {
     self.postMessage({ type: FromCodesign.ENTRY, cell, ticket, entry: null, message: messageOf(error) });
   }

@@ -5,16 +5,18 @@
  * brain frozen or fine-tuned, or a brain from scratch, in a body-search coordinator worker
  * (codesign/coordinator.js) on the run settings' workers; shows its progress and the live
  * gallery (gallery.js); a click on a body loads it with its brain into the editor, where it
- * walks (and the page's Share link shares it); the first and the last best race side by side.
+ * walks (and the page's Share link shares it; Fine-tune trains its attention brain on the
+ * drawing); the first and the last best race side by side.
  * Problems (a wrong module, a drawing that is no body) are said in words that stay.
  */
+import { foundBody } from '../brain.js';
 import { download } from '../export.js';
 import { messageOf, spawn } from '../kit.js';
 import { plain } from '../message.js';
 import { FromCodesign, ToCodesign } from './protocol.js';
 import { Gallery, paintLegend } from './gallery.js';
 import { BOX_WORDS, BRAIN_WORDS, planSearch, QUICK } from './plan.js';
-import { count, decimal } from '../format.js';
+import { count } from '../format.js';
 import { bestEntry, exportName, summaryWords } from './summary.js';
 import { voxelCount } from '../run-estimate.js';
 
@@ -34,7 +36,7 @@ const NOT_STARTED = 'The search did not start: the message under the buttons say
  * @property {(text: string, source?: string) => void} message  an error, in words that stay until closed ('' with a source: its error goes)
  */
 
-/** @typedef {{controller: string, shape: string, genome: number[], fitness: number}} Entry */
+/** @typedef {{controller: string, shape: string, genome: number[], fitness: number, index: number, source: string}} Entry  a body with its brain, entry `index` of the search's file `source` */
 
 export class CodesignPanel {
   /** @param {Document} doc @param {CodesignHooks} hooks */
@@ -249,21 +251,12 @@ export class CodesignPanel {
       if (!entry) { this.hooks.message(`that body could not be loaded: ${message ?? 'it is no longer in the gallery'}`); return; }
       this.chosen = cell;
       this.gallery.choose(cell);
-      await this.hooks.open(this.brainOf(entry, this.lastRound?.gallery.find((g) => g.cell.join() === cell.join())?.measurements));
+      const walks = this.lastRound?.gallery.find((/** @type {{cell: number[]}} */ g) => g.cell.join() === cell.join())?.measurements;
+      await this.hooks.open(foundBody(entry, this.settings, this.what, walks));
       document.body.dataset.codesignLoaded = entry.shape;
       this.update();
       if (share) this.hooks.share();
     });
-  }
-
-  /** @param {Entry} entry @param {number} [walks] how many walks its speed is the mean of @returns {import('../brain.js').Brain} */
-  brainOf(entry, walks) {
-    return {
-      controller: entry.controller, genome: new Float32Array(entry.genome), rows: entry.shape, origin: { left: 0, bottom: 0 },
-      module: null, source: null, seconds: this.settings?.seconds ?? null,
-      trained: Number.isFinite(entry.fitness) && this.settings ? { speed: entry.fitness, terrain: this.settings.terrain, walks } : null,
-      label: `a body found by the body search (${this.what}): ${Number.isFinite(entry.fitness) ? `${decimal(entry.fitness)} m/s in training` : 'no speed'}`,
-    };
   }
 
   /** Races the best body after the first round against the best at the end. */

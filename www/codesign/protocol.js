@@ -30,7 +30,9 @@
  *                                        filled, qd_score, kept, wall_seconds}); gallery: the
  *                                        archive in cell order ({@link GalleryEntry}[])
  *   {type: 'entry', cell, ticket, entry, message} entry: {controller, shape, genome
- *                                        (number[]), fitness}, or null and why
+ *                                        (number[]), fitness, index, source}: entry `index`
+ *                                        of the search's file so far (`source`, JSON text),
+ *                                        or null and why
  *   {type: 'recovered', message}         an evaluation worker died; a new one re-runs its job
  *   {type: 'done', stopped, runFile}     the search ended; runFile: the co-design run file
  *                                        (format 'vsr-codesign'), null before iteration 0

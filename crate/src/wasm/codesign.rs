@@ -81,7 +81,7 @@ impl Codesign {
             .map_err(|e| JsError::new(&format!("bad body-search settings: {e}")))?;
         let brain: BrainMode = s.brain.parse()?;
         let module = match module {
-            Some(text) => Some(source_in_file(&text)?),
+            Some(text) => Some(source_in_file(&text, None)?),
             None => None,
         };
         let controller = s

@@ -69,12 +69,17 @@ impl Evolution {
         Evolution::start(s.apply(config)?)
     }
 
-    /// Starts a fine-tuning run, as `vsr finetune --from RUN` does: the best individual of
-    /// the run file `run_file` lends its 32 attention genes, frozen, to the body
+    /// Starts a fine-tuning run, as `vsr finetune --from RUN [--entry I]` does: the best
+    /// individual of the run file `run_file` (of a co-design run file, its best body or
+    /// archive entry `entry`) lends its 32 attention genes, frozen, to the body
     /// `settings.shape` (the controller is the source's).
-    pub fn finetune(run_file: &str, settings: JsValue) -> Result<Evolution, JsError> {
+    pub fn finetune(
+        run_file: &str,
+        settings: JsValue,
+        entry: Option<usize>,
+    ) -> Result<Evolution, JsError> {
         let s = Settings::read(settings)?;
-        let source = source_in_file(run_file)?;
+        let source = source_in_file(run_file, entry)?;
         let shape = Shape::parse(&s.shape)?;
         let config = EvolutionConfig::finetune(source, shape, s.budget, seed_from(s.seed)?);
         Evolution::start(s.apply(config)?)

@@ -66,7 +66,7 @@ pub fn check_shape(rows: &str) -> Result<JsValue, JsError> {
 #[wasm_bindgen]
 pub fn transplant(run_file: &str, rows: &str, seed: f64) -> Result<Vec<f32>, JsError> {
     Ok(experiment::transplant(
-        experiment::codesign::source_in_file(run_file)?,
+        experiment::codesign::source_in_file(run_file, None)?,
         Shape::parse(rows)?,
         seed_from(seed)?,
     )?)

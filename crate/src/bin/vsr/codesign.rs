@@ -76,7 +76,7 @@ fn pair(flag: &str, text: &str, sep: char, example: &str) -> Result<(usize, usiz
 
 fn config_of(args: &Args) -> Result<CodesignConfig> {
     let module = match &args.from {
-        Some(path) => Some(crate::runfile::load_source(path)?),
+        Some(path) => Some(crate::runfile::load_source(path, None)?),
         None => None,
     };
     let mut config = CodesignConfig::with_module(

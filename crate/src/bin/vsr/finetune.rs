@@ -1,5 +1,6 @@
 //! `vsr finetune --from RUN.json --shape S`: SPEC 10's fine-tuning. The best individual of
-//! RUN.json lends its 32 attention genes, frozen; only the downstream genes evolve on S.
+//! RUN.json (or, of a body search's file, its best body or `--entry I`) lends its 32
+//! attention genes, frozen; only the downstream genes evolve on S.
 
 use std::path::PathBuf;
 
@@ -15,6 +16,10 @@ pub struct Args {
     /// The run file whose best individual's attention block is transferred.
     #[arg(long)]
     from: PathBuf,
+    /// A co-design run file's archive entry (0 first, in the file's order) whose attention
+    /// block is transferred, instead of its best body's.
+    #[arg(long)]
+    entry: Option<usize>,
     /// The new shape: a preset or rows top first.
     #[arg(long)]
     shape: String,
@@ -24,7 +29,7 @@ pub struct Args {
 
 /// Runs the command.
 pub fn run(args: Args) -> vsr::Result<()> {
-    let source = crate::runfile::load_source(&args.from)?;
+    let source = crate::runfile::load_source(&args.from, args.entry)?;
     let shape = Shape::parse(&args.shape)?;
     let o = &args.options;
     let config = EvolutionConfig::finetune(source, shape, o.evals, o.seed);

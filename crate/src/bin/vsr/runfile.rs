@@ -10,12 +10,12 @@ use vsr::{Error, Result};
 
 pub use crate::atomic::check_writable;
 
-/// The module in a run file or a co-design run file (its best body with its brain), to
-/// fine-tune or to search bodies around, naming the file in every error.
-pub fn load_source(path: &Path) -> Result<vsr::experiment::SourceRun> {
+/// The module in a run file or a co-design run file (its best body with its brain, or archive
+/// entry `entry`), to fine-tune or to search bodies around, naming the file in every error.
+pub fn load_source(path: &Path, entry: Option<usize>) -> Result<vsr::experiment::SourceRun> {
     let text = fs::read_to_string(path)
         .map_err(|e| Error::Io(format!("cannot read run file {}: {e}", path.display())))?;
-    vsr::experiment::codesign::source_in_file(&text).map_err(|e| in_file(path, e))
+    vsr::experiment::codesign::source_in_file(&text, entry).map_err(|e| in_file(path, e))
 }
 
 /// The individual a command walks (`vsr evaluate`, `vsr validate`, `vsr ablate`): `--genome`

@@ -26,10 +26,13 @@ use crate::experiment::finetune::source_of;
 use crate::experiment::run::{Best, RunFile};
 
 /// The module a run file holds, to transplant or fine-tune: a run file's best, or a co-design
-/// run file's best body with its brain (its seed and budget the search's).
-pub fn source_in_file(text: &str) -> Result<SourceRun> {
+/// run file's best body with its brain (or archive entry `entry`, in cell order; its seed and
+/// budget the search's). `entry` on a plain run file is refused as in [`best_in_file`].
+pub fn source_in_file(text: &str, entry: Option<usize>) -> Result<SourceRun> {
     if !is_codesign(text) {
-        return Ok(source_of(&RunFile::from_json(text)?));
+        let run = RunFile::from_json(text)?;
+        one_body(entry)?;
+        return Ok(source_of(&run));
     }
     let run = CodesignRun::from_json(text)?;
     let Best {
@@ -38,7 +41,10 @@ pub fn source_in_file(text: &str) -> Result<SourceRun> {
         genome,
         fitness,
         ..
-    } = run.best;
+    } = match entry {
+        Some(i) => run.entry_best(i)?,
+        None => run.best,
+    };
     Ok(SourceRun {
         shape,
         controller,
@@ -47,6 +53,16 @@ pub fn source_in_file(text: &str) -> Result<SourceRun> {
         fitness,
         genome,
     })
+}
+
+/// Refuses an archive entry other than 0 for a plain run file: it has one body.
+fn one_body(entry: Option<usize>) -> Result<()> {
+    match entry {
+        None | Some(0) => Ok(()),
+        Some(i) => Err(crate::error::Error::Input(format!(
+            "entry {i}: this run file has one body (entry 0); entries belong to co-design run files"
+        ))),
+    }
 }
 
 /// True when `text` says it is a co-design run file (its `format`), whatever else it holds.
@@ -77,10 +93,6 @@ pub fn best_and_seconds_in_file(text: &str, entry: Option<usize>) -> Result<(Bes
         return Ok((best, run.config.seconds));
     }
     let run = RunFile::from_json(text)?;
-    match entry {
-        None | Some(0) => Ok((run.best, run.config.seconds)),
-        Some(i) => Err(crate::error::Error::Input(format!(
-            "entry {i}: this run file has one body (entry 0); entries belong to co-design run files"
-        ))),
-    }
+    one_body(entry)?;
+    Ok((run.best, run.config.seconds))
 }
