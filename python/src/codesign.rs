@@ -17,10 +17,12 @@ use crate::batch::{info, Pool};
 use crate::errors::to_py;
 
 /// The co-design run file (JSON text) of a body search; `module` is a pretrained module's run
-/// file text (for `frozen` and `finetune`).
+/// file text (for `frozen` and `finetune`; of a co-design run file, its best body or archive
+/// entry `entry`).
 #[pyfunction]
 #[pyo3(signature = (brain, evals, seed, module=None, controller="attention", start=None,
-    seconds=30.0, terrain="hilly-1-10", grid=None, voxels=None, batch=None, threads=None))]
+    seconds=30.0, terrain="hilly-1-10", grid=None, voxels=None, batch=None, threads=None,
+    entry=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn codesign(
     py: Python<'_>,
@@ -36,15 +38,22 @@ pub fn codesign(
     voxels: Option<(usize, usize)>,
     batch: Option<Bound<'_, PyAny>>,
     threads: Option<Bound<'_, PyAny>>,
+    entry: Option<Bound<'_, PyAny>>,
 ) -> PyResult<String> {
     let (evals, seed) = (whole(&evals, "evals")?, whole(&seed, "seed")?);
     let batch = optional_usize(batch.as_ref(), "batch")?;
     let threads = optional_threads(threads.as_ref())?;
+    let entry = optional_usize(entry.as_ref(), "entry")?;
     let brain: BrainMode = brain.parse().map_err(to_py)?;
     let controller: ControllerKind = controller.parse().map_err(to_py)?;
-    let module = match module {
-        Some(text) => Some(source_in_file(text, None).map_err(to_py)?),
-        None => None,
+    let module = match (module, entry) {
+        (Some(text), _) => Some(source_in_file(text, entry).map_err(to_py)?),
+        (None, Some(_)) => {
+            return Err(pyo3::exceptions::PyValueError::new_err(
+                "entry names a body of the module's file: give module too",
+            ))
+        }
+        (None, None) => None,
     };
     let mut config = CodesignConfig::with_module(brain, module, controller, start, evals, seed)
         .map_err(to_py)?;

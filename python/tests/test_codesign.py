@@ -44,3 +44,30 @@ def test_a_module_that_needs_its_neighbours_is_refused_in_words():
         vsr.codesign("frozen", 20, 1, module=ROOT / "pretrained" / "biped-4x3-mlp-comm.json")
     with pytest.raises(ValueError, match="brain"):
         vsr.codesign("thawed", 20, 1)
+
+
+def test_a_found_body_is_a_module_as_on_the_command_line(vsr_bin, tmp_path):
+    """`entry=I` of a co-design run file is `vsr codesign --from FILE --entry I`: the search
+    keeps that body's attention block and starts from that body."""
+    bodies = tmp_path / "bodies.json"
+    vsr.codesign("finetune", 48, 4, module=MODULE, threads=1, out=bodies, **TINY)
+    found = json.loads(bodies.read_text())["archive"]
+    i = len(found) - 1
+    out = tmp_path / "cli.json"
+    code, _, err = cli(
+        vsr_bin, "codesign", "--brain", "frozen", "--from", str(bodies), "--entry", str(i),
+        "--evals", "24", "--seed", "5", "--seconds", "2", "--batch", "12", "--threads", "1",
+        "--out", str(out),
+    )
+    assert code == 0, err
+    run = vsr.codesign("frozen", 24, 5, module=bodies, entry=i, seconds=2.0, batch=12, threads=1)
+    assert without_timing({**run, "best": None, "archive": None}) == without_timing(
+        {**json.loads(out.read_text()), "best": None, "archive": None})
+    assert run["config"]["start"] == found[i]["shape"]
+    block = np.asarray(found[i]["genome"][:32], dtype=np.float32)
+    for entry in run["archive"]:
+        assert np.array_equal(entry["genome"][:32], block)
+    with pytest.raises(ValueError, match="entry 99 does not exist"):
+        vsr.codesign("frozen", 24, 5, module=bodies, entry=99)
+    with pytest.raises(ValueError, match="give module too"):
+        vsr.codesign("frozen", 24, 5, entry=0)

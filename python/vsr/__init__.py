@@ -120,10 +120,12 @@ def simulate(genome, shape, controller, terrain, seconds=30.0, noise_seed=0, tra
 
 
 def codesign(brain, evals, seed, module=None, controller="attention", start=None, seconds=30.0,
-             terrain="hilly-1-10", grid=None, voxels=None, batch=None, threads=None, out=None):
+             terrain="hilly-1-10", grid=None, voxels=None, batch=None, threads=None, out=None,
+             entry=None):
     """``vsr codesign`` from Python, bit for bit: a body search around a brain, ``brain``
     ``"frozen"`` (the attention block of `module`, a pretrained attention module's run file
-    path, held fixed; bodies and per-voxel genes evolve), ``"finetune"`` (the module as the
+    path, held fixed; bodies and per-voxel genes evolve; a co-design run file's best body, or
+    its archive `entry`), ``"finetune"`` (the module as the
     start, every gene evolves) or ``"scratch"`` (a `controller` from random). The search
     starts from `start` (a preset or rows; default the module's own body, or a 3 x 3 box),
     inside a `grid` of (width, height) cells, bodies of `voxels` (min, max); `batch` new
@@ -141,7 +143,7 @@ def codesign(brain, evals, seed, module=None, controller="attention", start=None
         with open(_os.fspath(module), encoding="utf-8") as f:
             text = f.read()
     run_text = _vsr.codesign(brain, int(evals), int(seed), text, controller, start,
-                             float(seconds), terrain, grid, voxels, batch, threads)
+                             float(seconds), terrain, grid, voxels, batch, threads, entry)
     if out is not None:
         with open(_os.fspath(out), "w", encoding="utf-8") as f:
             f.write(run_text)

@@ -25,6 +25,10 @@ pub struct Args {
     /// The pretrained attention module's run file (frozen, finetune).
     #[arg(long, value_name = "RUN.json")]
     from: Option<PathBuf>,
+    /// With --from a co-design run file: its archive entry (0 first, in the file's order) is
+    /// the module (its brain, and its body as the default start), instead of its best body.
+    #[arg(long, requires = "from")]
+    entry: Option<usize>,
     /// Controller family for --brain scratch (frozen and finetune use the module's).
     #[arg(long, default_value = "attention")]
     controller: ControllerKind,
@@ -76,7 +80,7 @@ fn pair(flag: &str, text: &str, sep: char, example: &str) -> Result<(usize, usiz
 
 fn config_of(args: &Args) -> Result<CodesignConfig> {
     let module = match &args.from {
-        Some(path) => Some(crate::runfile::load_source(path, None)?),
+        Some(path) => Some(crate::runfile::load_source(path, args.entry)?),
         None => None,
     };
     let mut config = CodesignConfig::with_module(
