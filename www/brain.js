@@ -99,7 +99,8 @@ export async function ownBody(module, origin) {
 export async function followEdit(brain, rows, origin, seed, edit) {
   const genome = await remapGenome(brain.controller, brain.genome, brain.rows, rows,
     origin.left - brain.origin.left, origin.bottom - brain.origin.bottom, seed, edit);
-  return { ...brain, genome, rows, origin, trained: null, label: `${brain.label.replace(/ · edited$/, '')} · edited` };
+  const label = brain.label.replace(/ · edited.*$/, '');
+  return { ...brain, genome, rows, origin, trained: null, label: `${label} · edited${/m\/s/.test(label) ? ' since that speed was measured' : ''}` };
 }
 
 /**
@@ -129,6 +130,35 @@ export function runResult(best, runFile, settings, origin, label) {
     source: best.controller === 'attention' ? { text: runFile, entry: null } : null, label,
     seconds: settings.seconds, trained: { speed: best.fitness, terrain: settings.terrain }, run: true,
   };
+}
+
+/** What Fine-tune does, on its button. */
+export const FINETUNE_WORDS = 'Fine-tune the attention brain on your robot (a module loaded onto it, a run’s result, a body the body search found): '
+  + 'its attention stays as it is and the rest of its brain is evolved anew for this body, as the paper fine-tunes a transplanted module '
+  + '(that rest starts again from random, so at first it walks worse than now)';
+
+/**
+ * Why Fine-tune is off for the robot's brain (its button's title). @param {Brain | null} brain
+ * @returns {string}
+ */
+export function whyNoFinetune(brain) {
+  if (!brain) {
+    return 'Fine-tune trains an attention brain on your robot, and none drives it yet: choose a module under “Transplant a module” '
+      + 'and press “Load onto my robot” (Evolve starts a new brain, from scratch)';
+  }
+  if (brain.controller !== 'attention') {
+    return `The brain driving your robot is ${brain.controller}: it has no attention to keep, so it cannot be fine-tuned (Evolve trains a new brain for this body, from scratch)`;
+  }
+  return 'The file this brain’s attention came from is not in the page (a link or a reload does not bring it back): to fine-tune, '
+    + 'choose a module under “Transplant a module” and press “Load onto my robot”, or Evolve a new brain, from scratch';
+}
+
+/**
+ * What a link to the robot leaves behind, in a sentence ('' if nothing): a brain fine-tunes
+ * from a file that a link carries only when it is a pretrained module. @param {Brain | null} brain
+ */
+export function lostInLink(brain) {
+  return brain?.source && !brain.module ? ' Fine-tune will be off there: the file its attention came from does not travel in a link.' : '';
 }
 
 /** @param {import('./modules.js').Module} module */

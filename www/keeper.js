@@ -28,6 +28,7 @@ const KEEP_DELAY_MS = 300;
  * @property {(state: import('./share.js').PageState) => Promise<string>} apply  shows a state; '' or why not
  * @property {() => string} shown                             the robot shown now, in words
  * @property {() => boolean} running                          a run uses the robot
+ * @property {() => string} lost                              what a link leaves behind, a sentence ('' if nothing)
  * @property {(text: string, kind?: import('./message.js').Kind) => void} say
  */
 
@@ -158,9 +159,9 @@ export class Keeper {
     this.linkField.select();
     try {
       await navigator.clipboard.writeText(url);
-      this.hooks.say('Link copied: it opens this robot, its settings and its controller.', 'note');
+      this.hooks.say(`Link copied: it opens this robot, its settings and its controller.${this.hooks.lost()}`, 'note');
     } catch {
-      this.hooks.say('Here is the link (selected): copy it to share this robot.', 'note');
+      this.hooks.say(`Here is the link (selected): copy it to share this robot.${this.hooks.lost()}`, 'note');
     }
   }
 

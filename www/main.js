@@ -7,6 +7,7 @@
  * and shared as a link (keeper.js), and set up by the guided tour and the study panel; bodies
  * are searched around a brain by the body-search panel (codesign/).
  */
+import { lostInLink, whyNoFinetune } from './brain.js';
 import { ready } from './core.js';
 import { rowsField, wireDrawControls } from './draw-controls.js';
 import { Drawing } from './drawing.js';
@@ -74,6 +75,7 @@ const keeper = new Keeper(defaults, { link: el('share-link'), button: el('share'
   apply: (state) => robot.restore(state),
   shown: () => `${drawing.rows()} (${robot.check.voxels} voxels) driven by ${robot.brain ? robot.brain.label : 'the phase gait'}`,
   running: () => robot.running,
+  lost: () => lostInLink(robot?.brain ?? null),
   say: (text, kind = 'error') => messages.show(text, kind),
 });
 const speedNote = new SpeedNote(el('speed-note'), new Measurer(defaults.viewNoiseSeed));
@@ -87,6 +89,7 @@ const runs = new RunPanel(document, defaults, {
   body: () => ({ rows: drawing.rows(), ok: robot?.check.ok ?? false }), // the panel asks before the robot is made
   controller: () => controllerSelect.value,
   source: () => (robot?.brain && robot.brain.controller === 'attention' ? robot.brain.source : null),
+  whyNoFinetune: () => whyNoFinetune(robot?.brain ?? null),
   best: (genome, fitness, settings, kind) => follower.best(genome, fitness, settings, kind),
   finished: (run) => follower.finished(run),
   generation: (top, generation, settings, kind, mode) => race.keepGeneration(top, generation, settings, kind, mode),

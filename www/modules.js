@@ -222,7 +222,7 @@ export class ModuleList {
       const body = (/** @type {string} */ rows) => bodyWords(rows, this.presets);
       const rows = info.foundBySearch ? `drives ${body(info.shape)} found by a body search`
         : `was ${info.finetunedFrom ? 'fine-tuned' : 'evolved'} on ${body(info.shape)}`
-          + `${info.finetunedFrom ? ` from a module evolved on ${body(info.finetunedFrom)},` : ''}`;
+          + `${info.finetunedFrom ? ` from the attention of a brain trained on ${body(info.finetunedFrom)},` : ''}`;
       const took = info.evaluations > info.budget
         ? ` (it took ${count(info.evaluations)}: a ${info.foundBySearch ? 'search finishes its last round' : 'run finishes its last generation'})` : '';
       this.details.textContent = `This ${info.controller} brain of ${count(info.genes)} genes ${rows} with seed ${info.seed} and a budget of `

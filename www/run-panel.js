@@ -14,12 +14,14 @@ import { FromCoordinator, ToCoordinator } from './protocol.js';
 import { RunProgress, TABLE_HEADER } from './run-progress.js';
 import { voxelCount } from './run-estimate.js';
 import { RunSettings } from './run-settings.js';
+import { FINETUNE_WORDS } from './brain.js';
 
 /**
  * @typedef {object} RunHooks
  * @property {() => {rows: string, ok: boolean}} body   the drawing now
  * @property {() => string} controller                   the family chosen for Evolve
  * @property {() => import('./brain.js').Source | null} source  the run file of the module on the robot, if any
+ * @property {() => string} whyNoFinetune               why Fine-tune is off when there is none
  * @property {(genome: Float32Array, fitness: number, settings: import('./protocol.js').EvolveSettings, kind: string) => void} best
  *   a new best seen during a run (with "walk the best so far")
  * @property {(run: FinishedRun) => void} finished     a run ended with a run file
@@ -286,9 +288,7 @@ export class RunPanel {
     const off = running || this.starting || !body.ok || this.form.invalid;
     b.evolve.disabled = off;
     b.finetune.disabled = off || this.hooks.source() === null;
-    b.finetune.title = b.finetune.disabled && !running && this.hooks.source() === null
-      ? 'Fine-tune trains a module transplanted onto your robot: choose one under “Transplant a module” and press “Load onto my robot” (the brain driving your robot now was not loaded from there; Evolve starts a new brain, from scratch)'
-      : 'Train the module on your robot: evolve the rest of its brain for this body while its attention stays as it is';
+    b.finetune.title = b.finetune.disabled && !running && this.hooks.source() === null ? this.hooks.whyNoFinetune() : FINETUNE_WORDS;
     this.form.lock(running);
     b.pause.disabled = !running;
     b.step.disabled = !running || !this.paused;

@@ -4,7 +4,9 @@
  * search whose attention evolves with each body (brain "every gene evolving from the
  * module"); a click on a body of its gallery loads it; Fine-tune is on, and its run keeps
  * that body's 32 attention genes (not the module's) and equals `vsr finetune --from
- * bodies.json --entry I` bit for bit (needs target/release/vsr; VSR_BIN).
+ * bodies.json --entry I` bit for bit (needs target/release/vsr; VSR_BIN). A link to the result
+ * says that Fine-tune will be off where it opens (the file does not travel), and there the
+ * button says why.
  */
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
@@ -65,6 +67,8 @@ test('a body the search found fine-tunes with its own attention, as vsr finetune
   await waitForText(page, 'driver', /a body found by the body search/);
   await waitForText(page, 'shape-status', new RegExp(`· ${entry.shape}$`));
   assert.equal(await byTestId(page, 'finetune').isEnabled(), true, 'Fine-tune is on for a found attention brain');
+  assert.match(String(await byTestId(page, 'finetune').getAttribute('title')), /its attention stays as it is and the rest of its brain is evolved anew .* at first it walks worse than now/,
+    'what Fine-tune does to a found body, said before it is pressed');
 
   for (const [key, value] of Object.entries(RUN)) await page.locator(`#run-${key}`).fill(value);
   if (await page.locator('#run-compare').isChecked()) await page.locator('#run-compare').uncheck();
@@ -81,6 +85,16 @@ test('a body the search found fine-tunes with its own attention, as vsr finetune
   assert.deepEqual(generations(inPage), generations(native), 'every generation as vsr finetune --entry runs it');
   assert.deepEqual(inPage.best, native.best);
   assert.deepEqual(inPage.config, native.config);
+
+  // A link keeps the robot, not the file its attention came from: said when it is made; reopened, Fine-tune is off and says why.
+  await byTestId(page, 'share').click();
+  await waitForText(page, 'message', /Fine-tune will be off there: the file its attention came from does not travel in a link/);
+  const reopened = await openPage(env.browser, await page.locator('#share-link').inputValue());
+  await waitForText(reopened.page, 'driver', /fine-tuned/);
+  assert.equal(await byTestId(reopened.page, 'finetune').isDisabled(), true);
+  assert.match(String(await byTestId(reopened.page, 'finetune').getAttribute('title')), /^The file this brain’s attention came from is not in the page/);
+  assert.deepEqual(reopened.problems, []);
+  await reopened.context.close();
   assert.deepEqual(problems, []);
   await context.close();
 });
