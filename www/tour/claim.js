@@ -37,7 +37,8 @@ function answerWords(s, shape) {
   const a = shape.answer;
   if (!a) return '';
   const verdict = {
-    'not worse': `${s.treatment} is not worse than ${s.control}${a.superiority === 'better' ? `, and is faster` : ''}`,
+    'not worse': `${s.treatment} is not worse than ${s.control}${a.superiority === 'better' ? ', and is faster'
+      : a.superiority === 'not shown better' ? ', though these runs do not show it faster either' : ''}`,
     worse: `${s.treatment} is worse, by more than ${decimal(s.margin, 1)} m/s: the paper's claim does not hold here`,
     'not shown': `not settled: the runs still allow ${s.treatment} being more than ${decimal(s.margin, 1)} m/s slower`,
   }[a.verdict];
