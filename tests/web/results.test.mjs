@@ -59,7 +59,7 @@ test('the study\'s results in plain words: no Markdown, no file paths, every num
   } else {
     assert.match(row7, /no result yet/, 'RESULTS.md gives no answer before the page has one');
     assert.match(said, new RegExp(`under way: ${claim.finished_runs} of the ${claim.planned_runs} runs have finished`), said);
-    assert.doesNotMatch(said, /difference lies between/, 'no interim answer');
+    assert.doesNotMatch(said, /allow a difference between/, 'no interim answer');
   }
   assert.equal(await page.locator('[data-testid="study-claim"]').textContent(), said, 'the study panel says the same');
   const figures = await byTestId(page, 'study-figure').locator('option').evaluateAll((os) => os.map((o) => /** @type {HTMLOptionElement} */ (o).value));
@@ -96,9 +96,9 @@ test('once every run of the claim\'s test is in, the page gives its answer on ea
   await page.reload();
   await page.waitForFunction(() => /On the comb/.test(document.querySelector('[data-testid="claim"]')?.textContent ?? ''));
   const said = String(await page.locator('[data-testid="claim"]').textContent());
-  assert.match(said, /On the biped \(biped-4x3\), attention is not worse than mlp-comm, and is faster \(the middle run 3\.90 against 3\.40 m\/s; the difference lies between −0\.12 and \+1\.03 m\/s\)\./);
+  assert.match(said, /On the biped \(biped-4x3\), attention is not slower than mlp-comm by 0\.5 m\/s or more, and is faster \(median speeds 3\.90 against 3\.40 m\/s; the runs allow a difference between −0\.12 and \+1\.03 m\/s, with 95% confidence\)\./);
   assert.match(said, /On the comb \(comb-7x2\), not settled: the runs still allow attention being more than 0\.5 m\/s slower/);
-  assert.match(said, /On the biped \(biped-6x4\), attention is not worse than mlp-comm, though these runs do not show it faster either \(/);
+  assert.match(said, /On the biped \(biped-6x4\), attention is not slower than mlp-comm by 0\.5 m\/s or more, though these runs do not show it faster either \(/);
   assert.doesNotMatch(said, /under way/);
   assert.equal(await page.locator('[data-testid="study-claim"]').textContent(), said, 'the study panel says the same');
   // The study panel now lists the test's figures, drawn from its own table of runs only.

@@ -112,8 +112,8 @@ export const CHAPTERS = [
       'Each was evolved in our study with 30,000 evaluations. Below, they race on one terrain for 30 s, all started together.',
     ],
     task: 'Answer first: the race under “Side by side” starts when you reveal your answer. Then watch it to the end.',
-    notice: 'The paper found attention the fastest, even against voxels that talk. Our study, with ten runs of each brain, finds attention faster than mlp, on this biped and on the comb, but cannot separate attention from mlp-comm: the voxels that talk keep up. '
-      + 'A larger test, planned in advance with thirty fresh runs of each brain on each body, then asked the paper\'s own claim: attention is not worse than mlp-comm on either body, though not shown faster. '
+    notice: 'The paper found attention the fastest, even against voxels that talk. Our study, with ten runs of each brain, finds attention faster than mlp, on this biped and on the comb, but could not tell attention and mlp-comm apart. '
+      + 'A larger test, planned in advance with thirty fresh runs of each brain on each body, then asked the paper\'s own claim: attention is not slower than mlp-comm by 0.5 m/s or more on either body, though not shown faster. '
       + 'One race is one terrain and one run of each: the figure is the fair comparison, every run of each brain on ten terrains it never trained on (it shows our first five runs of each).',
     setup: { rows: BIPED, brain: { module: ATTENTION, on: 'own' }, terrain: VIEW,
       race: ['pretrained/biped-4x3-mlp.json', 'pretrained/biped-4x3-mlp-comm.json', ATTENTION] }, // not in the order they finish

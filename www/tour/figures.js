@@ -149,8 +149,8 @@ function claimFigures() {
       paper: 'The paper says a brain with no messages (attention) performs "better or comparatively" to one whose voxels send messages (mlp-comm). '
         + 'This test asked that exactly, fixed before any of its runs began: thirty fresh runs of each brain on each body.',
       read: 'Each row is a body: the dot is how much faster attention walks than mlp-comm on ten unseen terrains (the middle estimate, m/s), the bar the range the runs still allow (95%). '
-        + 'The test asks whether attention could be 0.5 m/s slower or more (the dashed line at −0.5): a bar wholly right of that line says it is not, right of 0 too, that it is faster. '
-        + 'The verdict itself is the test\'s, in words above the figure.',
+        + 'The test asks whether attention could be 0.5 m/s slower or more (the dashed line at −0.5): a bar wholly right of that line is the picture of “not slower by that much”. '
+        + 'The verdict itself (and whether attention is shown faster) is the test\'s, which allows for testing two bodies, in words above the figure.',
       runs: bodies.map(([, shape]) => ({ kind: 'scratch', shape, evals: 30000, controllers: pair })) },
     ...bodies.map(([body, shape]) => ({ ...base, id: `claim-${body}`, file: `fig4-noninferiority-${shape}-30000-unseen.svg`,
       title: `The larger test of the paper's claim on the ${body}: thirty runs of each brain`,
