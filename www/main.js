@@ -122,7 +122,9 @@ const bodySearch = new CodesignPanel(document, {
     const replaced = drawn !== brain.rows && drawing.rows() === brain.rows;
     if (replaced) {
       messages.show('The body you clicked, with its brain, now stands in “1 · Draw” in place of your drawing: Undo there brings '
-        + 'the shape of your drawing back, driven by this brain.', 'note', 'watch');
+        + 'the shape of your drawing back, driven by this brain.'
+        + (brain.source ? ' Fine-tune, under “Run”, can train its attention for this body or one you draw (the rest of its brain starts again).' : ''),
+      'note', 'watch');
     }
     // The robot in view, with the note just above it (on a phone the top of the page is far away).
     el(replaced ? 'watch-message' : 'scene').scrollIntoView({ block: replaced ? 'start' : 'nearest', behavior: 'instant' });

@@ -66,6 +66,7 @@ test('a body the search found fine-tunes with its own attention, as vsr finetune
   await page.locator(`[data-testid="codesign-body"][data-cell="${entry.cell.join(',')}"]`).click();
   await waitForText(page, 'driver', /a body found by the body search/);
   await waitForText(page, 'shape-status', new RegExp(`· ${entry.shape}$`));
+  await waitForText(page, 'watch-message', /Fine-tune, under “Run”, can train its attention for this body or one you draw/);
   assert.equal(await byTestId(page, 'finetune').isEnabled(), true, 'Fine-tune is on for a found attention brain');
   assert.match(String(await byTestId(page, 'finetune').getAttribute('title')), /its attention stays as it is and the rest of its brain is evolved anew .* at first it walks worse than now/,
     'what Fine-tune does to a found body, said before it is pressed');
