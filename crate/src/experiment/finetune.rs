@@ -66,18 +66,27 @@ pub(crate) fn initial_population(config: &EvolutionConfig, source: &SourceRun) -
 /// The identity of a source run for [`EvolutionConfig::finetune`]: its best individual and
 /// the settings that produced it.
 pub fn source_of(run: &RunFile) -> SourceRun {
+    source_from(
+        run.best.clone(),
+        run.config.seed,
+        run.config.ga.budget_evals,
+    )
+}
+
+/// `best` as a source, with the seed and budget of the run (or search) that found it.
+pub(crate) fn source_from(best: Best, seed: u64, budget_evals: u64) -> SourceRun {
     let Best {
         controller,
         shape,
         genome,
         fitness,
         ..
-    } = run.best.clone();
+    } = best;
     SourceRun {
         shape,
         controller,
-        seed: run.config.seed,
-        budget_evals: run.config.ga.budget_evals,
+        seed,
+        budget_evals,
         fitness,
         genome,
     }

@@ -22,7 +22,7 @@ pub use search::Codesign;
 
 use crate::error::Result;
 use crate::experiment::config::SourceRun;
-use crate::experiment::finetune::source_of;
+use crate::experiment::finetune::{source_from, source_of};
 use crate::experiment::run::{Best, RunFile};
 
 /// The module a run file holds, to transplant or fine-tune: a run file's best, or a co-design
@@ -35,24 +35,11 @@ pub fn source_in_file(text: &str, entry: Option<usize>) -> Result<SourceRun> {
         return Ok(source_of(&run));
     }
     let run = CodesignRun::from_json(text)?;
-    let Best {
-        controller,
-        shape,
-        genome,
-        fitness,
-        ..
-    } = match entry {
+    let best = match entry {
         Some(i) => run.entry_best(i)?,
         None => run.best,
     };
-    Ok(SourceRun {
-        shape,
-        controller,
-        seed: run.config.seed,
-        budget_evals: run.config.budget_evals,
-        fitness,
-        genome,
-    })
+    Ok(source_from(best, run.config.seed, run.config.budget_evals))
 }
 
 /// Refuses an archive entry other than 0 for a plain run file: it has one body.
