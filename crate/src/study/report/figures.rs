@@ -101,8 +101,10 @@ pub enum Plot {
 /// A row of body pictures.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BodyRow {
-    /// The row's label (e.g. a condition).
+    /// The row's label (e.g. a condition; its colour is its [`Role::of`]).
     pub label: String,
+    /// A second, smaller line under the label (e.g. how many runs finished); may be empty.
+    pub note: String,
     /// Its pictures, left to right.
     pub bodies: Vec<BodyPicture>,
 }

@@ -1,6 +1,8 @@
-//! Draws a picture of bodies (`Plot::Bodies`) as plain SVG: a row per label, each body a grid
-//! of square voxels standing on a ground line, its caption under it, each row in the colour
-//! its label's role has in every other figure (`palette`).
+//! Draws a picture of bodies (`Plot::Bodies`) as plain SVG: a row per label (with its note on
+//! a second, smaller line), each body a grid of square voxels standing on a ground line, its
+//! caption under it, each row in the colour its label's role has in every other figure
+//! (`palette`). The labels' column is as wide as its longest line, by an estimate of the
+//! viewer's sans-serif font (no font file is read), so that no label runs into a body.
 
 use super::palette::look;
 use vsr::study::report::figures::{BodyRow, Figure, Role};
@@ -8,9 +10,25 @@ use vsr::study::report::figures::{BodyRow, Figure, Role};
 /// Width of one body's column and height of one row (px).
 const COLUMN: f64 = 112.0;
 const ROW: f64 = 110.0;
-/// Width of the labels' column, height of the title (px).
-const LABELS: f64 = 190.0;
+/// Narrowest labels' column, height of the title (px).
+const LABELS: f64 = 120.0;
 const TITLE: f64 = 44.0;
+/// Font sizes of a label and of its note (px).
+const LABEL_FONT: f64 = 15.0;
+const NOTE_FONT: f64 = 12.0;
+/// A generous estimate of a sans-serif character's width, in font sizes (DejaVu Sans, the
+/// widest common default, averages about 0.6 on these labels).
+const CHAR_WIDTH: f64 = 0.62;
+
+/// Width of the labels' column: the widest label or note, with margins.
+fn labels_width(rows: &[BodyRow]) -> f64 {
+    let text = |s: &str, size: f64| s.chars().count() as f64 * size * CHAR_WIDTH;
+    let widest = rows
+        .iter()
+        .map(|r| text(&r.label, LABEL_FONT).max(text(&r.note, NOTE_FONT)))
+        .fold(0.0, f64::max);
+    LABELS.max((widest + 30.0).ceil())
+}
 /// Largest voxel side (px).
 const VOXEL: f64 = 14.0;
 
@@ -22,7 +40,8 @@ pub fn draw(figure: &Figure, rows: &[BodyRow]) -> String {
         .max()
         .unwrap_or(0)
         .max(1);
-    let width = LABELS + COLUMN * columns as f64 + 10.0;
+    let labels = labels_width(rows);
+    let width = labels + COLUMN * columns as f64 + 10.0;
     let notes = 18.0 * figure.notes.len() as f64;
     let height = TITLE + ROW * rows.len() as f64 + notes + 10.0;
     let mut svg = format!(
@@ -38,12 +57,19 @@ pub fn draw(figure: &Figure, rows: &[BodyRow]) -> String {
         let c = look(Role::of(&row.label), i).colour;
         let colour = format!("#{:02x}{:02x}{:02x}", c.0, c.1, c.2);
         svg += &format!(
-            "<text x=\"10\" y=\"{}\" font-size=\"15\" fill=\"{colour}\">{}</text>\n",
-            top + ROW / 2.0,
+            "<text x=\"10\" y=\"{}\" font-size=\"{LABEL_FONT}\" fill=\"{colour}\">{}</text>\n",
+            top + ROW / 2.0 - 6.0,
             escape(&row.label)
         );
+        if !row.note.is_empty() {
+            svg += &format!(
+                "<text x=\"10\" y=\"{}\" font-size=\"{NOTE_FONT}\" fill=\"#555555\">{}</text>\n",
+                top + ROW / 2.0 + 12.0,
+                escape(&row.note)
+            );
+        }
         for (j, body) in row.bodies.iter().enumerate() {
-            let left = LABELS + COLUMN * j as f64;
+            let left = labels + COLUMN * j as f64;
             svg += &picture(&body.rows, left, top, &colour);
             svg += &format!(
                 "<text x=\"{}\" y=\"{}\" font-size=\"12\" text-anchor=\"middle\" fill=\"{}\">{}</text>\n",
@@ -117,7 +143,8 @@ mod tests {
     #[test]
     fn a_voxel_per_one_and_a_caption_per_body() {
         let rows = vec![BodyRow {
-            label: "frozen (1 of 2)".into(),
+            label: "frozen".into(),
+            note: "1 of 2 runs finished, and a note longer than the label".into(),
             bodies: vec![
                 BodyPicture {
                     rows: "11-01".into(),
@@ -140,5 +167,16 @@ mod tests {
         let svg = draw(&figure, &rows);
         assert_eq!(svg.matches("<rect x=").count(), 3, "{svg}");
         assert!(svg.contains("s2: not finished") && svg.contains("bodies &lt;&amp;&gt;"));
+        assert!(svg.contains(">1 of 2 runs finished, and a note longer than the label</text>"));
+        // The labels' column holds the longest line (55 characters at 12 px): the first body
+        // starts to its right.
+        let first = svg.find("<line x1=\"").expect("a ground line");
+        let x1: f64 = svg[first + 10..]
+            .split('"')
+            .next()
+            .unwrap()
+            .parse()
+            .unwrap();
+        assert!(x1 - 6.0 >= 55.0 * NOTE_FONT * CHAR_WIDTH + 10.0, "{x1}");
     }
 }

@@ -4,7 +4,9 @@
 //! (the `unseen` velocity, family 9; the QD-score, family 10): two-sided Mann-Whitney U,
 //! Holm within the family at alpha 0.05, the Hodges-Lehmann shift with its exact 95%
 //! interval, A12 with its bootstrap interval, the smallest detectable A12. Measures the plan
-//! reports as estimates (the `paper` velocity, coverage) get the shift and A12 only.
+//! reports as estimates (the `paper` velocity, coverage) get the shift and A12 only. The
+//! exploratory comparisons (not in the plan, chosen after its data) are tested one by one,
+//! uncorrected, and draw no verdict.
 
 use super::measures::{Condition, Measure};
 use crate::study::report::families::{ALPHA, POWER};
@@ -78,12 +80,71 @@ impl Row {
     }
 }
 
+/// Comparisons the plan does not make, chosen after its data (a reviewer's check): attention
+/// from scratch against every other brain from scratch, so that the share of the frozen
+/// module's lead that attention alone already has can be read beside it.
+pub(crate) fn exploratory_pairs(conditions: &[String]) -> Vec<(String, String)> {
+    let attention = "scratch-attention";
+    if !conditions.iter().any(|c| c == attention) {
+        return Vec::new();
+    }
+    conditions
+        .iter()
+        .filter(|c| c.starts_with("scratch-") && *c != attention)
+        .map(|c| (attention.to_string(), c.clone()))
+        .collect()
+}
+
+/// The exploratory comparisons on `measure` (`exploratory_pairs`), each tested alone: its
+/// "Holm" p is its raw p, of a family of 1 (nothing is corrected: no verdict is drawn).
+pub(crate) fn exploratory(conditions: &[Condition], measure: Measure) -> Vec<Row> {
+    let names: Vec<String> = conditions.iter().map(|c| c.name.clone()).collect();
+    let mut rows = compared(conditions, exploratory_pairs(&names), measure, true);
+    for row in &mut rows {
+        if let Some((u, h, k)) = row.found.as_mut().and_then(|f| f.test.as_mut()) {
+            (*h, *k) = (u.p, 1);
+        }
+    }
+    rows
+}
+
 /// The plan's comparisons on `measure`; tested (Holm over the rows with values in both
 /// samples) when `tested`, estimates only otherwise.
 pub(crate) fn family(conditions: &[Condition], measure: Measure, tested: bool) -> Vec<Row> {
     let names: Vec<String> = conditions.iter().map(|c| c.name.clone()).collect();
+    let mut rows = compared(conditions, pairs(&names), measure, tested);
+    let with: Vec<usize> = (0..rows.len())
+        .filter(|&i| rows[i].found.as_ref().is_some_and(|f| f.test.is_some()))
+        .collect();
+    let p: Vec<f64> = with
+        .iter()
+        .map(|&i| {
+            rows[i]
+                .found
+                .as_ref()
+                .and_then(|f| f.test.as_ref())
+                .expect("tested")
+                .0
+                .p
+        })
+        .collect();
+    for (&i, adjusted) in with.iter().zip(holm(&p)) {
+        if let Some((_, h, k)) = rows[i].found.as_mut().and_then(|f| f.test.as_mut()) {
+            (*h, *k) = (adjusted, p.len());
+        }
+    }
+    rows
+}
+
+/// The rows of `pairs` on `measure`, tested (p not yet adjusted) when `tested`.
+fn compared(
+    conditions: &[Condition],
+    pairs: Vec<(String, String)>,
+    measure: Measure,
+    tested: bool,
+) -> Vec<Row> {
     let of = |name: &str| conditions.iter().find(|c| c.name == name);
-    let mut rows: Vec<Row> = pairs(&names)
+    pairs
         .into_iter()
         .filter_map(|(a, b)| {
             let (ca, cb) = (of(&a)?, of(&b)?);
@@ -106,28 +167,7 @@ pub(crate) fn family(conditions: &[Condition], measure: Measure, tested: bool) -
                 found,
             })
         })
-        .collect();
-    let with: Vec<usize> = (0..rows.len())
-        .filter(|&i| rows[i].found.as_ref().is_some_and(|f| f.test.is_some()))
-        .collect();
-    let p: Vec<f64> = with
-        .iter()
-        .map(|&i| {
-            rows[i]
-                .found
-                .as_ref()
-                .and_then(|f| f.test.as_ref())
-                .expect("tested")
-                .0
-                .p
-        })
-        .collect();
-    for (&i, adjusted) in with.iter().zip(holm(&p)) {
-        if let Some((_, h, k)) = rows[i].found.as_mut().and_then(|f| f.test.as_mut()) {
-            (*h, *k) = (adjusted, p.len());
-        }
-    }
-    rows
+        .collect()
 }
 
 #[cfg(test)]
@@ -157,5 +197,15 @@ mod tests {
             ]
         );
         assert!(pairs(&c[..2]).is_empty());
+        let e = exploratory_pairs(&c);
+        let words: Vec<String> = e.iter().map(|(a, b)| format!("{a} vs {b}")).collect();
+        assert_eq!(
+            words,
+            [
+                "scratch-attention vs scratch-mlp",
+                "scratch-attention vs scratch-mlp-comm"
+            ]
+        );
+        assert!(exploratory_pairs(&c[..2]).is_empty());
     }
 }

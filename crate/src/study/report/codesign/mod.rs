@@ -1,20 +1,22 @@
 //! The body-search section of the report (docs/ANALYSIS-PLAN.md, "Body search", families 9
 //! and 10), one per `[[codesign]]` group: how many runs finished, each condition's measures
 //! (`measures`), the planned tests in the plan's words (`family`), the measures reported as
-//! estimates, and the figures (`pictures`). Runs in flight are never guessed: a row with
-//! fewer runs than planned is marked interim, "not the planned test", as family 8's are.
+//! estimates, the exploratory comparisons (not in the plan: attention from scratch against the
+//! other brains from scratch) and the figures (`pictures`). Runs in flight are never guessed: a
+//! row with fewer runs than planned is marked interim, "not the planned test", as family 8's
+//! are. Speeds are written to 2 decimals and QD-scores to 1, the precision docs/RESULTS.md
+//! quotes them at, so that a number copied from here is never rounded twice.
 
 mod family;
 mod measures;
 mod pictures;
 
 use super::families::{ALPHA, POWER};
-use super::tables::cell;
 use super::Report;
 use crate::experiment::ValidationSet;
 use crate::study::campaign::{CodesignGroup, Results};
-use crate::study::statistics::Method;
-use family::{family, Row};
+use crate::study::statistics::{Method, Summary};
+use family::{exploratory, family, Row};
 use measures::{cells, conditions, Condition, Measure};
 use std::fmt::Write;
 
@@ -60,9 +62,13 @@ fn section(results: &Results, g: &CodesignGroup, r: &mut Report) {
         tests_table(rows, m, md);
     }
     let _ = writeln!(md, "### Estimates, not tested: paper mean and coverage\n");
-    let paper = family(&conds, Measure::Velocity(ValidationSet::Paper), false);
-    let coverage = family(&conds, Measure::Coverage, false);
-    estimates_table(&[&paper, &coverage], md);
+    let paper = Measure::Velocity(ValidationSet::Paper);
+    let estimates = [
+        (paper, family(&conds, paper, false)),
+        (Measure::Coverage, family(&conds, Measure::Coverage, false)),
+    ];
+    estimates_table(&estimates, md);
+    exploratory_table(&exploratory(&conds, unseen), &nine, md);
     let tested: [(Measure, &[Row]); 2] = [(unseen, &nine), (Measure::QdScore, &ten)];
     pictures::figures(&g.name, g.evals, &conds, &tested, r);
 }
@@ -133,10 +139,41 @@ fn summary(conds: &[Condition], md: &mut String) {
     let _ = writeln!(md, "| brain | {} |", names.join(" | "));
     let _ = writeln!(md, "|---|{}", "---|".repeat(names.len()));
     for c in conds {
-        let row: Vec<String> = measures.iter().map(|&m| cell(&c.values(m))).collect();
+        let row: Vec<String> = measures.iter().map(|&m| cell(&c.values(m), m)).collect();
         let _ = writeln!(md, "| {} | {} |", c.name, row.join(" | "));
     }
     md.push('\n');
+}
+
+/// Decimals a value of `m` is written with: 2 for a speed (m/s), 1 for a QD-score, 2 for a
+/// number of cells (its quartiles are quarters: 21.25 is written whole, never rounded to an
+/// even 21.2 here and an upward 21.3 elsewhere).
+fn decimals(m: Measure) -> usize {
+    match m {
+        Measure::Velocity(_) | Measure::Best | Measure::Coverage => 2,
+        Measure::QdScore => 1,
+    }
+}
+
+/// Median [q1, q3] (n) of `values`, to `m`'s decimals; "-" without values.
+fn cell(values: &[f64], m: Measure) -> String {
+    let s = Summary::of(values);
+    let d = decimals(m);
+    match s.n {
+        0 => "-".into(),
+        _ => format!("{:.d$} [{:.d$}, {:.d$}] (n={})", s.median, s.q1, s.q3, s.n),
+    }
+}
+
+/// Medians, then the shift with its interval, of a comparison on `m`, to its decimals:
+/// `median A | median B | shift [low, high]` without the outer bars.
+fn medians_and_shift(f: &family::Found, m: Measure) -> String {
+    let d = decimals(m);
+    let s = &f.shift;
+    format!(
+        "{:.d$} | {:.d$} | {:+.d$} [{:+.d$}, {:+.d$}]",
+        f.medians.0, f.medians.1, s.estimate, s.interval.low, s.interval.high
+    )
 }
 
 fn tests_table(rows: &[Row], m: Measure, md: &mut String) {
@@ -182,24 +219,27 @@ fn tests_table(rows: &[Row], m: Measure, md: &mut String) {
         } else {
             String::new()
         };
-        let (s, (a12, ai)) = (&f.shift, &f.a12);
+        let (a12, ai) = &f.a12;
+        let d = decimals(m);
+        let (ma, mb, s) = (f.medians.0, f.medians.1, &f.shift);
         let _ = writeln!(
             md,
-            "| {} | {} | {n} | {:.3} | {:.3} | {:.4} {method} | {holm:.4} (k={k}) | {:+.3} [{:+.3}, {:+.3}] | {a12:.2} [{:.2}, {:.2}] | {:.2} | {verdict}{interim} |",
-            row.a, row.b, f.medians.0, f.medians.1, u.p, s.estimate, s.interval.low,
-            s.interval.high, ai.low, ai.high, f.detectable.a12
+            "| {} | {} | {n} | {ma:.d$} | {mb:.d$} | {:.4} {method} | {holm:.4} (k={k}) | {:+.d$} [{:+.d$}, {:+.d$}] | {a12:.2} [{:.2}, {:.2}] | {:.2} | {verdict}{interim} |",
+            row.a, row.b, u.p, s.estimate, s.interval.low, s.interval.high, ai.low, ai.high,
+            f.detectable.a12
         );
     }
     md.push('\n');
 }
 
-fn estimates_table(families: &[&Vec<Row>], md: &mut String) {
+fn estimates_table(families: &[(Measure, Vec<Row>)], md: &mut String) {
     let _ = writeln!(
         md,
         "| A | B | measure | n | median A | median B | shift [CI] | A12 [CI] |\n|---|---|---|---|---|---|---|---|"
     );
-    for (rows, m) in families.iter().zip(["paper mean", "coverage"]) {
-        for row in rows.iter() {
+    for (measure, rows) in families {
+        let m = measure.name();
+        for row in rows {
             let n = format!("{}+{}", row.n.0, row.n.1);
             let interim = if row.interim() { " (interim)" } else { "" };
             match &row.found {
@@ -211,16 +251,85 @@ fn estimates_table(families: &[&Vec<Row>], md: &mut String) {
                     );
                 }
                 Some(f) => {
-                    let (s, (a12, ai)) = (&f.shift, &f.a12);
+                    let (a12, ai) = &f.a12;
                     let _ = writeln!(
                         md,
-                        "| {} | {} | {m} | {n}{interim} | {:.3} | {:.3} | {:+.3} [{:+.3}, {:+.3}] | {a12:.2} [{:.2}, {:.2}] |",
-                        row.a, row.b, f.medians.0, f.medians.1, s.estimate, s.interval.low,
-                        s.interval.high, ai.low, ai.high
+                        "| {} | {} | {m} | {n}{interim} | {} | {a12:.2} [{:.2}, {:.2}] |",
+                        row.a,
+                        row.b,
+                        medians_and_shift(f, *measure),
+                        ai.low,
+                        ai.high
                     );
                 }
             }
         }
+    }
+    md.push('\n');
+}
+
+/// The exploratory comparisons on the primary measure (`family::exploratory`): attention from
+/// scratch against each other brain from scratch, beside the frozen module's shift over the
+/// same brain (`nine`, family 9), so that the share of that lead which attention alone
+/// already has can be read. Chosen after the data; raw p, no correction, no verdict.
+fn exploratory_table(rows: &[Row], nine: &[Row], md: &mut String) {
+    if rows.is_empty() {
+        return;
+    }
+    let m = Measure::Velocity(ValidationSet::Unseen);
+    let _ = writeln!(
+        md,
+        "### Exploratory, not in the plan: attention against the other brains, both from scratch\n\n\
+         Chosen after the data (a reviewer's check): attention evolved from scratch against each \
+         other brain evolved from scratch, beside the frozen module's lead over the same brain \
+         (family 9), to show how much of that lead attention alone already has. Measure: {} \
+         (the primary); p: two-sided Mann-Whitney U of the comparison alone, not corrected and \
+         in no family, so no verdict is drawn; shift and A12 as above.\n",
+        m.name()
+    );
+    let _ = writeln!(
+        md,
+        "| A | B | n | median A | median B | shift [CI] | A12 [CI] | p (raw) | frozen - B (family 9) |\n|---|---|---|---|---|---|---|---|---|"
+    );
+    let d = decimals(m);
+    for row in rows {
+        let n = format!("{}+{}", row.n.0, row.n.1);
+        let frozen = nine
+            .iter()
+            .find(|r| r.a == "frozen" && r.b == row.b)
+            .and_then(|r| r.found.as_ref())
+            .map_or("-".to_string(), |f| {
+                let s = &f.shift;
+                format!(
+                    "{:+.d$} [{:+.d$}, {:+.d$}]",
+                    s.estimate, s.interval.low, s.interval.high
+                )
+            });
+        let Some(f) = &row.found else {
+            let _ = writeln!(
+                md,
+                "| {} | {} | {n} | - | - | not yet | - | - | {frozen} |",
+                row.a, row.b
+            );
+            continue;
+        };
+        let interim = if row.interim() { " (interim)" } else { "" };
+        let (a12, ai) = &f.a12;
+        let (u, _, _) = f.test.as_ref().expect("tested");
+        let method = match u.method {
+            Method::Exact => "e",
+            Method::Normal => "n",
+        };
+        let _ = writeln!(
+            md,
+            "| {} | {} | {n}{interim} | {} | {a12:.2} [{:.2}, {:.2}] | {:.4} {method} | {frozen} |",
+            row.a,
+            row.b,
+            medians_and_shift(f, m),
+            ai.low,
+            ai.high,
+            u.p
+        );
     }
     md.push('\n');
 }

@@ -1,11 +1,13 @@
 //! The figures of a body-search group: the best training fitness and the QD-score against
 //! evaluations (median and quartiles over the finished runs of each condition), box plots of
 //! the final measures (the tested ones with their tests written under them), and a picture
-//! of every run's final best body, condition by condition, drawn from the run files.
+//! of every run's final best body, condition by condition, drawn from the run files, under
+//! the pretrained module on its own body for reference (validated here as `vsr validate`
+//! does, on the same set).
 
 use super::family::Row;
 use super::measures::{series, Condition, Measure};
-use crate::experiment::{CodesignRun, ValidationSet};
+use crate::experiment::{validate_on, Best, CodesignRun, ValidationSet};
 use crate::study::report::figures::{band, box_of, BodyPicture, BodyRow, Figure, Plot};
 use crate::study::report::{push_lines, Report};
 use std::fmt::Write;
@@ -31,7 +33,7 @@ pub(super) fn figures(
                 &series(&runs, step, qd),
             )
         });
-        push_lines(
+        let figure = push_lines(
             r,
             format!("codesign-{name}-{file}.svg"),
             format!("body search {name}: {what} against evaluations"),
@@ -39,6 +41,16 @@ pub(super) fn figures(
             what,
             bands.collect(),
         );
+        if let (Some(figure), false) = (figure, qd) {
+            figure.notes = vec![
+                "training fitness overstates speed: it is measured on the training terrains, and the line is"
+                    .into(),
+                format!(
+                    "the archive's best, a maximum over bodies; the tests compare the unseen mean ({})",
+                    format_args!("codesign-{name}-unseen.svg")
+                ),
+            ];
+        }
     }
     let untested = [Measure::Velocity(ValidationSet::Paper), Measure::Coverage];
     let all = tested
@@ -116,16 +128,31 @@ fn note(row: &Row) -> String {
     }
 }
 
-/// Every planned run's final best body, a row per condition; a run not finished shows its
-/// seed only.
+/// Every planned run's final best body, a row per condition, sorted by its `unseen` mean
+/// (fastest first; a run not validated, then one not finished, after, by seed: a run not
+/// finished shows its seed only), under the pretrained module on its own body.
 fn bodies(name: &str, conditions: &[Condition], r: &mut Report) {
-    let rows: Vec<BodyRow> = conditions
-        .iter()
-        .map(|c| BodyRow {
-            label: format!("{} ({} of {})", c.name, c.finished().count(), c.planned),
-            bodies: c
-                .all
-                .iter()
+    let unseen = ValidationSet::Unseen;
+    let mut rows: Vec<BodyRow> = module_row(conditions, unseen).into_iter().collect();
+    let reference = !rows.is_empty();
+    rows.extend(conditions.iter().map(|c| {
+        let mut runs: Vec<_> = c.all.iter().collect();
+        // Stable: equal keys keep seed order.
+        runs.sort_by(|(_, a), (_, b)| {
+            let key = |d: &crate::study::campaign::results::CodesignData| {
+                (
+                    d.run.is_none(),
+                    -d.validation_mean(unseen).unwrap_or(f64::NEG_INFINITY),
+                )
+            };
+            let ((ra, va), (rb, vb)) = (key(a), key(b));
+            ra.cmp(&rb).then(va.total_cmp(&vb))
+        });
+        BodyRow {
+            label: c.name.clone(),
+            note: format!("{} of {} runs finished", c.finished().count(), c.planned),
+            bodies: runs
+                .into_iter()
                 .map(|(spec, d)| match &d.run {
                     None => BodyPicture {
                         rows: String::new(),
@@ -133,26 +160,60 @@ fn bodies(name: &str, conditions: &[Condition], r: &mut Report) {
                     },
                     Some(run) => BodyPicture {
                         rows: run.best.shape.to_rows(),
-                        caption: match d.validation_mean(ValidationSet::Unseen) {
+                        caption: match d.validation_mean(unseen) {
                             Some(v) => format!("s{}: {v:.2}", spec.seed),
                             None => format!("s{}: not validated", spec.seed),
                         },
                     },
                 })
                 .collect(),
-        })
-        .collect();
+        }
+    }));
     let file = format!("codesign-{name}-bodies.svg");
     let _ = writeln!(r.markdown, "![the final best body of every run]({file})\n");
+    let mut notes = vec![
+        "under each body: its run's seed and its mean velocity on the 10 unseen terrains (m/s); each brain's row".into(),
+        "sorted by that speed, fastest first; \"n of N runs finished\": the brain's runs done, of those planned".into(),
+    ];
+    if reference {
+        notes.push(
+            "top row, for reference: the pretrained module on the body it was evolved on, measured the same way".into(),
+        );
+        notes.push("(its own evolution is not counted in the searches' evaluations)".into());
+    }
     r.figures.push(Figure {
         file,
         title: format!("body search {name}: the final best body of every run"),
         x_label: String::new(),
         y_label: String::new(),
         plot: Plot::Bodies(rows),
-        notes: vec![
-            "under each body: its seed and its mean velocity on the 10 unseen terrains (m/s)"
-                .into(),
-        ],
+        notes,
     });
+}
+
+/// The pretrained module of the group's `frozen` or `finetune` runs (each run file holds it
+/// whole) on its own body, its mean velocity on `set` measured as `vsr validate` measures it
+/// (episodes of the runs' seconds); none when no such run has finished.
+fn module_row(conditions: &[Condition], set: ValidationSet) -> Option<BodyRow> {
+    let run = conditions
+        .iter()
+        .flat_map(|c| c.finished().filter_map(|(_, d)| d.run.as_ref()))
+        .find(|run| run.config.module.is_some())?;
+    let m = run.config.module.as_ref()?;
+    let best = Best::new(m.controller, m.shape.clone(), m.genome.clone(), m.fitness);
+    let caption = match validate_on(&best, set, run.config.seconds) {
+        Ok(v) => format!("own body: {:.2}", v.mean),
+        Err(_) => "own body: unstable".into(),
+    };
+    Some(BodyRow {
+        label: "the module, for reference".into(),
+        note: format!(
+            "{}, seed {}, budget {}",
+            m.controller, m.seed, m.budget_evals
+        ),
+        bodies: vec![BodyPicture {
+            rows: m.shape.to_rows(),
+            caption,
+        }],
+    })
 }
