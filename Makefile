@@ -1,6 +1,9 @@
 # VSR Playground: the two commands of the README, and their parts.
 #   make run         install what is missing, build the page, serve it at http://127.0.0.1:8080
 #   make test        install what is missing (and chromium), then every check and test
+#   make site        the page as one folder for any static web server, at any sub-path, offline
+#                    after the first visit: target/site (scripts/site.mjs; docs/teaching.md says
+#                    how a teacher puts it online; .github/workflows/pages.yml publishes it)
 #   make test-cluster  the campaign recipes from a bare folder: GNU parallel, and Slurm on a
 #                      single-node Slurm started here (scripts/slurm-local.sh; needs root)
 #   make test-python the Python package (python/): wheel, install, pytest (docs/python.md)
@@ -18,7 +21,7 @@ WASM_PACK_BUILD := wasm-pack build --release --target web --out-dir www/pkg --ou
 .NOTPARALLEL:
 
 .PHONY: run test setup setup-test wasm serve lint test-native test-wasm test-web test-cluster \
-	test-parallel test-slurm test-python test-python-install test-browsers bench-wasm bench-python web-package
+	test-parallel test-slurm test-python test-python-install test-browsers bench-wasm bench-python web-package site
 
 run: setup wasm serve
 
@@ -36,6 +39,11 @@ wasm:
 
 serve:
 	PORT=$(PORT) node scripts/serve.mjs
+
+## The site: the page, its wasm core, the pretrained modules, the study files it shows and the
+## guides it links (as web pages), in one folder with relative addresses (target/site).
+site: setup wasm
+	node scripts/site.mjs
 
 lint:
 	cargo fmt --all --check

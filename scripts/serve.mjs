@@ -5,17 +5,21 @@
  * HEAD only. The repository's pretrained/ run files are also served, read-only, at
  * /pretrained/ (the page lists them from /pretrained/manifest.json), without a copy; so
  * are its docs/ at /docs/ (the page links the study's results) and study/ at /study/ (the
- * page shows the study's figures and walks its runs' bests).
+ * page shows the study's figures and walks its runs' bests). A guide asked as /docs/NAME.html is
+ * rendered from docs/NAME.md (scripts/docs-html.mjs, as `make site` renders it), and the npm
+ * libraries the page uses are served from node_modules/ at /vendor/ (VENDOR; `make site` copies
+ * them). `make site` (scripts/site.mjs) builds the same page as a folder any static server hosts.
  *
  *   node scripts/serve.mjs          # http://127.0.0.1:8080, or PORT=9000 node ...
  *
  * Also importable: `serve({ root, port: 0 })` gives a free port for tests.
  */
 import { createReadStream } from 'node:fs';
-import { stat } from 'node:fs/promises';
+import { readFile, stat } from 'node:fs/promises';
 import { createServer } from 'node:http';
 import path from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
+import { isGuide, renderDoc } from './docs-html.mjs';
 
 const HERE = path.dirname(fileURLToPath(import.meta.url));
 /** The folder served by default. */
@@ -25,6 +29,11 @@ export const MOUNTS = Object.freeze({
   '/pretrained/': path.resolve(HERE, '..', 'pretrained'),
   '/docs/': path.resolve(HERE, '..', 'docs'), // the study's results, linked from the page
   '/study/': path.resolve(HERE, '..', 'study'), // the study's figures, runs and table of runs
+});
+
+/** The npm libraries the page imports, by the address it imports them at, and the file each is. */
+export const VENDOR = Object.freeze({
+  '/vendor/uqr.js': path.resolve(HERE, '..', 'node_modules', 'uqr', 'dist', 'index.mjs'), // QR codes (the class challenge)
 });
 
 /** Content types by file extension. */
@@ -43,6 +52,17 @@ const MIME = {
   '.md': 'text/plain; charset=utf-8',
   '.csv': 'text/csv; charset=utf-8',
 };
+
+/** The headers of every answer. */
+const HEADERS = Object.freeze({
+  'cache-control': 'no-store',
+  // Cross-origin isolation: finer performance.now() in the worker (the engine-speed
+  // figure) and SharedArrayBuffer for later multi-worker runs. Everything is same-origin.
+  'cross-origin-opener-policy': 'same-origin',
+  'cross-origin-embedder-policy': 'require-corp',
+  // Other origins may load these files (an embedded <vsr-robot> from this server).
+  'access-control-allow-origin': '*',
+});
 
 /**
  * Starts serving `root` (and `mounts`) on 127.0.0.1.
@@ -84,10 +104,21 @@ async function handle(root, mounts, req, res) {
     res.writeHead(400, { 'content-type': 'text/plain' }).end(`bad request: ${req.url}`);
     return;
   }
-  const prefix = Object.keys(mounts).find((p) => urlPath.startsWith(p));
+  const guide = /^\/docs\/([^/]+)\.html$/.exec(urlPath);
+  if (guide && mounts['/docs/'] && isGuide(`docs/${guide[1]}.md`)) {
+    const md = await readFile(path.join(mounts['/docs/'], `${guide[1]}.md`), 'utf8').catch(() => null);
+    if (md !== null) {
+      const html = renderDoc(`docs/${guide[1]}.md`, md, { inSite: (file) => file.startsWith('docs/') || file.startsWith('study/') || file.startsWith('pretrained/') });
+      res.writeHead(200, { ...HEADERS, 'content-type': MIME['.html'], 'content-length': Buffer.byteLength(html) });
+      res.end(req.method === 'HEAD' ? undefined : html);
+      return;
+    }
+  }
+  const vendored = VENDOR[/** @type {keyof typeof VENDOR} */ (urlPath)];
+  const prefix = vendored ? undefined : Object.keys(mounts).find((p) => urlPath.startsWith(p));
   const base = prefix ? mounts[prefix] : root;
-  let file = path.resolve(base, '.' + (prefix ? urlPath.slice(prefix.length - 1) : urlPath));
-  if (file !== base && !file.startsWith(base + path.sep)) {
+  let file = vendored ?? path.resolve(base, '.' + (prefix ? urlPath.slice(prefix.length - 1) : urlPath));
+  if (!vendored && file !== base && !file.startsWith(base + path.sep)) {
     res.writeHead(403).end('forbidden');
     return;
   }
@@ -101,15 +132,9 @@ async function handle(root, mounts, req, res) {
     return;
   }
   res.writeHead(200, {
-    'content-type': MIME[/** @type {keyof MIME} */ (path.extname(file).toLowerCase())] ?? 'application/octet-stream',
+    ...HEADERS,
+    'content-type': MIME[/** @type {keyof MIME} */ (path.extname(vendored ? 'vendored.js' : file).toLowerCase())] ?? 'application/octet-stream',
     'content-length': info.size,
-    'cache-control': 'no-store',
-    // Cross-origin isolation: finer performance.now() in the worker (the engine-speed
-    // figure) and SharedArrayBuffer for later multi-worker runs. Everything is same-origin.
-    'cross-origin-opener-policy': 'same-origin',
-    'cross-origin-embedder-policy': 'require-corp',
-    // Other origins may load these files (an embedded <vsr-robot> from this server).
-    'access-control-allow-origin': '*',
   });
   if (req.method === 'HEAD') res.end();
   else createReadStream(file).pipe(res);

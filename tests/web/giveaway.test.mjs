@@ -145,7 +145,7 @@ test('the lesson plan, chapter 8 and docs/teaching.md say the same about a run\'
   const doc = /** @type {any} */ ({ createElement: (/** @type {string} */ tag) => { const el = { tag }; made.push(el); return el; } });
   const nodes = lessonPlanNodes(doc);
   const link = nodes.find((n) => typeof n !== 'string');
-  assert.deepEqual(link, { tag: 'a', href: 'docs/teaching.md', target: '_blank', rel: 'noopener', textContent: GUIDE.text });
+  assert.deepEqual(link, { tag: 'a', href: 'docs/teaching.html', target: '_blank', rel: 'noopener', textContent: GUIDE.text });
   assert.ok(existsSync(path.join(ROOT, GUIDE.href)), 'the guide is where the link points (served at /docs/)');
   assert.equal(nodes.map((n) => (typeof n === 'string' ? n : n.textContent)).join(''), lessonPlan(), 'the link\'s words are the plan\'s');
 });

@@ -40,8 +40,11 @@ export function stepWords(step) {
   return `${n > 0 ? `chapter ${n} (${step.what})` : step.what}, ${step.minutes} min`;
 }
 
-/** The teachers' guide, served with the page (scripts/serve.mjs serves docs/ at /docs/), relative to the page, and its words. */
-export const GUIDE = { href: 'docs/teaching.md', text: 'The teachers\' guide (teaching.md)', after: ' has this plan with what students see in each chapter.' };
+/**
+ * The teachers' guide, docs/teaching.md as a web page (rendered by `make site`, and by
+ * scripts/serve.mjs for /docs/teaching.html), relative to the page, and its words.
+ */
+export const GUIDE = { href: 'docs/teaching.html', text: 'The teachers\' guide (teaching.md)', after: ' has this plan with what students see in each chapter.' };
 
 /** The plan in one paragraph, for the answer keys' sheet, up to the guide. */
 function planWords() {

@@ -139,7 +139,7 @@ export function fillResults(box, show) {
   more.className = 'explain';
   more.append('Every number, every test and what the paper reported beside it: ');
   const link = doc.createElement('a');
-  link.href = 'docs/RESULTS.md';
+  link.href = 'docs/RESULTS.html';
   link.target = '_blank';
   link.rel = 'noopener';
   link.textContent = 'the researchers\' account';

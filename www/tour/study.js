@@ -10,49 +10,12 @@ import { withStats } from '../classroom/simple-words.js';
 import { fetchOk, messageOf } from '../kit.js';
 import { shortLabel, unseenWords } from '../module-names.js';
 import { CLAIM_TABLE, FIGURES, STUDY_DIR, TABLES, figureSrc } from './figures.js';
+import { parseCampaign, runsOf } from './study-runs.js';
 import { fillClaim, loadClaim } from './claim.js';
 import { lineageNote } from './lineage.js';
 import { count } from '../format.js';
 
-/**
- * @typedef {object} StudyRun  a row of the campaign table
- * @property {string} run  its name (its run file is study/runs/<run>.json)
- * @property {string} kind @property {string} shape @property {string} controller
- * @property {number} evals  its budget @property {number} evaluations  what it took (a run finishes its last generation)
- * @property {number} seed @property {string} source
- * @property {number} unseen  mean speed of its best over the ten unseen test terrains (m/s)
- * @property {string} table  the table it is a row of (figures.js: TABLES, CLAIM_TABLE)
- */
-
-/**
- * The runs of a campaign table (CSV with a header row; no quoted commas in it).
- * @param {string} text @param {string} table  its name @returns {StudyRun[]}
- */
-export function parseCampaign(text, table) {
-  const [head, ...lines] = text.trim().split('\n');
-  const names = head.split(',');
-  const col = (/** @type {string} */ name) => names.indexOf(name);
-  const at = { run: col('run'), kind: col('kind'), shape: col('shape'), controller: col('controller'), evals: col('evals'),
-    evaluations: col('evaluations'), seed: col('seed'), source: col('source'), unseen: col('unseen_mean') };
-  if (Object.values(at).some((i) => i < 0)) throw new Error('the study\'s table of runs lacks a column');
-  return lines.map((line) => {
-    const v = line.split(',');
-    return { run: v[at.run], kind: v[at.kind], shape: v[at.shape], controller: v[at.controller], evals: Number(v[at.evals]),
-      evaluations: Number(v[at.evaluations]), seed: Number(v[at.seed]), source: v[at.source], unseen: Number(v[at.unseen]), table };
-  });
-}
-
-/**
- * The runs a figure is drawn from (rows of its table), the fastest first within each filter.
- * @param {import('./figures.js').StudyFigure} figure @param {StudyRun[]} runs @returns {StudyRun[]}
- */
-export function runsOf(figure, runs) {
-  const table = figure.table ?? TABLES[0];
-  return figure.runs.flatMap((f) => runs.filter((r) => r.table === table && r.kind === f.kind && r.shape === f.shape && r.evals === f.evals
-    && (!f.controllers || f.controllers.includes(r.controller)) && (!f.source || r.source.startsWith(f.source)))
-    .sort((a, b) => (f.controllers ? f.controllers.indexOf(a.controller) - f.controllers.indexOf(b.controller) : 0)
-      || b.unseen - a.unseen));
-}
+/** @typedef {import('./study-runs.js').StudyRun} StudyRun  a row of the campaign table */
 
 /** The runs of one of the study's tables, fetched. @param {string} name @returns {Promise<StudyRun[]>} */
 async function table(name) {
