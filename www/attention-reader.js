@@ -7,6 +7,7 @@
  * panel; the page highlights that voxel on the robot while the reader is open.
  */
 import { attentionColour } from './attention.js';
+import { byId } from './dom.js';
 import { ATTENTION_FLOATS, SENSOR_NAMES } from './protocol.js';
 import { decimal, signed } from './format.js';
 
@@ -27,11 +28,10 @@ export class AttentionReader {
    * @param {(voxel: number) => void} highlight marks the voxel on the robot (-1: none)
    */
   constructor(doc, highlight) {
-    const el = (/** @type {string} */ id) => /** @type {any} */ (doc.getElementById(id));
-    this.section = /** @type {HTMLElement} */ (el('attention-reader'));
-    this.title = /** @type {HTMLElement} */ (el('attention-reader-title'));
-    this.hover = /** @type {HTMLElement} */ (el('attention-hover'));
-    this.terms = /** @type {HTMLElement} */ (el('attention-terms'));
+    this.section = byId(doc, 'attention-reader');
+    this.title = byId(doc, 'attention-reader-title');
+    this.hover = byId(doc, 'attention-hover');
+    this.terms = byId(doc, 'attention-terms');
     this.highlight = highlight;
     /** @type {Choice} */
     this.choice = null;
@@ -39,8 +39,8 @@ export class AttentionReader {
     this.pointed = null;
     /** @type {HTMLTableCellElement[]} */
     this.cells = [];
-    this.buildTable(/** @type {HTMLTableElement} */ (el('attention-matrix')));
-    el('attention-reader-close').addEventListener('click', () => this.close());
+    this.buildTable(byId(doc, 'attention-matrix', HTMLTableElement));
+    byId(doc, 'attention-reader-close', HTMLButtonElement).addEventListener('click', () => this.close());
   }
 
   /** @param {HTMLTableElement} table */
@@ -55,7 +55,7 @@ export class AttentionReader {
       const th = doc.createElement('th');
       th.scope = 'col';
       th.textContent = name;
-      th.title = `key: ${name}, ${SENSES[/** @type {keyof SENSES} */ (name)]}`;
+      th.title = `key: ${name}, ${SENSES[/** @type {keyof typeof SENSES} */ (name)]}`;
       head.append(th);
     }
     const body = table.createTBody();
@@ -64,7 +64,7 @@ export class AttentionReader {
       const th = doc.createElement('th');
       th.scope = 'row';
       th.textContent = name;
-      th.title = `query: ${name}, ${SENSES[/** @type {keyof SENSES} */ (name)]}`;
+      th.title = `query: ${name}, ${SENSES[/** @type {keyof typeof SENSES} */ (name)]}`;
       tr.append(th);
       for (let c = 0; c < SIDE; c++) {
         const td = tr.insertCell();

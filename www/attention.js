@@ -41,7 +41,7 @@ export class AttentionPanel {
     this.section = section;
     this.canvas = canvas;
     this.ctx = /** @type {CanvasRenderingContext2D} */ (canvas.getContext('2d'));
-    /** Voxel grid cells, 2 per voxel (column, row from the bottom). */
+    /** Voxel grid cells, 2 per voxel (column, row from the bottom). @type {Uint32Array} */
     this.cells = new Uint32Array(0);
     this.columns = 0;
     this.rows = 0;

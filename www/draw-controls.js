@@ -6,6 +6,7 @@
  * field, until the field holds rows again). Each change of the drawing is handed to the page
  * (`changed`), none while a run uses the robot.
  */
+import { byId } from './dom.js';
 import { Drawing } from './drawing.js';
 import { TypedField } from './typed-field.js';
 
@@ -17,8 +18,7 @@ import { TypedField } from './typed-field.js';
  * @param {{changed: () => void, running: () => boolean}} hooks
  */
 export function wireDrawControls(doc, defaults, drawing, editor, hooks) {
-  const el = (/** @type {string} */ id) => /** @type {any} */ (doc.getElementById(id));
-  const presetSelect = /** @type {HTMLSelectElement} */ (el('preset'));
+  const presetSelect = byId(doc, 'preset', HTMLSelectElement);
   const redraw = () => { editor.draw(); hooks.changed(); };
   for (const p of defaults.presets) presetSelect.append(new Option(p.name, p.rows));
   presetSelect.addEventListener('change', () => {
@@ -28,12 +28,13 @@ export function wireDrawControls(doc, defaults, drawing, editor, hooks) {
   });
   const undo = () => { if (!hooks.running() && drawing.undo()) redraw(); };
   const redo = () => { if (!hooks.running() && drawing.redo()) redraw(); };
-  el('undo').addEventListener('click', undo);
-  el('redo').addEventListener('click', redo);
-  el('clear').addEventListener('click', () => { drawing.clear(); redraw(); });
-  el('erase').addEventListener('click', () => {
+  byId(doc, 'undo', HTMLButtonElement).addEventListener('click', undo);
+  byId(doc, 'redo', HTMLButtonElement).addEventListener('click', redo);
+  byId(doc, 'clear', HTMLButtonElement).addEventListener('click', () => { drawing.clear(); redraw(); });
+  const erase = byId(doc, 'erase', HTMLButtonElement);
+  erase.addEventListener('click', () => {
     editor.erase = !editor.erase;
-    el('erase').setAttribute('aria-pressed', String(editor.erase));
+    erase.setAttribute('aria-pressed', String(editor.erase));
   });
   doc.addEventListener('keydown', (e) => {
     const typing = e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement;
@@ -54,7 +55,7 @@ export function wireDrawControls(doc, defaults, drawing, editor, hooks) {
  */
 export function rowsField(doc, drawing, editor, messages, changed) {
   const rows = (/** @type {string} */ text) => text.trim() || '0'; // nothing typed: an empty drawing
-  return new TypedField(/** @type {HTMLInputElement} */ (doc.getElementById('rows')), messages, {
+  return new TypedField(byId(doc, 'rows', HTMLInputElement), messages, {
     problem: (text) => new Drawing(drawing.width, drawing.height).setRows(rows(text)),
     use: (text) => { drawing.setRows(rows(text)); editor.draw(); changed(); },
   });

@@ -7,6 +7,7 @@
  * are the same measure: the centre's forward distance over the time it took (as fitness,
  * over a window). Only an attention brain can be frozen.
  */
+import { byId } from './dom.js';
 import { decimal, NONE } from './format.js';
 /** Seconds of walking before the freeze that its "before" speed is measured over. */
 export const BEFORE_WINDOW_S = 5;
@@ -22,8 +23,8 @@ export class FreezeControl {
    * @param {(frozen: boolean) => void} send asks the simulation worker to freeze or release
    */
   constructor(doc, send) {
-    this.button = /** @type {HTMLButtonElement} */ (doc.getElementById('freeze-attention'));
-    this.report = /** @type {HTMLElement} */ (doc.getElementById('freeze-report'));
+    this.button = byId(doc, 'freeze-attention', HTMLButtonElement);
+    this.report = byId(doc, 'freeze-report');
     this.send = send;
     /** Recent samples, the last {@link BEFORE_WINDOW_S} s. @type {Sample[]} */
     this.recent = [];

@@ -113,7 +113,7 @@ export class Keeper {
     if (fromLink && 'state' in fromLink) {
       refused = await this.hooks.apply(fromLink.state);
       shown = refused === '';
-    } else if (fromLink) {
+    } else if (fromLink && 'error' in fromLink) {
       refused = fromLink.error;
     }
     const kept = loadKept();

@@ -10,6 +10,7 @@
 import { lostInLink, whyNoFinetune } from './brain.js';
 import { ready } from './core.js';
 import { rowsField, wireDrawControls } from './draw-controls.js';
+import { byId } from './dom.js';
 import { Drawing } from './drawing.js';
 import { Editor } from './editor.js';
 import { Keeper } from './keeper.js';
@@ -37,8 +38,7 @@ import { Tour } from './tour/tour.js';
 import { Viewer } from './viewer.js';
 import { editWalking } from './walking-edit.js';
 
-const el = (/** @type {string} */ id) => /** @type {any} */ (document.getElementById(id));
-const messages = new MessageBox(el('message'), el('shape-message'));
+const messages = new MessageBox(byId(document, 'message'), byId(document, 'shape-message'));
 const defaults = await ready.catch((error) => {
   messages.show(`The simulator could not load: ${messageOf(error)}`);
   throw error;
@@ -50,7 +50,7 @@ const defaults = await ready.catch((error) => {
  */
 const showMessage = (text, source) => messages.show(text, 'error', source);
 const drawing = new Drawing(defaults.grid.width, defaults.grid.height);
-const controllerSelect = /** @type {HTMLSelectElement} */ (el('controller'));
+const controllerSelect = byId(document, 'controller', HTMLSelectElement);
 
 // The parts call the robot only once the page runs, after it is made below.
 /** @type {Robot} */
@@ -59,7 +59,7 @@ let robot;
 let follower;
 /** @type {Challenge | null} a challenge link's rules, checked as the student draws (made below) */
 let challenge = null;
-const editor = new Editor(el('editor'), drawing, {
+const editor = new Editor(byId(document, 'editor', HTMLCanvasElement), drawing, {
   onPaint: () => robot.updateCheck(),
   onStroke: () => robot.bodyChanged(),
   onLocked: () => messages.show('A run is using this robot: pause or stop it to edit the drawing.', 'note'),
@@ -70,7 +70,9 @@ const viewer = new Viewer(document, {
   clicked: (pick) => editWalking(robot, pick),
   missed: () => messages.show('Click a voxel to remove it, or a spot right next to one (its own width away at most) to add one there.', 'note'),
 });
-const keeper = new Keeper(defaults, { link: el('share-link'), button: el('share') }, {
+const keeper = new Keeper(defaults, {
+  link: byId(document, 'share-link', HTMLInputElement), button: byId(document, 'share', HTMLButtonElement),
+}, {
   state: () => pageState(robot),
   apply: (state) => robot.restore(state),
   shown: () => `${drawing.rows()} (${robot.check.voxels} voxels) driven by ${robot.brain ? robot.brain.label : 'the phase gait'}`,
@@ -78,7 +80,7 @@ const keeper = new Keeper(defaults, { link: el('share-link'), button: el('share'
   lost: () => lostInLink(robot?.brain ?? null),
   say: (text, kind = 'error') => messages.show(text, kind),
 });
-const speedNote = new SpeedNote(el('speed-note'), new Measurer(defaults.viewNoiseSeed));
+const speedNote = new SpeedNote(byId(document, 'speed-note'), new Measurer(defaults.viewNoiseSeed));
 const modules = new ModuleList(document, {
   loadOnto: (module) => robot.loadModule(module),
   openOwn: (module) => robot.openModule(module),
@@ -102,15 +104,15 @@ const runs = new RunPanel(document, defaults, {
   message: showMessage,
   note: (text) => messages.show(text, 'note'),
 });
-const estimate = new RunEstimate(/** @type {HTMLElement} */ (document.getElementById('run-estimate')), runs.form, () => runs.pace, () => drawing.rows(), defaults.quick,
+const estimate = new RunEstimate(byId(document, 'run-estimate'), runs.form, () => runs.pace, () => drawing.rows(), defaults.quick,
   () => runs.compare.checked);
 runs.compare.addEventListener('change', () => estimate.refresh());
 const rows = rowsField(document, drawing, editor, messages, () => robot.bodyChanged());
 robot = new Robot(document, { defaults, drawing, editor, viewer, messages, speedNote, runs, rows,
   keep: () => { keeper.schedule(); challenge?.watch(drawing.rows()); } });
 follower = new RunFollower(robot, modules, () => runs.mode === 'finetune');
-messages.place('codesign', el('codesign-message')); // the body search's problems, under its buttons
-messages.place('watch', el('watch-message')); // what a click in the gallery did, above the robot it brought
+messages.place('codesign', byId(document, 'codesign-message')); // the body search's problems, under its buttons
+messages.place('watch', byId(document, 'watch-message')); // what a click in the gallery did, above the robot it brought
 const bodySearch = new CodesignPanel(document, {
   body: () => ({ rows: drawing.rows(), ok: robot.check.ok, message: robot.check.message }),
   module: () => modules.selected(),
@@ -127,7 +129,7 @@ const bodySearch = new CodesignPanel(document, {
       'note', 'watch');
     }
     // The robot in view, with the note just above it (on a phone the top of the page is far away).
-    el(replaced ? 'watch-message' : 'scene').scrollIntoView({ block: replaced ? 'start' : 'nearest', behavior: 'instant' });
+    byId(document, replaced ? 'watch-message' : 'scene').scrollIntoView({ block: replaced ? 'start' : 'nearest', behavior: 'instant' });
   },
   race: (racers) => {
     race.clear();
@@ -139,7 +141,7 @@ const bodySearch = new CodesignPanel(document, {
 });
 /** The body search's brain, in words, before it starts. */
 function searchBrain() {
-  const kind = el('codesign-brain').value;
+  const kind = byId(document, 'codesign-brain', HTMLSelectElement).value;
   if (kind === 'scratch') return `a new ${controllerSelect.value} brain, evolved from scratch with the body`;
   const option = modules.select.selectedOptions[0];
   if (!option?.value) return 'no module chosen yet (under “3 · Give it a brain”)';
@@ -150,8 +152,9 @@ function searchBrain() {
     : `${name}, ${kind === 'frozen' ? 'its attention kept' : 'every gene evolving from it'}`;
 }
 // The body search's estimate: its start body (the module's own once it is described; else the drawing stands for it).
-const startRows = () => ({ box: BOX, module: modules.info?.shape ?? drawing.rows() })[el('codesign-from').value] ?? drawing.rows();
-new SearchEstimate(el('codesign-estimate'), () => ({ evaluations: Number(el('codesign-budget').value), seconds: Number(el('codesign-seconds').value),
+const startRows = () => ({ box: BOX, module: modules.info?.shape ?? drawing.rows() })[byId(document, 'codesign-from', HTMLSelectElement).value] ?? drawing.rows();
+new SearchEstimate(byId(document, 'codesign-estimate'), () => ({ evaluations: Number(byId(document, 'codesign-budget', HTMLInputElement).value),
+  seconds: Number(byId(document, 'codesign-seconds', HTMLInputElement).value),
   rows: startRows(), workers: Number(runs.inputs.workers.value) || 1, running: bodySearch.running,
   brain: searchBrain() }), () => estimate.currentPace());
 
@@ -168,8 +171,12 @@ function wire() {
   });
   for (const c of defaults.controllers) controllerSelect.append(new Option(c));
   controllerSelect.addEventListener('change', () => robot.controllerChosen());
-  el('share').addEventListener('click', () => keeper.share());
-  el('glossary-open').addEventListener('click', () => { el('glossary').open = true; el('glossary').scrollIntoView({ behavior: 'smooth' }); });
+  byId(document, 'share').addEventListener('click', () => keeper.share());
+  byId(document, 'glossary-open').addEventListener('click', () => {
+    const glossary = byId(document, 'glossary', HTMLDetailsElement);
+    glossary.open = true;
+    glossary.scrollIntoView({ behavior: 'smooth' });
+  });
   for (const input of Object.values(runs.inputs)) input.addEventListener('change', () => keeper.schedule());
   viewer.terrain.listen(terrainChanged);
   runs.inputs.seconds.addEventListener('change', () => {
@@ -201,7 +208,10 @@ async function start() {
   });
 }
 
-/** The playground as the tour and the study panel set it up (www/tour/): the page's own functions. */
+/**
+ * The playground as the tour and the study panel set it up (www/tour/): the page's own functions.
+ * @type {import('./tour/stage.js').Playground}
+ */
 const playground = {
   defaults,
   running: () => robot.running,
@@ -210,31 +220,25 @@ const playground = {
     const wait = () => (robot.running ? setTimeout(wait, 50) : resolve(undefined));
     wait();
   }),
-  /** @param {string} rows drawn, driven by the phase gait */
   setBody: (rows) => robot.setBody(rows),
-  module: (/** @type {string} */ key, /** @type {string | undefined} */ label, /** @type {string | undefined} */ short) => modules.read(key, label, short),
-  openModule: (/** @type {import('./modules.js').Module} */ module) => robot.openModule(module),
-  loadModule: (/** @type {import('./modules.js').Module} */ module) => robot.loadModule(module),
-  /** @param {string} terrain @param {{frequency: number, phase: number}} gait */
+  module: (key, label, short) => modules.read(key, label, short),
+  openModule: (module) => robot.openModule(module),
+  loadModule: (module) => robot.loadModule(module),
   setView(terrain, gait) {
     viewer.terrain.value = terrain;
     viewer.gait.frequency.value = String(gait.frequency);
     viewer.gait.phase.value = String(gait.phase);
   },
-  /** @param {Record<string, string>} values @param {boolean} compare */
   setRun(values, compare) {
     runs.setValues(values);
     runs.compare.checked = compare;
     keeper.schedule();
   },
-  /** @param {string} kind */
   setController(kind) { controllerSelect.value = kind; return robot.controllerChosen(); },
   wanted: () => viewer.wanted,
   walking: () => viewer.current,
   race,
-  /** @param {{brain: string, from: string}} settings the body search's brain and start body */
   setCodesign: (settings) => bodySearch.setUp(settings),
-  /** @param {boolean} on whether the walk holds when its episode ends (the tour: what is measured is what is seen) */
   holdAtEpisodeEnd: (on) => viewer.holdAtEnd(on),
   quietModules: (on) => modules.quiet(on),
   message: showMessage,
@@ -243,7 +247,7 @@ const lab = new Lab({ defaults, latestRun: () => ({ ...race.run, running: robot.
 const study = new StudyPanel(document, playground);
 study.loaded.then(() => modules.setStudyRuns(study.runs));
 const tour = new Tour(document, playground, study, new Classroom(document, lab));
-fillResults(el('results-plain-body'), (id) => study.show(id));
+fillResults(byId(document, 'results-plain-body'), (id) => study.show(id));
 wireWords(document);
 challenge = new Challenge(document, lab, {
   defaults, rows: () => drawing.rows(), race, message: showMessage, pin: (text) => messages.show(text, 'pinned'),

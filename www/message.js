@@ -49,7 +49,7 @@ export class MessageBox {
    */
   show(words, kind = 'error', source, detail) {
     const sentence = plain(words);
-    if (kind !== 'error') this.clear(kind); // one note, one validation message at a time
+    if (kind !== 'error') this.clear(kind); // one note, one pinned note, one validation message at a time
     if (source) this.drop(source);
     if (sentence === '') return;
     for (const old of this.entries()) {
@@ -88,7 +88,10 @@ export class MessageBox {
     if (kind === 'note') this.timers.set(entry, window.setTimeout(() => this.remove(entry), NOTE_MS));
   }
 
-  /** Takes away the notes or the validation message (errors only go by their close button). @param {'note' | 'validation'} kind */
+  /**
+   * Takes away the notes, the pinned note or the validation message (errors only go by their
+   * close button). @param {Exclude<Kind, 'error'>} kind
+   */
   clear(kind) {
     for (const entry of this.entries()) if (entry.dataset.kind === kind) this.remove(entry);
   }

@@ -43,6 +43,6 @@ export function unseenWords(mean) {
 export function brainWords(condition) {
   const kind = condition.startsWith('scratch-') ? 'scratch' : condition;
   if (!(kind in BRAIN_WORDS)) return { long: `brain (${condition})`, short: condition };
-  const { short } = BRAIN_WORDS[/** @type {keyof BRAIN_WORDS} */ (kind)];
+  const { short } = BRAIN_WORDS[/** @type {keyof typeof BRAIN_WORDS} */ (kind)];
   return kind === 'scratch' ? { long: 'brain from scratch', short } : { long: `module, ${short}`, short: `module, ${short}` };
 }

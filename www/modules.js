@@ -7,6 +7,7 @@
  * the core when read; a bad file shows a message and changes nothing.
  */
 import { describeRun } from './core.js';
+import { byId } from './dom.js';
 import { fetchOk, messageOf } from './kit.js';
 import { keepModules, loadKeptModules } from './storage.js';
 import { SPEED_MARK, bodyWords, brainWords, shortLabel, unseenWords } from './module-names.js';
@@ -38,11 +39,10 @@ export class ModuleList {
   constructor(doc, hooks, attentionGenes, presets = []) {
     this.attentionGenes = attentionGenes;
     this.presets = presets;
-    const el = (/** @type {string} */ id) => /** @type {any} */ (doc.getElementById(id));
-    this.select = /** @type {HTMLSelectElement} */ (el('module'));
-    this.fileInput = /** @type {HTMLInputElement} */ (el('run-import'));
-    this.details = /** @type {HTMLElement} */ (el('module-details'));
-    this.loadButton = /** @type {HTMLButtonElement} */ (el('module-load'));
+    this.select = byId(doc, 'module', HTMLSelectElement);
+    this.fileInput = byId(doc, 'run-import', HTMLInputElement);
+    this.details = byId(doc, 'module-details');
+    this.loadButton = byId(doc, 'module-load', HTMLButtonElement);
     this.hooks = hooks;
     /** Run files already read, by key. @type {Map<string, Module>} */
     this.held = new Map();
@@ -64,8 +64,8 @@ export class ModuleList {
     this.keepWarned = false;
     /** Resolves once the pretrained modules are listed (or could not be). */
     this.listed = new Promise((resolve) => { this.doneListing = resolve; });
-    el('module-load').addEventListener('click', () => this.withSelected(hooks.loadOnto));
-    el('module-open').addEventListener('click', () => this.withSelected(hooks.openOwn));
+    byId(doc, 'module-load', HTMLButtonElement).addEventListener('click', () => this.withSelected(hooks.loadOnto));
+    byId(doc, 'module-open', HTMLButtonElement).addEventListener('click', () => this.withSelected(hooks.openOwn));
     this.select.addEventListener('change', () => this.describe());
     this.fileInput.addEventListener('change', () => this.importFile());
   }

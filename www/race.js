@@ -9,6 +9,7 @@
  * against 50 and see evolution at work). Adding or removing a robot restarts the race.
  */
 import { describeRun, runGenome } from './core.js';
+import { byId } from './dom.js';
 import { downloadCsv } from './export.js';
 import { messageOf } from './kit.js';
 import { Lane, standings, walkedAt } from './race-lane.js';
@@ -40,16 +41,16 @@ export const TABLE_STEP_S = 0.5;
 export class Race {
   /** @param {Document} doc @param {RaceHooks} hooks */
   constructor(doc, hooks) {
-    const el = (/** @type {string} */ id) => /** @type {any} */ (doc.getElementById(id));
     this.hooks = hooks;
-    this.section = /** @type {HTMLElement} */ (el('race-panel'));
-    this.lanesBox = /** @type {HTMLElement} */ (el('race-lanes'));
-    this.status = /** @type {HTMLElement} */ (el('race-status'));
-    this.seconds = /** @type {HTMLInputElement} */ (el('race-seconds'));
-    this.speed = /** @type {HTMLSelectElement} */ (el('race-speed-select'));
-    this.generation = /** @type {HTMLSelectElement} */ (el('race-generation'));
-    this.buttons = { add: el('race-add'), best: el('race-best'), generation: el('race-add-generation'),
-      firstLast: el('race-first-last'), restart: el('race-restart'), clear: el('race-clear'), csv: el('race-csv') };
+    this.section = byId(doc, 'race-panel');
+    this.lanesBox = byId(doc, 'race-lanes');
+    this.status = byId(doc, 'race-status');
+    this.seconds = byId(doc, 'race-seconds', HTMLInputElement);
+    this.speed = byId(doc, 'race-speed-select', HTMLSelectElement);
+    this.generation = byId(doc, 'race-generation', HTMLSelectElement);
+    const button = (/** @type {string} */ id) => byId(doc, id, HTMLButtonElement);
+    this.buttons = { add: button('race-add'), best: button('race-best'), generation: button('race-add-generation'),
+      firstLast: button('race-first-last'), restart: button('race-restart'), clear: button('race-clear'), csv: button('race-csv') };
     /** @type {Lane[]} */
     this.lanes = [];
     /** The current run's best evaluation of every generation, and what it evolved. */
@@ -59,7 +60,7 @@ export class Race {
     this.held = false;
     this.wire();
     this.update();
-    requestAnimationFrame(function loop(/** @type {number} */ now) {
+    requestAnimationFrame(/** @this {Race} @param {number} now */ function loop(now) {
       for (const lane of this.lanes) lane.draw(now);
       this.keepInStep();
       const places = standings(this.lanes.map((l) => l.walked));

@@ -11,6 +11,7 @@
  */
 import { followEdit, ownBody, transplanted } from './brain.js';
 import { checkShape } from './core.js';
+import { byId } from './dom.js';
 import { showGeneCount } from './gene-count.js';
 import { messageOf } from './kit.js';
 import { applyState } from './robot-state.js';
@@ -38,9 +39,9 @@ export class Robot {
   /** @param {Document} doc @param {RobotParts} parts */
   constructor(doc, parts) {
     this.parts = parts;
-    this.el = (/** @type {string} */ id) => /** @type {any} */ (doc.getElementById(id));
-    this.controllerSelect = /** @type {HTMLSelectElement} */ (this.el('controller'));
-    this.presetSelect = /** @type {HTMLSelectElement} */ (this.el('preset'));
+    this.doc = doc;
+    this.controllerSelect = byId(this.doc, 'controller', HTMLSelectElement);
+    this.presetSelect = byId(this.doc, 'preset', HTMLSelectElement);
     /** @type {Brain | null} */
     this.brain = null;
     /** The latest check of the drawing shown (none yet: not a robot). @type {import('./core.js').ShapeCheck} */
@@ -99,7 +100,7 @@ export class Robot {
     const { editor, messages } = this.parts;
     this.check = check ?? UNCHECKED;
     editor.setPieces(check && !check.ok ? check.pieces : null);
-    const status = this.el('shape-status');
+    const status = byId(this.doc, 'shape-status');
     const { status: line, problem } = checkWords(rows, check);
     status.textContent = line;
     if (problem) messages.show(problem, 'validation');
@@ -111,21 +112,21 @@ export class Robot {
 
   /** Says how many genes the chosen family has for this body, and what they are; and what drives the robot. */
   updateParams() {
-    showGeneCount(this.el('param-count'), this.check, this.controllerSelect.value, this.parts.defaults.attentionGenes,
+    showGeneCount(byId(this.doc, 'param-count'), this.check, this.controllerSelect.value, this.parts.defaults.attentionGenes,
       walkingWords(this.brain, this.walkingRows));
-    showWithSpeeds(this.el('driver'), driverWords(this.brain, this.check, this.walkingRows));
+    showWithSpeeds(byId(this.doc, 'driver'), driverWords(this.brain, this.check, this.walkingRows));
   }
 
   updateButtons() {
     const { drawing, runs } = this.parts;
     const running = this.running;
-    this.el('undo').disabled = running || !drawing.canUndo;
-    this.el('redo').disabled = running || !drawing.canRedo;
-    this.el('clear').disabled = running;
+    byId(this.doc, 'undo', HTMLButtonElement).disabled = running || !drawing.canUndo;
+    byId(this.doc, 'redo', HTMLButtonElement).disabled = running || !drawing.canRedo;
+    byId(this.doc, 'clear', HTMLButtonElement).disabled = running;
     this.presetSelect.disabled = running;
     this.parts.rows.input.disabled = running;
-    this.el('module-load').disabled = running || !this.check.ok;
-    this.el('module-open').disabled = running;
+    byId(this.doc, 'module-load', HTMLButtonElement).disabled = running || !this.check.ok;
+    byId(this.doc, 'module-open', HTMLButtonElement).disabled = running;
     runs.update();
   }
 
@@ -179,8 +180,8 @@ export class Robot {
     this.walkingRows = rows;
     speedNote.show(brain, viewer.terrain.value.trim(), seconds, !this.running);
     runs.showWalking(brain?.run === true);
-    this.el('gait').hidden = brain !== null; // its settings drive only a robot with no brain
-    showWithSpeeds(this.el('driver'), driverWords(this.brain, this.check, this.walkingRows));
+    byId(this.doc, 'gait', HTMLDetailsElement).hidden = brain !== null; // its settings drive only a robot with no brain
+    showWithSpeeds(byId(this.doc, 'driver'), driverWords(this.brain, this.check, this.walkingRows));
     this.updateButtons();
   }
 

@@ -10,6 +10,7 @@
  * four with a brain race side by side.
  */
 import { checkTerrain } from '../core.js';
+import { byId } from '../dom.js';
 import { messageOf } from '../kit.js';
 import { terrainRefused } from '../terrain-words.js';
 import { linesOf, rankEntries } from './challenge-entries.js';
@@ -30,23 +31,22 @@ export class Challenge {
   constructor(doc, lab, page) {
     this.lab = lab;
     this.page = page;
-    const el = (/** @type {string} */ id) => /** @type {any} */ (doc.getElementById(id));
-    this.section = /** @type {HTMLElement} */ (el('challenge-panel'));
+    this.section = byId(doc, 'challenge-panel');
     this.teacher = /** @type {HTMLDetailsElement} */ (this.section.querySelector('details.challenge-teacher'));
-    this.rulesLine = /** @type {HTMLElement} */ (el('challenge-rules'));
-    this.form = { terrain: el('challenge-terrain'), seconds: el('challenge-seconds'), voxels: el('challenge-voxels'),
-      fixed: el('challenge-fixed'), budget: el('challenge-budget'), seed: el('challenge-seed') };
-    this.linkOut = /** @type {HTMLInputElement} */ (el('challenge-link'));
-    this.linkBox = /** @type {HTMLElement} */ (el('challenge-link-box'));
-    this.box = /** @type {HTMLTextAreaElement} */ (el('challenge-compare'));
-    this.status = /** @type {HTMLElement} */ (el('challenge-status'));
-    this.table = /** @type {HTMLTableElement} */ (el('challenge-table'));
-    this.rankButton = /** @type {HTMLButtonElement} */ (el('challenge-rank'));
-    this.raceButton = /** @type {HTMLButtonElement} */ (el('challenge-race'));
+    this.rulesLine = byId(doc, 'challenge-rules');
+    this.form = { terrain: byId(doc, 'challenge-terrain', HTMLInputElement), seconds: byId(doc, 'challenge-seconds', HTMLInputElement), voxels: byId(doc, 'challenge-voxels', HTMLInputElement),
+      fixed: byId(doc, 'challenge-fixed', HTMLInputElement), budget: byId(doc, 'challenge-budget', HTMLInputElement), seed: byId(doc, 'challenge-seed', HTMLInputElement) };
+    this.linkOut = byId(doc, 'challenge-link', HTMLInputElement);
+    this.linkBox = byId(doc, 'challenge-link-box');
+    this.box = byId(doc, 'challenge-compare', HTMLTextAreaElement);
+    this.status = byId(doc, 'challenge-status');
+    this.table = byId(doc, 'challenge-table', HTMLTableElement);
+    this.rankButton = byId(doc, 'challenge-rank', HTMLButtonElement);
+    this.raceButton = byId(doc, 'challenge-race', HTMLButtonElement);
     /** The line under the grid that says which rule a student's drawing breaks, while it does. */
-    this.warning = /** @type {HTMLElement} */ (el('rule-warning'));
+    this.warning = byId(doc, 'rule-warning');
     /** The grid, outlined while the drawing breaks the rules (the line under it may be off a phone's screen). */
-    this.grid = /** @type {HTMLElement} */ (el('editor'));
+    this.grid = byId(doc, 'editor');
     /** @type {Entry[]} the placed entries of the last ranking, fastest first */
     this.ranked = [];
     /** @type {Rules | null} the rules of the last ranking */
@@ -58,7 +58,7 @@ export class Challenge {
     this.made = kept.rules;
     /** Whether the last keep failed (said once, not at every key). */
     this.unkept = false;
-    el('challenge-make').addEventListener('click', () => { this.make().catch((error) => this.say(`The challenge link could not be made: ${messageOf(error)}`)); });
+    byId(doc, 'challenge-make', HTMLButtonElement).addEventListener('click', () => { this.make().catch((error) => this.say(`The challenge link could not be made: ${messageOf(error)}`)); });
     this.rankButton.addEventListener('click', () => this.rank());
     this.raceButton.addEventListener('click', () => this.raceBest());
     this.box.addEventListener('input', () => this.keep());

@@ -7,6 +7,8 @@
  * `#...` is the share link's); and {@link withStats} marks a caption's statistics so that the switch can hide them.
  */
 
+import { byId } from '../dom.js';
+
 const KEY = 'vsr-playground/simple-words';
 
 /** A parenthesis that holds a p-value: "(Holm p 0.017)", "(p 0.55; p: see the glossary)". */
@@ -72,20 +74,18 @@ export function withStats(doc, text) {
 
 /** Wires the switch and the glossary links. @param {Document} doc */
 export function wireWords(doc) {
-  const box = /** @type {HTMLInputElement | null} */ (doc.getElementById('simple-words'));
+  const box = byId(doc, 'simple-words', HTMLInputElement);
   const set = (/** @type {boolean} */ on) => {
     if (on) doc.documentElement.dataset.words = 'simple'; else delete doc.documentElement.dataset.words;
   };
-  if (box) {
-    let kept = false;
-    try { kept = localStorage.getItem(KEY) === '1'; } catch { /* storage off: the switch starts off */ }
-    box.checked = kept;
-    set(kept);
-    box.addEventListener('change', () => {
-      set(box.checked);
-      try { localStorage.setItem(KEY, box.checked ? '1' : '0'); } catch { /* not kept */ }
-    });
-  }
+  let kept = false;
+  try { kept = localStorage.getItem(KEY) === '1'; } catch { /* storage off: the switch starts off */ }
+  box.checked = kept;
+  set(kept);
+  box.addEventListener('change', () => {
+    set(box.checked);
+    try { localStorage.setItem(KEY, box.checked ? '1' : '0'); } catch { /* not kept */ }
+  });
   // The address's #... is the share link's, so a link within the page scrolls without changing it.
   doc.addEventListener('click', (event) => {
     const link = /** @type {HTMLElement} */ (event.target)?.closest?.('a.term, a.jump');
@@ -93,8 +93,8 @@ export function wireWords(doc) {
     const entry = doc.getElementById(link.hash.slice(1));
     if (!entry) return;
     event.preventDefault();
-    const glossary = /** @type {HTMLDetailsElement | null} */ (doc.getElementById('glossary'));
-    if (glossary && glossary.contains(entry)) glossary.open = true;
+    const glossary = byId(doc, 'glossary', HTMLDetailsElement);
+    if (glossary.contains(entry)) glossary.open = true;
     entry.scrollIntoView({ block: link.classList.contains('term') ? 'center' : 'start' });
     entry.classList.add('term-shown');
     setTimeout(() => entry.classList.remove('term-shown'), 2000);

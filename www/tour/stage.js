@@ -16,20 +16,20 @@ const WALK_TIMEOUT_MS = 10_000;
  * @property {() => boolean} running                 a run uses the robot
  * @property {() => Promise<void>} stopRun            stops it; resolves once stopped
  * @property {(rows: string) => Promise<void>} setBody  draws rows, driven by the phase gait
- * @property {(key: string, label?: string) => Promise<import('../modules.js').Module>} module  reads and chooses a module
+ * @property {(key: string, label?: string, short?: string) => Promise<import('../modules.js').Module>} module  reads and
+ *   chooses a module (one not listed yet is added under `label`, shown as `short`: modules.js, read)
  * @property {(module: import('../modules.js').Module) => Promise<void>} openModule   on its own body
  * @property {(module: import('../modules.js').Module) => Promise<void>} loadModule   onto the drawn body
  * @property {(terrain: string, gait: {frequency: number, phase: number}) => void} setView
  * @property {(values: Record<string, string>, compare: boolean) => void} setRun
  * @property {(kind: string) => Promise<unknown>} setController
- * @property {() => {shape: string, terrain: string, brain: {controller: string, genome: Float32Array} | null} | null} wanted
- *   the episode the page asked the viewer for last
- * @property {() => {shape: string, terrain: string, brain: {controller: string, genome: Float32Array} | null} | null} walking
- *   the episode the viewer walks now
+ * @property {() => import('../protocol.js').EpisodeParams | null} wanted  the episode the page asked the viewer for last
+ * @property {() => import('../protocol.js').EpisodeParams | null} walking  the episode the viewer walks now
  * @property {import('../race.js').Race} race
  * @property {(settings: {brain: string, from: string}) => void} setCodesign  the body search's brain and start body
  * @property {(on: boolean) => void} quietModules  whether the module list keeps its speeds back (a question waits)
- * @property {(on: boolean) => void} holdAtEpisodeEnd  whether the walk holds when its episode ends
+ * @property {(on: boolean) => void} holdAtEpisodeEnd  whether the walk holds when its episode ends (the tour: what is
+ *   measured is what is seen)
  * @property {(text: string) => void} message
  */
 

@@ -7,6 +7,7 @@
  * becomes a module of the list, so it can also race or be transplanted).
  */
 import { withStats } from '../classroom/simple-words.js';
+import { byId } from '../dom.js';
 import { fetchOk, messageOf } from '../kit.js';
 import { shortLabel, unseenWords } from '../module-names.js';
 import { CLAIM_TABLE, FIGURES, STUDY_DIR, TABLES, figureSrc } from './figures.js';
@@ -39,18 +40,17 @@ export class StudyPanel {
    *   openModule: (module: import('../modules.js').Module) => void, message: (text: string) => void}} page
    */
   constructor(doc, page) {
-    const el = (/** @type {string} */ id) => /** @type {any} */ (doc.getElementById(id));
     this.page = page;
-    this.section = /** @type {HTMLElement} */ (el('study-panel'));
-    this.pick = /** @type {HTMLSelectElement} */ (el('study-figure'));
-    this.image = /** @type {HTMLImageElement} */ (el('study-image'));
-    this.link = /** @type {HTMLAnchorElement} */ (el('study-full'));
-    this.caption = /** @type {HTMLElement} */ (el('study-caption'));
-    this.runPick = /** @type {HTMLSelectElement} */ (el('study-run'));
-    this.watch = /** @type {HTMLButtonElement} */ (el('study-watch'));
-    this.runNote = /** @type {HTMLElement} */ (el('study-run-note'));
-    this.runBar = /** @type {HTMLElement} */ (el('study-run-bar'));
-    void fillClaim(/** @type {HTMLElement} */ (el('study-claim')));
+    this.section = byId(doc, 'study-panel');
+    this.pick = byId(doc, 'study-figure', HTMLSelectElement);
+    this.image = byId(doc, 'study-image', HTMLImageElement);
+    this.link = byId(doc, 'study-full', HTMLAnchorElement);
+    this.caption = byId(doc, 'study-caption');
+    this.runPick = byId(doc, 'study-run', HTMLSelectElement);
+    this.watch = byId(doc, 'study-watch', HTMLButtonElement);
+    this.runNote = byId(doc, 'study-run-note');
+    this.runBar = byId(doc, 'study-run-bar');
+    void fillClaim(byId(doc, 'study-claim'));
     /** @type {StudyRun[]} */
     this.runs = [];
     this.listFigures(false);
@@ -121,7 +121,7 @@ export class StudyPanel {
       const module = await this.page.module(`${STUDY_DIR}runs/${run.run}.json`, `study: ${describe(run)}`,
         shortLabel(`${run.controller} on ${run.shape}, seed ${run.seed}`, run.unseen));
       await this.page.openModule(module);
-      this.section.ownerDocument.getElementById('watch-panel')?.scrollIntoView({ block: 'start', behavior: 'instant' });
+      byId(this.section.ownerDocument, 'watch-panel').scrollIntoView({ block: 'start', behavior: 'instant' });
     } catch (error) {
       this.page.message(`could not open the run ${run.run}: ${messageOf(error)}`);
     }

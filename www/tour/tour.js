@@ -8,6 +8,7 @@
  * as the chapter set it.
  */
 import { withStats } from '../classroom/simple-words.js';
+import { byId } from '../dom.js';
 import { messageOf } from '../kit.js';
 import { CHAPTERS } from './chapters.js';
 import { FIGURES, figureSrc } from './figures.js';
@@ -38,8 +39,10 @@ export class Tour {
    * @param {Document} doc
    * @param {import('./stage.js').Playground} page
    * @param {{show: (id: string) => void}} study  shows a figure in the study panel
-   * @param {{exercise: (index: number, revealed: () => void) => HTMLElement | null, tools: () => HTMLElement} | null} [classroom]
-   *   each chapter's task (asked before its “Notice”, its figure and its race show) and the teacher's tools (../classroom/)
+   * @param {{exercise: (index: number, revealed: () => void) => HTMLElement | null, tools: () => HTMLElement,
+   *   speedsShown: (index: number) => boolean} | null} [classroom]
+   *   each chapter's task (asked before its “Notice”, its figure and its race show), the teacher's tools, and whether a
+   *   chapter's question leaves the page's speeds shown (../classroom/)
    */
   constructor(doc, page, study, classroom = null) {
     this.doc = doc;
@@ -52,7 +55,7 @@ export class Tour {
     /** Counts chapter openings, so that a slow one never overwrites a newer one. */
     this.opening = 0;
     this.box = this.build();
-    doc.getElementById('tour-open')?.addEventListener('click', () => this.open(Math.max(0, this.index)));
+    byId(doc, 'tour-open', HTMLButtonElement).addEventListener('click', () => this.open(Math.max(0, this.index)));
   }
 
   /** Builds the box (hidden until the tour opens). */
@@ -77,14 +80,14 @@ export class Tour {
       </nav>`;
     if (this.classroom) box.querySelector('.tour-nav')?.before(this.classroom.tools());
     doc.body.append(box);
-    const pick = /** @type {HTMLSelectElement} */ (box.querySelector('#tour-pick'));
+    const pick = byId(doc, 'tour-pick', HTMLSelectElement);
     CHAPTERS.forEach((c, i) => pick.append(new Option(`${i + 1}`, String(i))));
     pick.title = CHAPTERS.map((c, i) => `${i + 1}. ${c.title}`).join('\n');
     pick.addEventListener('change', () => this.open(Number(pick.value)));
-    box.querySelector('#tour-back')?.addEventListener('click', () => this.open(this.index - 1));
-    box.querySelector('#tour-next')?.addEventListener('click', () => this.open(this.index + 1));
-    box.querySelector('#tour-close')?.addEventListener('click', () => this.close());
-    box.querySelector('#tour-fold')?.addEventListener('click', () => this.fold(!box.classList.contains('folded')));
+    byId(doc, 'tour-back', HTMLButtonElement).addEventListener('click', () => this.open(this.index - 1));
+    byId(doc, 'tour-next', HTMLButtonElement).addEventListener('click', () => this.open(this.index + 1));
+    byId(doc, 'tour-close', HTMLButtonElement).addEventListener('click', () => this.close());
+    byId(doc, 'tour-fold', HTMLButtonElement).addEventListener('click', () => this.fold(!box.classList.contains('folded')));
     // On a phone the sheet covers the lower half: a touch on the page (to do the task, or to
     // scroll to its result) folds the text away, Back and Next stay; a new chapter unfolds it.
     doc.addEventListener('pointerdown', (event) => {
@@ -139,9 +142,9 @@ export class Tour {
     this.box.hidden = false;
     doc.body.classList.add('touring');
     this.box.dataset.chapter = String(i + 1);
-    /** @type {HTMLElement} */ (this.box.querySelector('#tour-chapter')).textContent = chapter.title;
-    /** @type {HTMLSelectElement} */ (this.box.querySelector('#tour-pick')).value = String(i);
-    const body = /** @type {HTMLElement} */ (this.box.querySelector('#tour-body'));
+    byId(doc, 'tour-chapter').textContent = chapter.title;
+    byId(doc, 'tour-pick', HTMLSelectElement).value = String(i);
+    const body = byId(doc, 'tour-body');
     this.fold(false);
     body.scrollTop = 0;
     const notice = paragraph(doc, chapter.notice, 'Notice', 'tour-notice');
@@ -160,14 +163,14 @@ export class Tour {
     this.raceHeld = Boolean(task && chapter.setup.race);
     if (task) body.append(task);
     body.append(paragraph(doc, chapter.task, 'Do', 'tour-task'), ...held);
-    /** @type {HTMLButtonElement} */ (this.box.querySelector('#tour-back')).disabled = i === 0;
-    const next = /** @type {HTMLButtonElement} */ (this.box.querySelector('#tour-next'));
+    byId(doc, 'tour-back', HTMLButtonElement).disabled = i === 0;
+    const next = byId(doc, 'tour-next', HTMLButtonElement);
     next.disabled = i === CHAPTERS.length - 1;
     next.title = i < CHAPTERS.length - 1 ? CHAPTERS[i + 1].title : 'The last chapter';
     const url = new URL(location.href);
     url.searchParams.set(CHAPTER_PARAM, String(i + 1));
     history.replaceState(history.state, '', url);
-    const link = /** @type {HTMLAnchorElement} */ (this.box.querySelector('#tour-link'));
+    const link = byId(doc, 'tour-link', HTMLAnchorElement);
     url.hash = '';
     link.href = url.href;
   }
@@ -237,7 +240,7 @@ export class Tour {
   /** Folds the chapter's text away, or back. @param {boolean} folded */
   fold(folded) {
     this.box.classList.toggle('folded', folded);
-    const button = /** @type {HTMLElement} */ (this.box.querySelector('#tour-fold'));
+    const button = byId(this.doc, 'tour-fold', HTMLButtonElement);
     button.setAttribute('aria-expanded', String(!folded));
     button.textContent = folded ? 'Show text' : 'Hide text';
   }
