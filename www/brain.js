@@ -35,11 +35,7 @@ import { decimal } from './format.js';
 
 /** @typedef {{left: number, bottom: number}} Origin */
 
-/**
- * @typedef {object} Source  what Fine-tune starts from (as `vsr finetune --from FILE [--entry I]`)
- * @property {string} text          a run file, or a body search's file
- * @property {number | null} entry  the body of the body search's file (its archive entry), null: its best
- */
+/** @typedef {import('./protocol.js').FinetuneSource} Source  what Fine-tune starts from (as `vsr finetune --from FILE [--entry I]`) */
 
 /**
  * A body found by the body search, with its brain (an attention brain fine-tunes from it).

@@ -10,11 +10,12 @@
  * generation); a step runs one generation; stopping drops the unfinished generation. Messages: protocol.js (ToCoordinator, FromCoordinator, EvaluatorMessage).
  */
 import init, { Evolution, start as installPanicHook } from './pkg/vsr.js';
-import { loadWasm, messageOf, onReadyMessage } from './kit.js';
+import { loadWasm, messageOf, onReadyMessage, typeText, workerScope } from './kit.js';
 import { EvaluatorPool, workerCount } from './pool.js';
 import { FromCoordinator, ToCoordinator } from './protocol.js';
 
 const ready = loadWasm(init, installPanicHook);
+const scope = workerScope('coordinator.js');
 
 /** @type {Evolution | null} */
 let evolution = null;
@@ -29,16 +30,16 @@ let stepping = false;
 let clock = { ms: 0, since: 0 };
 let bestSoFar = -Infinity;
 
-onReadyMessage(ready, fail, (/** @type {any} */ msg) => {
+onReadyMessage(scope, ready, fail, (msg) => {
   switch (msg.type) {
     case ToCoordinator.START: start(msg.settings, msg.workers, msg.source ?? null); break;
     case ToCoordinator.PAUSE: setPaused(true); break;
     case ToCoordinator.RESUME: setPaused(false); break;
     case ToCoordinator.STEP: step(); break;
     case ToCoordinator.STOP: finish(true); break;
-    case ToCoordinator.RUN_FILE: self.postMessage({ type: FromCoordinator.RUN_FILE, runFile: currentRunFile() }); break;
+    case ToCoordinator.RUN_FILE: scope.postMessage({ type: FromCoordinator.RUN_FILE, runFile: currentRunFile() }); break;
     case ToCoordinator.CRASH_WORKER: pool?.crash(Number(msg.index) || 0); break;
-    default: fail(`unknown message type ${JSON.stringify(msg.type)}`);
+    default: fail(`unknown message type ${typeText(msg)}`);
   }
 });
 
@@ -46,7 +47,7 @@ onReadyMessage(ready, fail, (/** @type {any} */ msg) => {
  * Starts the run; bad settings answer 'error' before any worker starts.
  * @param {import('./protocol.js').EvolveSettings} settings
  * @param {number} workers
- * @param {import('./brain.js').Source | null} source the run file to fine-tune from (and its body, for a body search's file), or null
+ * @param {import('./protocol.js').FinetuneSource | null} source the run file to fine-tune from (and its body, for a body search's file), or null
  */
 function start(settings, workers, source) {
   if (evolution) { fail('this coordinator already runs an evolution'); return; }
@@ -59,10 +60,10 @@ function start(settings, workers, source) {
   const count = workerCount(workers);
   pool = new EvaluatorPool(count, {
     done: tellGeneration, failed: fail, settled: postState,
-    recovered: (message) => self.postMessage({ type: FromCoordinator.RECOVERED, message }),
+    recovered: (message) => scope.postMessage({ type: FromCoordinator.RECOVERED, message }),
   });
   clock = { ms: 0, since: performance.now() };
-  self.postMessage({ type: FromCoordinator.STARTED, planned: evolution.plannedEvaluations, workers: count });
+  scope.postMessage({ type: FromCoordinator.STARTED, planned: evolution.plannedEvaluations, workers: count });
   nextGeneration();
 }
 
@@ -93,7 +94,7 @@ function tellGeneration(fitness) {
     best = { fitness: record.best, genome: top.genome.slice() };
   }
   const evaluations = evolution.evaluations;
-  self.postMessage({
+  scope.postMessage({
     type: FromCoordinator.GENERATION, record, evaluations, planned: evolution.plannedEvaluations,
     evalsPerSecond: seconds > 0 ? evaluations / seconds : NaN, best, top,
   });
@@ -127,7 +128,7 @@ function setPaused(pause) {
 
 /** Tells the page the pause state and the evaluations still under way (a pause holds once they are back). */
 function postState() {
-  self.postMessage({ type: FromCoordinator.STATE, paused, stepping, underWay: pool?.underWay ?? 0 });
+  scope.postMessage({ type: FromCoordinator.STATE, paused, stepping, underWay: pool?.underWay ?? 0 });
 }
 
 /** @returns {number} wall seconds of the run, pauses excluded */
@@ -152,11 +153,11 @@ function finish(stopped) {
   batch = null;
   evolution.free();
   evolution = null;
-  self.postMessage({ type: FromCoordinator.DONE, stopped, runFile });
+  scope.postMessage({ type: FromCoordinator.DONE, stopped, runFile });
 }
 
 /** Reports an error and ends the run. @param {string} message */
 function fail(message) {
-  self.postMessage({ type: FromCoordinator.ERROR, message });
+  scope.postMessage({ type: FromCoordinator.ERROR, message });
   finish(true);
 }

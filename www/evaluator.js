@@ -7,24 +7,25 @@
  * result. Messages: protocol.js (EvaluatorMessage).
  */
 import init, { evaluateJob, start as installPanicHook } from './pkg/vsr.js';
-import { loadWasm, messageOf, onReadyMessage } from './kit.js';
+import { loadWasm, messageOf, onReadyMessage, typeText, workerScope } from './kit.js';
 import { EvaluatorMessage } from './protocol.js';
 
 const ready = loadWasm(init, installPanicHook);
+const scope = workerScope('evaluator.js');
 
-onReadyMessage(ready, reportError, (/** @type {{type: string, slot: number, job: import('./protocol.js').EvolveJob, genome: Float32Array}} */ msg) => {
-  const { type, slot, job, genome } = msg;
-  if (type === EvaluatorMessage.CRASH) {
+onReadyMessage(scope, ready, reportError, (msg) => {
+  if (msg.type === EvaluatorMessage.CRASH) {
     setTimeout(() => { throw new Error('evaluation worker crashed on request'); });
     return;
   }
-  if (type !== EvaluatorMessage.JOB) {
-    reportError(`unknown message type ${JSON.stringify(type)}`);
+  if (msg.type !== EvaluatorMessage.JOB) {
+    reportError(`unknown message type ${typeText(msg)}`);
     return;
   }
+  const { slot, job, genome } = msg;
   try {
     const fitness = evaluateJob(job, genome);
-    self.postMessage({ type: EvaluatorMessage.RESULT, slot, fitness });
+    scope.postMessage({ type: EvaluatorMessage.RESULT, slot, fitness });
   } catch (error) {
     reportError(`evaluation ${job.index} of generation ${job.generation} failed: ${messageOf(error)}`);
   }
@@ -32,7 +33,7 @@ onReadyMessage(ready, reportError, (/** @type {{type: string, slot: number, job:
 
 /** @param {string} message */
 function reportError(message) {
-  self.postMessage({ type: EvaluatorMessage.ERROR, message });
+  scope.postMessage({ type: EvaluatorMessage.ERROR, message });
 }
 
-ready.then(() => self.postMessage({ type: EvaluatorMessage.READY }), () => {});
+ready.then(() => scope.postMessage({ type: EvaluatorMessage.READY }), () => {});

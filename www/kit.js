@@ -6,12 +6,41 @@
  * scripts may come from another origin.
  */
 
+/** @typedef {import('./protocol.js').WorkerMessages} WorkerMessages */
+/** @typedef {keyof WorkerMessages} WorkerFile  a worker's file, relative to www/ ('worker.js', 'codesign/coordinator.js') */
+
+/**
+ * A worker as the code that started it holds it: only the messages that worker reads can be posted to it.
+ * @template {WorkerFile} F
+ * @typedef {Omit<Worker, 'postMessage'> & {postMessage(message: WorkerMessages[F]['in'], transfer?: Transferable[]): void}} WorkerOf
+ */
+
+/**
+ * A worker's own global scope as it sees its messages (the page's DOM types do not describe a
+ * worker's scope): it reads `In` and posts `Out`.
+ * @template In, Out
+ * @typedef {object} Scope
+ * @property {(message: Out, transfer?: Transferable[]) => void} postMessage
+ * @property {((event: MessageEvent<In>) => unknown) | null} onmessage
+ */
+
+/**
+ * This worker's global scope (`self`), its messages typed by its file (protocol.js: WorkerMessages).
+ * @template {WorkerFile} F
+ * @param {F} file this worker's file, relative to www/
+ * @returns {Scope<WorkerMessages[F]['in'], WorkerMessages[F]['out']>}
+ */
+export function workerScope(file) {
+  return /** @type {any} */ (self);
+}
+
 /**
  * Starts a module worker next to this file and wires its messages and failures.
- * @param {string} file the worker's file name, e.g. 'worker.js'
- * @param {(data: any) => void} onMessage called with each message's data
+ * @template {WorkerFile} F
+ * @param {F} file the worker's file name, e.g. 'worker.js'
+ * @param {(data: WorkerMessages[F]['out']) => void} onMessage called with each message's data
  * @param {(text: string) => void} onFailure called when the worker dies (an error event)
- * @returns {Worker}
+ * @returns {WorkerOf<F>}
  */
 export function spawn(file, onMessage, onFailure) {
   const worker = new Worker(startable(new URL(`./${file}`, import.meta.url)), { type: 'module' });
@@ -45,6 +74,15 @@ export async function fetchOk(url, what) {
   return response;
 }
 
+/**
+ * The type of a message that no case of a handler took, as JSON text for the words that say so
+ * (its type is `never` there when the handler takes every type of its protocol).
+ * @param {{type: unknown}} msg @returns {string}
+ */
+export function typeText(msg) {
+  return JSON.stringify(msg.type);
+}
+
 /** The text of a thrown value. @param {unknown} error @returns {string} */
 export function messageOf(error) {
   return error instanceof Error ? error.message : String(error);
@@ -66,11 +104,13 @@ export function loadWasm(init, installPanicHook) {
 /**
  * A worker's message handler that waits for its wasm module: each message goes to
  * `handle` once `ready` resolved; if the module could not load, `fail` gets why, in words.
+ * @template In, Out
+ * @param {Scope<In, Out>} scope the worker's ({@link workerScope})
  * @param {Promise<unknown>} ready @param {(message: string) => void} fail
- * @param {(msg: any) => void} handle
+ * @param {(msg: In) => void} handle
  */
-export function onReadyMessage(ready, fail, handle) {
-  self.onmessage = async (/** @type {MessageEvent} */ event) => {
+export function onReadyMessage(scope, ready, fail, handle) {
+  scope.onmessage = async (event) => {
     try {
       await ready;
     } catch (error) {
@@ -86,27 +126,28 @@ export function onReadyMessage(ready, fail, handle) {
  * posts {id, name, args} and resolves with the answer's value, or rejects with its message as
  * an Error. The worker starts at the first request; when it dies (or its wasm module crashed),
  * the requests waiting fail with a readable message and a new worker takes the next ones.
- * @param {string} file the worker's file name @param {string} what the worker, in words
+ * @param {'core-worker.js' | 'classroom/lab-worker.js'} file the worker's file name @param {string} what the worker, in words
  * @returns {(name: string, ...args: any[]) => Promise<any>}
  */
 export function requester(file, what) {
-  /** @type {Worker | null} */
+  /** @type {WorkerOf<typeof file> | null} */
   let worker = null;
   let asked = 0;
   /** @type {Map<number, {resolve: (value: any) => void, reject: (error: Error) => void}>} */
   const waiting = new Map();
-  const stop = (/** @type {Worker} */ dead, /** @type {string} */ text) => {
+  const stop = (/** @type {WorkerOf<typeof file>} */ dead, /** @type {string} */ text) => {
     dead.terminate();
     if (worker === dead) worker = null;
     for (const w of waiting.values()) w.reject(new Error(`${what} stopped (${text}); try again`));
     waiting.clear();
   };
   const start = () => {
-    const w = spawn(file, (/** @type {{id: number, value?: any, error?: string, fatal?: boolean}} */ msg) => {
+    const w = spawn(file, (msg) => {
       const waiter = waiting.get(msg.id);
       waiting.delete(msg.id);
-      if (msg.error === undefined) waiter?.resolve(msg.value); else waiter?.reject(new Error(msg.error));
-      if (msg.fatal) stop(w, String(msg.error));
+      if (!('error' in msg)) { waiter?.resolve(msg.value); return; }
+      waiter?.reject(new Error(msg.error));
+      if (msg.fatal) stop(w, msg.error);
     }, (text) => stop(w, text));
     return w;
   };
@@ -125,13 +166,14 @@ export function requester(file, what) {
  * @param {Promise<unknown>} ready @param {Record<string, (...args: any[]) => any>} answers
  */
 export function answerRequests(ready, answers) {
-  self.onmessage = async (/** @type {MessageEvent<{id: number, name: string, args: any[]}>} */ { data: { id, name, args } }) => {
+  const scope = workerScope('core-worker.js'); // (the classroom's lab-worker.js reads and posts the same)
+  scope.onmessage = async ({ data: { id, name, args } }) => {
     try {
       await ready;
       if (!Object.hasOwn(answers, name)) throw new Error(`unknown request ${JSON.stringify(name)}`);
-      self.postMessage({ id, value: answers[name](...args) });
+      scope.postMessage({ id, value: answers[name](...args) });
     } catch (error) {
-      self.postMessage({ id, error: messageOf(error), fatal: error instanceof WebAssembly.RuntimeError });
+      scope.postMessage({ id, error: messageOf(error), fatal: error instanceof WebAssembly.RuntimeError });
     }
   };
 }

@@ -15,7 +15,7 @@ export class Measurer {
   /** @param {string} noiseSeed the viewer's sensor noise seed (the core's, a decimal string) */
   constructor(noiseSeed) {
     this.noiseSeed = noiseSeed;
-    /** @type {Worker | null} */
+    /** @type {import('./kit.js').WorkerOf<'evaluator.js'> | null} */
     this.worker = null;
     this.asked = 0;
     /** @type {Map<number, {resolve: (v: number) => void, reject: (e: Error) => void}>} */
@@ -40,14 +40,15 @@ export class Measurer {
     });
   }
 
-  /** @returns {Worker} */
+  /** @returns {import('./kit.js').WorkerOf<'evaluator.js'>} */
   start() {
     this.worker = spawn('evaluator.js', (msg) => {
-      const waiter = this.waiting.get(msg.slot ?? this.asked);
+      if (msg.type === EvaluatorMessage.READY) return;
+      const slot = msg.type === EvaluatorMessage.RESULT ? msg.slot : this.asked; // an error says no slot: the latest
+      const waiter = this.waiting.get(slot);
       if (msg.type === EvaluatorMessage.RESULT) waiter?.resolve(msg.fitness);
-      else if (msg.type === EvaluatorMessage.ERROR) waiter?.reject(new Error(msg.message));
-      else return;
-      this.waiting.delete(msg.slot ?? this.asked);
+      else waiter?.reject(new Error(msg.message));
+      this.waiting.delete(slot);
     }, (text) => {
       for (const waiter of this.waiting.values()) waiter.reject(new Error(`the measuring worker stopped: ${text}`));
       this.waiting.clear();

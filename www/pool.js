@@ -7,8 +7,11 @@
  * its place and re-runs its job (same job, same result). While paused, no job is handed out;
  * the jobs under way finish. Messages: protocol.js (EvaluatorMessage).
  */
-import { spawn } from './kit.js';
+import { spawn, typeText } from './kit.js';
 import { EvaluatorMessage, MAX_EVALUATORS } from './protocol.js';
+
+/** @typedef {import('./kit.js').WorkerOf<'evaluator.js'>} Evaluator */
+/** @typedef {import('./protocol.js').EvolveJob} EvolveJob */
 
 /** Replacements of dead evaluation workers before the run gives up. */
 const MAX_REPLACEMENTS = 8;
@@ -30,11 +33,11 @@ export class EvaluatorPool {
   /** @param {number} count workers to start @param {PoolHooks} hooks */
   constructor(count, hooks) {
     this.hooks = hooks;
-    /** @type {Worker[]} every evaluation worker */
+    /** @type {Evaluator[]} every evaluation worker */
     this.workers = Array.from({ length: count }, () => this.startEvaluator());
-    /** @type {Worker[]} workers without a job */
+    /** @type {Evaluator[]} workers without a job */
     this.idle = [...this.workers];
-    /** The job slot each busy worker holds. @type {Map<Worker, number>} */
+    /** The job slot each busy worker holds. @type {Map<Evaluator, number>} */
     this.busy = new Map();
     /** Job slots handed back by dead workers, to hand out again first. @type {number[]} */
     this.orphans = [];
@@ -42,7 +45,7 @@ export class EvaluatorPool {
     this.paused = false;
     /**
      * The batch under evaluation.
-     * @type {{jobs: any[], genome: (slot: number) => Float32Array, fitness: Float64Array, next: number, left: number} | null}
+     * @type {{jobs: EvolveJob[], genome: (slot: number) => Float32Array, fitness: Float64Array, next: number, left: number} | null}
      */
     this.batch = null;
   }
@@ -52,7 +55,7 @@ export class EvaluatorPool {
 
   /**
    * Hands out a batch: job `slot` is evaluated with `genome(slot)`; `done` gets the fitness values.
-   * @param {any[]} jobs @param {(slot: number) => Float32Array} genome
+   * @param {EvolveJob[]} jobs @param {(slot: number) => Float32Array} genome
    */
   run(jobs, genome) {
     this.batch = { jobs, genome, fitness: new Float64Array(jobs.length).fill(NaN), next: 0, left: jobs.length };
@@ -80,13 +83,13 @@ export class EvaluatorPool {
     this.batch = null;
   }
 
-  /** @returns {Worker} an evaluation worker wired to this pool */
+  /** @returns {Evaluator} an evaluation worker wired to this pool */
   startEvaluator() {
     const w = spawn('evaluator.js', (msg) => this.onMessage(w, msg), (text) => this.replace(w, text));
     return w;
   }
 
-  /** A worker died: a new one takes its place and its job goes out again. @param {Worker} dead @param {string} why */
+  /** A worker died: a new one takes its place and its job goes out again. @param {Evaluator} dead @param {string} why */
   replace(dead, why) {
     const index = this.workers.indexOf(dead);
     if (index < 0) return;
@@ -107,13 +110,13 @@ export class EvaluatorPool {
     if (this.paused && slot !== undefined && this.busy.size === 0) this.hooks.settled();
   }
 
-  /** @param {Worker} w @param {{type: string, slot?: number, fitness?: number, message?: string}} msg */
+  /** @param {Evaluator} w @param {import('./protocol.js').FromEvaluatorMessage} msg */
   onMessage(w, msg) {
     switch (msg.type) {
       case EvaluatorMessage.READY: break;
       case EvaluatorMessage.RESULT: this.onResult(w, Number(msg.slot), Number(msg.fitness)); break;
       case EvaluatorMessage.ERROR: this.hooks.failed(String(msg.message)); break;
-      default: this.hooks.failed(`unknown message from an evaluation worker: ${JSON.stringify(msg.type)}`);
+      default: this.hooks.failed(`unknown message from an evaluation worker: ${typeText(msg)}`);
     }
   }
 
@@ -122,7 +125,7 @@ export class EvaluatorPool {
     const batch = this.batch;
     if (!batch) return;
     while (!this.paused && this.idle.length > 0 && (this.orphans.length > 0 || batch.next < batch.jobs.length)) {
-      const w = /** @type {Worker} */ (this.idle.pop());
+      const w = /** @type {Evaluator} */ (this.idle.pop());
       const slot = this.orphans.length > 0 ? /** @type {number} */ (this.orphans.shift()) : batch.next++;
       const genome = batch.genome(slot);
       this.busy.set(w, slot);
@@ -130,7 +133,7 @@ export class EvaluatorPool {
     }
   }
 
-  /** @param {Worker} w @param {number} slot @param {number} fitness */
+  /** @param {Evaluator} w @param {number} slot @param {number} fitness */
   onResult(w, slot, fitness) {
     const batch = this.batch;
     if (!batch || this.busy.get(w) !== slot) return;

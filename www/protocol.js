@@ -75,6 +75,29 @@ export const FromWorker = Object.freeze({
   ERROR: 'error',
 });
 
+/**
+ * A message from the page to the simulation worker (the list above).
+ * @typedef {{type: typeof ToWorker.LOAD, params: EpisodeParams}
+ *   | {type: typeof ToWorker.START}
+ *   | {type: typeof ToWorker.PAUSE}
+ *   | {type: typeof ToWorker.RESET}
+ *   | {type: typeof ToWorker.SPEED, speed: number}
+ *   | {type: typeof ToWorker.FREEZE, frozen: boolean}
+ *   | {type: typeof ToWorker.LENGTH, seconds: number}
+ *   | {type: typeof ToWorker.WAIT_AT, seconds: number}} ToWorkerMessage
+ */
+
+/**
+ * A message from the simulation worker to the page (the list above).
+ * @typedef {{type: typeof FromWorker.READY, physics: Physics}
+ *   | {type: typeof FromWorker.LOADED, params: LoadedParams, carried: boolean, voxels: number,
+ *       controller: string, cells: Uint32Array, terrainXs: Float64Array, terrainYs: Float64Array,
+ *       attentionTerms: number[] | null}
+ *   | ({type: typeof FromWorker.FRAME} & Frame)
+ *   | {type: typeof FromWorker.STATE, running: boolean}
+ *   | {type: typeof FromWorker.ERROR, message: string, fatal: boolean}} FromWorkerMessage
+ */
+
 /** Floats per voxel in `corners`: 4 corner points x, y. */
 export const CORNER_FLOATS = 8;
 /** Floats per voxel in `areas`. */
@@ -111,6 +134,12 @@ export const SENSOR_NAMES = Object.freeze(['area', 'vx', 'vy', 'touch']);
  * @property {Shift | false} [keepPlace] an edit of the walking robot: build it in the posture
  *                               and motion of the current one (its cells the current ones
  *                               shifted by the Shift), not at rest on the start line
+ */
+
+/**
+ * @typedef {EpisodeParams & {terrain: string, frequency: number, phase: number}} LoadedParams  the
+ *   parameters of the episode the worker runs ('loaded'): those asked, with the core's defaults
+ *   for the terrain and the gait where none was given
  */
 
 /**
@@ -164,7 +193,8 @@ export function frameIsConsistent(frame) {
 /*
  * The core's answers (defaults, checks, transplant, remap) come from the core worker
  * (core-worker.js), asked through core.js with kit.js's requester: {id, name, args} ->
- * {id, value} or {id, error, fatal}.
+ * {id, value} or {id, error, fatal} (the classroom's measuring worker, classroom/lab-worker.js,
+ * answers the same way).
  *
  * Evolution in the page: the page (run-panel.js) drives a GA coordinator worker
  * (coordinator.js), which owns the wasm `Evolution` and a pool of evaluation workers
@@ -209,10 +239,7 @@ export function frameIsConsistent(frame) {
  *                                        (Float32Array, transferred); slot = its job index
  *   {type: 'crash'}                      fail as a crash would (see 'crash-worker')
  * Evaluator -> coordinator
- *   {type: 'ready', physics}             the wasm module is instantiated; physics: the
- *                                        core's constants the drawing needs, {@link Physics}
- *                                        (defaults().physics, crate/src/experiment/playground.rs),
- *                                        sent here so that no copy of them lives in the page
+ *   {type: 'ready'}                      the wasm module is instantiated
  *   {type: 'result', slot, fitness}      fitness in m/s, NaN for an exploded episode
  *   {type: 'error', message}             the job was malformed, or wasm failed to load
  */
@@ -247,6 +274,85 @@ export const EvaluatorMessage = Object.freeze({
   RESULT: 'result',
   ERROR: 'error',
 });
+
+/**
+ * What a fine-tuning run starts from (as `vsr finetune --from FILE [--entry I]`).
+ * @typedef {object} FinetuneSource
+ * @property {string} text          a run file, or a body search's file (JSON text)
+ * @property {number | null} entry  the body of the body search's file (its archive entry), null: its best
+ */
+
+/**
+ * A generation's record in a run file, as `Evolution.tell` returns it (non-finite values null).
+ * @typedef {object} GenerationRecord
+ * @property {number} generation   0: the initial population
+ * @property {number} evaluations  so far, this generation included
+ * @property {number | null} best  the best survivor's fitness (m/s)
+ * @property {number | null} q3
+ * @property {number | null} median
+ * @property {number | null} q1
+ * @property {number | null} worst
+ * @property {number} wall_seconds
+ */
+
+/** @typedef {{fitness: number, genome: Float32Array}} Scored  a genome and its fitness (m/s) */
+
+/**
+ * A message from the page to the GA coordinator (the list above).
+ * @typedef {{type: typeof ToCoordinator.START, settings: EvolveSettings, workers: number, source: FinetuneSource | null}
+ *   | {type: typeof ToCoordinator.PAUSE}
+ *   | {type: typeof ToCoordinator.RESUME}
+ *   | {type: typeof ToCoordinator.STEP}
+ *   | {type: typeof ToCoordinator.STOP}
+ *   | {type: typeof ToCoordinator.RUN_FILE}
+ *   | {type: typeof ToCoordinator.CRASH_WORKER, index: number}} ToCoordinatorMessage
+ */
+
+/**
+ * A message from the GA coordinator to the page (the list above).
+ * @typedef {{type: typeof FromCoordinator.STARTED, planned: number, workers: number}
+ *   | {type: typeof FromCoordinator.GENERATION, record: GenerationRecord, evaluations: number, planned: number,
+ *       evalsPerSecond: number, best: Scored | null, top: Scored}
+ *   | {type: typeof FromCoordinator.STATE, paused: boolean, stepping: boolean, underWay: number}
+ *   | {type: typeof FromCoordinator.RUN_FILE, runFile: string | null}
+ *   | {type: typeof FromCoordinator.RECOVERED, message: string}
+ *   | {type: typeof FromCoordinator.DONE, stopped: boolean, runFile: string | null}
+ *   | {type: typeof FromCoordinator.ERROR, message: string}} FromCoordinatorMessage
+ */
+
+/**
+ * A message from a coordinator to an evaluation worker (the list above).
+ * @typedef {{type: typeof EvaluatorMessage.JOB, slot: number, job: EvolveJob, genome: Float32Array}
+ *   | {type: typeof EvaluatorMessage.CRASH}} ToEvaluatorMessage
+ */
+
+/**
+ * A message from an evaluation worker to its coordinator (the list above).
+ * @typedef {{type: typeof EvaluatorMessage.READY}
+ *   | {type: typeof EvaluatorMessage.RESULT, slot: number, fitness: number}
+ *   | {type: typeof EvaluatorMessage.ERROR, message: string}} FromEvaluatorMessage
+ */
+
+/** A request to a worker that answers requests (kit.js: requester): `answers[name](...args)`. @typedef {{id: number, name: string, args: unknown[]}} Request */
+/**
+ * Its answer: the value, or why not in words (fatal: its wasm module crashed, a new worker must
+ * take the next requests).
+ * @typedef {{id: number, value: unknown} | {id: number, error: string, fatal: boolean}} Answer
+ */
+
+/**
+ * Every worker by its file (relative to www/): the messages it is sent (`in`) and those it
+ * posts (`out`). kit.js types both sides with it: `spawn(file, ...)` and `workerScope(file)`.
+ * @typedef {{
+ *   'worker.js': {in: ToWorkerMessage, out: FromWorkerMessage},
+ *   'coordinator.js': {in: ToCoordinatorMessage, out: FromCoordinatorMessage},
+ *   'evaluator.js': {in: ToEvaluatorMessage, out: FromEvaluatorMessage},
+ *   'codesign/coordinator.js': {in: import('./codesign/protocol.js').ToCodesignMessage,
+ *     out: import('./codesign/protocol.js').FromCodesignMessage},
+ *   'core-worker.js': {in: Request, out: Answer},
+ *   'classroom/lab-worker.js': {in: Request, out: Answer},
+ * }} WorkerMessages
+ */
 
 /**
  * @typedef {object} EvolveSettings  a run's settings, the options of `vsr evolve` / `vsr finetune`

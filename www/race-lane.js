@@ -118,7 +118,7 @@ export class Lane {
     this.worker.postMessage({ type: ToWorker.WAIT_AT, seconds });
   }
 
-  /** @param {any} msg */
+  /** @param {import('./protocol.js').FromWorkerMessage} msg */
   onMessage(msg) {
     switch (msg.type) {
       case FromWorker.READY: this.renderer.setPhysics(msg.physics); break;

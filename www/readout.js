@@ -8,6 +8,7 @@
  * robot the distance runs on from where it was; the speed counts from the edit. Each <output>
  * also carries its raw number in `data-value` so that tests read numbers, not formatted text.
  */
+import { byId } from './dom.js';
 import { decimal } from './format.js';
 
 /** Window over which the velocity is measured (simulated s). */
@@ -23,12 +24,12 @@ export class Readout {
    */
   constructor(doc, hold) {
     this.fields = {
-      time: field(doc, 'sim-time'),
-      x: field(doc, 'robot-x'),
-      velocity: field(doc, 'robot-v'),
-      speed: field(doc, 'robot-speed'),
-      simPerWall: field(doc, 'sim-rate'),
-      simPerCompute: field(doc, 'engine-rate'),
+      time: byId(doc, 'sim-time'),
+      x: byId(doc, 'robot-x'),
+      velocity: byId(doc, 'robot-v'),
+      speed: byId(doc, 'robot-speed'),
+      simPerWall: byId(doc, 'sim-rate'),
+      simPerCompute: byId(doc, 'engine-rate'),
     };
     /** Recent (time, x) samples, oldest first. @type {{t: number, x: number}[]} */
     this.history = [];
@@ -36,7 +37,10 @@ export class Readout {
     this.shownAt = -Infinity;
     /** The latest frame received. @type {import('./protocol.js').Frame | null} */
     this.latest = null;
-    /** The episode walking: its length and terrain, and whether it went on from an edit. */
+    /**
+     * The episode walking: its length (none: not measured over one) and terrain, and whether it went on from an edit.
+     * @type {{seconds: number | undefined, terrain: string, edited: boolean}}
+     */
     this.episode = { seconds: NaN, terrain: '', edited: false };
     /**
      * Where the walk started: the centre's x after the first step of its first episode (m),
@@ -49,7 +53,7 @@ export class Readout {
   /**
    * A new episode starts: forgets the pace history; an edit of the walking robot (`carried`)
    * keeps where the walk started.
-   * @param {import('./protocol.js').EpisodeParams} params @param {boolean} carried
+   * @param {import('./protocol.js').LoadedParams} params @param {boolean} carried
    */
   reset(params, carried) {
     if (!carried) this.origin = NaN;
@@ -106,13 +110,6 @@ export class Readout {
     show(this.fields.simPerWall, frame.simPerWall, `${decimal(frame.simPerWall)}x`);
     show(this.fields.simPerCompute, frame.simPerCompute, `${Math.round(frame.simPerCompute)}x`);
   }
-}
-
-/** @param {Document} doc @param {string} id */
-function field(doc, id) {
-  const el = doc.getElementById(id);
-  if (!el) throw new Error(`the page has no #${id}`);
-  return el;
 }
 
 /** @param {HTMLElement} el @param {number} value @param {string} text */

@@ -7,6 +7,7 @@
  * stops, exports the run file, and hands each new best to the page to watch. A fine-tuning
  * run can be followed by a from-scratch run with the same budget, drawn as a second line.
  */
+import { byId } from './dom.js';
 import { messageOf, spawn } from './kit.js';
 import { download, downloadCsv, runFileName } from './export.js';
 import { planWords } from './run-plan.js';
@@ -47,25 +48,22 @@ export class RunPanel {
   /** @param {Document} doc @param {import('./core.js').Defaults} defaults @param {RunHooks} hooks */
   constructor(doc, defaults, hooks) {
     this.hooks = hooks;
-    const el = (/** @type {string} */ id) => {
-      const found = doc.getElementById(id);
-      if (!found) throw new Error(`the page has no #${id}`);
-      return /** @type {any} */ (found);
-    };
-    this.form = new RunSettings(el, defaults, (text) => hooks.message(text, 'run-settings'), () => this.update());
+    this.form = new RunSettings(doc, defaults, (text) => hooks.message(text, 'run-settings'), () => this.update());
     this.inputs = this.form.inputs;
     /** @type {Record<string, HTMLButtonElement>} */
     this.buttons = {
-      evolve: el('run-evolve'), finetune: el('run-finetune'), pause: el('run-pause'), step: el('run-step'),
-      stop: el('run-stop'), export: el('run-export'), csv: el('run-csv'),
+      evolve: byId(doc, 'run-evolve', HTMLButtonElement), finetune: byId(doc, 'run-finetune', HTMLButtonElement),
+      pause: byId(doc, 'run-pause', HTMLButtonElement), step: byId(doc, 'run-step', HTMLButtonElement),
+      stop: byId(doc, 'run-stop', HTMLButtonElement), export: byId(doc, 'run-export', HTMLButtonElement),
+      csv: byId(doc, 'run-csv', HTMLButtonElement),
     };
-    this.compare = /** @type {HTMLInputElement} */ (el('run-compare'));
-    this.follow = /** @type {HTMLInputElement} */ (el('run-follow'));
-    this.status = /** @type {HTMLElement} */ (el('run-status'));
-    this.progress = new RunProgress(el);
+    this.compare = byId(doc, 'run-compare', HTMLInputElement);
+    this.follow = byId(doc, 'run-follow', HTMLInputElement);
+    this.status = byId(doc, 'run-status');
+    this.progress = new RunProgress(doc);
     /** Generations after generation 0 that the running run takes. */
     this.generations = NaN;
-    /** @type {Worker | null} */
+    /** @type {import('./kit.js').WorkerOf<'coordinator.js'> | null} */
     this.coordinator = null;
     /** A run's settings are being checked (by the core) before it starts. */
     this.starting = false;
@@ -73,7 +71,7 @@ export class RunPanel {
     /** The latest finished run's file and settings. */
     this.runFile = /** @type {string | null} */ (null);
     this.runSettings = /** @type {import('./protocol.js').EvolveSettings | null} */ (null);
-    /** What runs now: 'evolve', 'finetune' or 'scratch' (the comparison), and its series key. */
+    /** What runs now: 'evolve', 'finetune' or 'scratch' (the comparison), and its series key. @type {'evolve' | 'finetune' | 'scratch'} */
     this.mode = 'evolve';
     this.bestSoFar = -Infinity;
     /** Workers of the running run. */
@@ -118,7 +116,11 @@ export class RunPanel {
     this.progress.otherBrain(!fromRun && this.started);
   }
 
-  /** @param {string} type */
+  /**
+   * Sends the coordinator a message that is only its type.
+   * @param {typeof ToCoordinator.PAUSE | typeof ToCoordinator.RESUME | typeof ToCoordinator.STEP
+   *   | typeof ToCoordinator.STOP | typeof ToCoordinator.RUN_FILE} type
+   */
   send(type) { this.coordinator?.postMessage({ type }); }
 
   /** The settings in the form as the page stores and shares them. */
@@ -179,7 +181,7 @@ export class RunPanel {
     this.update();
   }
 
-  /** @param {any} msg a coordinator message @param {import('./protocol.js').EvolveSettings} settings */
+  /** @param {import('./protocol.js').FromCoordinatorMessage} msg @param {import('./protocol.js').EvolveSettings} settings */
   onMessage(msg, settings) {
     switch (msg.type) {
       case FromCoordinator.STARTED:
@@ -217,14 +219,13 @@ export class RunPanel {
   }
 
   /**
-   * @param {{record: any, evaluations: number, planned: number, evalsPerSecond: number,
-   *   best: {fitness: number, genome: Float32Array} | null}} msg
+   * @param {Extract<import('./protocol.js').FromCoordinatorMessage, {type: 'generation'}>} msg
    * @param {import('./protocol.js').EvolveSettings} settings
    */
   onGeneration(msg, settings) {
     const { record } = msg;
     if (record.best !== null && record.best > this.bestSoFar) this.bestSoFar = record.best;
-    this.progress.generation(msg, this.generations, this.bestSoFar, /** @type {any} */ (this.mode));
+    this.progress.generation(msg, this.generations, this.bestSoFar, this.mode);
     this.buttons.csv.disabled = false;
     const pace = (msg.evalsPerSecond * settings.seconds * voxelCount(settings.shape)) / this.workers;
     if (pace > 0 && Number.isFinite(pace)) this.pace = pace;
@@ -244,7 +245,7 @@ export class RunPanel {
     const compare = this.compareNext && !msg.stopped;
     if (msg.runFile) {
       if (this.mode !== 'scratch') { this.runFile = msg.runFile; this.runSettings = settings; }
-      this.hooks.finished({ runFile: msg.runFile, settings, mode: /** @type {any} */ (this.mode), peak: this.bestSoFar,
+      this.hooks.finished({ runFile: msg.runFile, settings, mode: this.mode, peak: this.bestSoFar,
         stopped: msg.stopped, follow: this.follow.checked });
     }
     this.progress.ended();

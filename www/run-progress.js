@@ -6,6 +6,7 @@
  * or fine-tuning against the from-scratch run that follows it, drawn as a second line; and the
  * same figures as a table, a row per generation, for the CSV download.
  */
+import { byId } from './dom.js';
 import { FitnessChart } from './fitness-chart.js';
 import { count, decimal as fixed } from './format.js';
 
@@ -29,15 +30,15 @@ export const TABLE_HEADER = ['run', 'generation', 'evaluations', 'best (m/s)', '
 const FIGURES = ['generation', 'evaluations', 'best', 'genBest', 'median'];
 
 export class RunProgress {
-  /** @param {(id: string) => any} el the page's element by id */
-  constructor(el) {
+  /** @param {Document} doc the page */
+  constructor(doc) {
     /** @type {Record<string, HTMLElement>} */
     this.out = {
-      generation: el('run-generation'), evaluations: el('run-evaluations'), best: el('run-best'),
-      genBest: el('run-gen-best'), median: el('run-median'), rate: el('run-rate'),
-      caption: el('run-caption'), progress: el('run-progress'), phase: el('run-phase'),
+      generation: byId(doc, 'run-generation'), evaluations: byId(doc, 'run-evaluations'), best: byId(doc, 'run-best'),
+      genBest: byId(doc, 'run-gen-best'), median: byId(doc, 'run-median'), rate: byId(doc, 'run-rate'),
+      caption: byId(doc, 'run-caption'), progress: byId(doc, 'run-progress'), phase: byId(doc, 'run-phase'),
     };
-    this.chart = new FitnessChart(el('run-chart'));
+    this.chart = new FitnessChart(byId(doc, 'run-chart', HTMLCanvasElement));
     /** A row per generation of the latest run (and of its from-scratch comparison), as {@link TABLE_HEADER}. @type {(string | number)[][]} */
     this.table = [];
   }
@@ -66,7 +67,7 @@ export class RunProgress {
 
   /**
    * A generation's figures.
-   * @param {{record: any, evaluations: number, planned: number, evalsPerSecond: number}} msg
+   * @param {{record: import('./protocol.js').GenerationRecord, evaluations: number, planned: number, evalsPerSecond: number}} msg
    * @param {number} generations generations after generation 0 the run takes
    * @param {number} bestSoFar the best evaluation of the run so far
    * @param {'evolve' | 'finetune' | 'scratch'} mode

@@ -7,6 +7,7 @@
  * the plan line (and Evolve is off until they are fixed; their message goes once they are).
  */
 import { checkTrainingTerrain, freshSeed } from './core.js';
+import { byId } from './dom.js';
 import { messageOf } from './kit.js';
 import { planWords } from './run-plan.js';
 import { MAX_EVALUATORS } from './protocol.js';
@@ -16,12 +17,12 @@ import { count, decimal } from './format.js';
 
 export class RunSettings {
   /**
-   * @param {(id: string) => any} el the page's element by id
+   * @param {Document} doc the page
    * @param {import('./core.js').Defaults} defaults
    * @param {(text: string) => void} message shows an error about the settings ('' takes it away)
    * @param {() => void} changed the settings became valid or invalid
    */
-  constructor(el, defaults, message, changed) {
+  constructor(doc, defaults, message, changed) {
     this.defaults = defaults;
     this.message = message;
     this.changed = changed;
@@ -29,12 +30,16 @@ export class RunSettings {
     this.invalid = false;
     /** @type {Record<string, HTMLInputElement>} */
     this.inputs = {
-      population: el('run-population'), seconds: el('run-seconds'), budget: el('run-budget'),
-      seed: el('run-seed'), terrain: el('run-terrain'), workers: el('run-workers'),
+      population: byId(doc, 'run-population', HTMLInputElement), seconds: byId(doc, 'run-seconds', HTMLInputElement),
+      budget: byId(doc, 'run-budget', HTMLInputElement), seed: byId(doc, 'run-seed', HTMLInputElement),
+      terrain: byId(doc, 'run-terrain', HTMLInputElement), workers: byId(doc, 'run-workers', HTMLInputElement),
     };
     /** @type {Record<string, HTMLButtonElement>} */
-    this.buttons = { quick: el('run-quick'), paper: el('run-paper'), dice: el('run-dice') };
-    this.plan = /** @type {HTMLElement} */ (el('run-plan'));
+    this.buttons = {
+      quick: byId(doc, 'run-quick', HTMLButtonElement), paper: byId(doc, 'run-paper', HTMLButtonElement),
+      dice: byId(doc, 'run-dice', HTMLButtonElement),
+    };
+    this.plan = byId(doc, 'run-plan');
     /** Plans asked: only the latest one's words are shown. */
     this.plans = 0;
     /** Evaluations the settings in the form plan (NaN while they are not valid). */

@@ -11,6 +11,7 @@
 import { AttentionPanel } from './attention.js';
 import { AttentionReader } from './attention-reader.js';
 import { checkTerrain } from './core.js';
+import { byId } from './dom.js';
 import { FreezeControl } from './freeze.js';
 import { spawn } from './kit.js';
 import { FromWorker, ToWorker, frameIsConsistent } from './protocol.js';
@@ -33,9 +34,8 @@ const MAX_RESTARTS = 3;
 export class Viewer {
   /** @param {Document} doc @param {ViewerHooks} hooks */
   constructor(doc, hooks) {
-    const el = (/** @type {string} */ id) => /** @type {any} */ (doc.getElementById(id));
     this.hooks = hooks;
-    this.canvas = /** @type {HTMLCanvasElement} */ (el('scene'));
+    this.canvas = byId(doc, 'scene', HTMLCanvasElement);
     this.renderer = new Renderer(this.canvas);
     /**
      * The hold at an episode's end: whether every walk holds there ({@link Viewer#holdAtEnd}),
@@ -44,19 +44,22 @@ export class Viewer {
      */
     this.hold = { atEnd: false, now: false };
     this.readout = new Readout(doc, this.hold);
-    this.attention = new AttentionPanel(el('attention-panel'), el('attention'));
+    this.attention = new AttentionPanel(byId(doc, 'attention-panel'), byId(doc, 'attention', HTMLCanvasElement));
     this.reader = new AttentionReader(doc, (voxel) => { this.renderer.highlight = voxel; this.attention.selected = voxel; this.attention.dirty = true; });
     this.freeze = new FreezeControl(doc, (frozen) => this.worker.postMessage({ type: ToWorker.FREEZE, frozen }));
-    this.status = el('status');
-    this.buttons = { play: el('sim-play'), hold: el('sim-hold'), restart: el('sim-restart') };
-    this.speed = /** @type {HTMLSelectElement} */ (el('speed'));
+    this.status = byId(doc, 'status');
+    this.buttons = {
+      play: byId(doc, 'sim-play', HTMLButtonElement), hold: byId(doc, 'sim-hold', HTMLButtonElement),
+      restart: byId(doc, 'sim-restart', HTMLButtonElement),
+    };
+    this.speed = byId(doc, 'speed', HTMLSelectElement);
     /** The terrain: its `value` is the one walked on, whatever is typed. */
-    this.terrain = new TypedField(el('terrain'), hooks.messages, {
+    this.terrain = new TypedField(byId(doc, 'terrain', HTMLInputElement), hooks.messages, {
       problem: async (text) => { const rule = await checkTerrain(text); return rule && terrainRefused(text, rule); },
       use: () => this.reload(),
     });
-    this.gait = { frequency: /** @type {HTMLInputElement} */ (el('frequency')), phase: /** @type {HTMLInputElement} */ (el('phase')) };
-    /** The episode the worker runs now (the last one that loaded). @type {import('./protocol.js').EpisodeParams | null} */
+    this.gait = { frequency: byId(doc, 'frequency', HTMLInputElement), phase: byId(doc, 'phase', HTMLInputElement) };
+    /** The episode the worker runs now (the last one that loaded). @type {import('./protocol.js').LoadedParams | null} */
     this.current = null;
     /** The episode asked for last (kept across a worker restart). @type {import('./protocol.js').EpisodeParams | null} */
     this.wanted = null;
@@ -64,7 +67,7 @@ export class Viewer {
     this.restarts = 0;
     this.worker = this.startWorker();
     this.wire();
-    requestAnimationFrame(function loop(/** @type {number} */ now) {
+    requestAnimationFrame(/** @this {Viewer} @param {number} now */ function loop(now) {
       this.renderer.draw(now);
       this.attention.draw();
       requestAnimationFrame(loop.bind(this));
@@ -93,7 +96,7 @@ export class Viewer {
     if (this.wanted) this.show(this.wanted.shape, this.wanted.brain, false);
   }
 
-  /** @returns {Worker} a new simulation worker, told to load the wanted episode */
+  /** @returns {import('./kit.js').WorkerOf<'worker.js'>} a new simulation worker, told to load the wanted episode */
   startWorker() {
     const w = spawn('worker.js', (msg) => this.onMessage(msg), () => this.onError('The simulation worker crashed; a new one took over.', true));
     w.postMessage({ type: ToWorker.SPEED, speed: Number(this.speed.value) });
@@ -147,7 +150,7 @@ export class Viewer {
     this.worker.postMessage({ type: ToWorker.LENGTH, seconds });
   }
 
-  /** @param {any} msg a message from the worker */
+  /** @param {import('./protocol.js').FromWorkerMessage} msg a message from the worker */
   onMessage(msg) {
     switch (msg.type) {
       case FromWorker.READY: this.renderer.setPhysics(msg.physics); break;

@@ -6,7 +6,7 @@
  * buffers are transferred, not copied. Message types and buffer layouts: protocol.js.
  */
 import init, { Episode, attentionTerms, defaults, start as installPanicHook } from './pkg/vsr.js';
-import { loadWasm, messageOf } from './kit.js';
+import { loadWasm, messageOf, typeText, workerScope } from './kit.js';
 import { FromWorker, ToWorker } from './protocol.js';
 
 /** Longest run of stepping before yielding to the message queue (ms). */
@@ -20,6 +20,8 @@ const MAX_LAG_S = 0.25;
 /** Window over which the speed figures are measured (wall ms). */
 const RATE_WINDOW_MS = 500;
 
+const scope = workerScope('worker.js');
+
 /** The simulation time step (s), the core's: it paces the stepping. */
 let dt = NaN;
 /** The core's constants, once the module is loaded (the page's drawing gets them in 'ready'). */
@@ -31,7 +33,7 @@ const ready = loadWasm(init, installPanicHook).then(() => {
 
 /** @type {Episode | null} */
 let episode = null;
-/** @type {import('./protocol.js').EpisodeParams | null} */
+/** @type {import('./protocol.js').LoadedParams | null} */
 let params = null;
 let running = false;
 /** Simulated seconds per wall second; 0 = as fast as possible. */
@@ -47,8 +49,7 @@ let tickScheduled = false;
 const yieldChannel = new MessageChannel();
 yieldChannel.port1.onmessage = () => tick();
 
-/** @param {MessageEvent} event */
-self.onmessage = async (event) => {
+scope.onmessage = async (event) => {
   try {
     await ready;
   } catch (error) {
@@ -62,7 +63,7 @@ self.onmessage = async (event) => {
   }
 };
 
-/** @param {{type: string, params?: import('./protocol.js').EpisodeParams, speed?: number, frozen?: boolean, seconds?: number}} msg */
+/** @param {import('./protocol.js').ToWorkerMessage} msg */
 function handle(msg) {
   switch (msg.type) {
     case ToWorker.LOAD: if (msg.params) load(msg.params); break;
@@ -75,7 +76,7 @@ function handle(msg) {
     case ToWorker.LENGTH:
       if (episode && params) { episode.measureOver(Number(msg.seconds)); params = { ...params, seconds: Number(msg.seconds) }; }
       break;
-    default: reportError(`unknown message type ${JSON.stringify(msg.type)}`, false);
+    default: reportError(`unknown message type ${typeText(msg)}`, false);
   }
 }
 
@@ -91,13 +92,13 @@ function load(asked) {
   // An edit of the walking robot rebuilds it where it stands, in its posture and motion, if
   // the robot walking is the one that was edited (not after a restart or a refused load).
   const edit = next.keepPlace && episode ? next.keepPlace : null;
-  const left = edit ? episode.leftEdge() : NaN;
+  const left = edit && episode ? episode.leftEdge() : NaN;
   const fresh = next.runFile ? Episode.fromRunFile(next.runFile, next.terrain, next.shape)
     : next.brain ? Episode.fromGenome(next.shape, next.terrain, next.brain.controller, next.brain.genome, left)
     : Episode.gaitAt(next.shape, next.terrain, next.frequency, next.phase, left);
   const carried = Boolean(edit && episode && edit.from === episode.shape && next.terrain === params?.terrain);
   if (carried && edit && episode) fresh.carryPose(episode, edit.dx, edit.dy);
-  if (next.seconds > 0) fresh.measureOver(next.seconds); // the speed over the episode, taken when it ends
+  if (next.seconds !== undefined && next.seconds > 0) fresh.measureOver(next.seconds); // the speed over the episode, taken when it ends
   episode?.free();
   episode = fresh;
   params = next;
@@ -106,7 +107,7 @@ function load(asked) {
   const terrainYs = fresh.terrainYs();
   const cells = fresh.voxelCells();
   const terms = next.brain?.controller === 'attention' ? Array.from(attentionTerms(next.brain.genome)) : null;
-  self.postMessage({
+  scope.postMessage({
     type: FromWorker.LOADED, params, carried, voxels: fresh.voxelCount, controller: fresh.controller,
     cells, terrainXs, terrainYs, attentionTerms: terms,
   }, [cells.buffer, terrainXs.buffer, terrainYs.buffer]);
@@ -120,7 +121,7 @@ function setRunning(run) {
   running = run;
   restartClocks();
   if (!run) postFrame(); // held: the page shows the robot as it stopped, not the last frame sent
-  self.postMessage({ type: FromWorker.STATE, running });
+  scope.postMessage({ type: FromWorker.STATE, running });
   schedule();
 }
 
@@ -145,7 +146,7 @@ function tick() {
     stepSlice(episode);
   } catch (error) {
     running = false;
-    self.postMessage({ type: FromWorker.STATE, running });
+    scope.postMessage({ type: FromWorker.STATE, running });
     reportError(messageOf(error), error instanceof WebAssembly.RuntimeError);
     return;
   }
@@ -198,8 +199,9 @@ function postFrame() {
   const now = performance.now();
   lastFramePosted = now;
   updateRates(episode, now);
-  const frame = episode.frame();
-  self.postMessage({
+  // The core's part of the frame (crate/src/wasm/controlled.rs, `frame`); the rest is added here.
+  const frame = /** @type {Omit<import('./protocol.js').Frame, 'velocity' | 'frozen' | 'simPerWall' | 'simPerCompute'>} */ (episode.frame());
+  scope.postMessage({
     type: FromWorker.FRAME, ...frame, velocity: episode.velocity, frozen: episode.attentionFrozen,
     simPerWall: running ? rate.simPerWall : NaN, simPerCompute: rate.simPerCompute,
   }, [frame.corners.buffer, frame.areas.buffer, frame.bodies.buffer, frame.attention.buffer]);
@@ -219,10 +221,10 @@ function updateRates(ep, now) {
 
 /** @param {string} message @param {boolean} fatal */
 function reportError(message, fatal) {
-  self.postMessage({ type: FromWorker.ERROR, message, fatal });
+  scope.postMessage({ type: FromWorker.ERROR, message, fatal });
 }
 
 ready.then(
-  (physics) => self.postMessage({ type: FromWorker.READY, physics }),
+  (physics) => scope.postMessage({ type: FromWorker.READY, physics }),
   (error) => reportError(messageOf(error), true),
 );

@@ -11,11 +11,12 @@
  * FromCodesign).
  */
 import init, { Codesign, start as installPanicHook } from '../pkg/vsr.js';
-import { loadWasm, messageOf, onReadyMessage } from '../kit.js';
+import { loadWasm, messageOf, onReadyMessage, typeText, workerScope } from '../kit.js';
 import { EvaluatorPool, workerCount } from '../pool.js';
 import { FromCodesign, ToCodesign } from './protocol.js';
 
 const ready = loadWasm(init, installPanicHook);
+const scope = workerScope('codesign/coordinator.js');
 
 /** @type {Codesign | null} */
 let search = null;
@@ -25,13 +26,13 @@ let started = 0;
 /** The search ended: its archive stays to answer 'entry' until the page ends this worker. */
 let over = false;
 
-onReadyMessage(ready, fail, (/** @type {any} */ msg) => {
+onReadyMessage(scope, ready, fail, (msg) => {
   switch (msg.type) {
     case ToCodesign.START: start(msg.settings, msg.workers, msg.module ?? null); break;
     case ToCodesign.STOP: finish(true); break;
     case ToCodesign.ENTRY: sendEntry(msg.cell, msg.ticket); break;
     case ToCodesign.CRASH_WORKER: pool?.crash(Number(msg.index) || 0); break;
-    default: fail(`unknown message type ${JSON.stringify(msg.type)}`);
+    default: fail(`unknown message type ${typeText(msg)}`);
   }
 });
 
@@ -41,7 +42,7 @@ onReadyMessage(ready, fail, (/** @type {any} */ msg) => {
  * @param {string | null} module the module's run file (frozen, finetune)
  */
 function start(settings, workers, module) {
-  if (search) { self.postMessage({ type: FromCodesign.ERROR, message: 'this coordinator already ran a body search' }); return; }
+  if (search) { scope.postMessage({ type: FromCodesign.ERROR, message: 'this coordinator already ran a body search' }); return; }
   try {
     search = new Codesign(settings, module);
   } catch (error) {
@@ -51,10 +52,10 @@ function start(settings, workers, module) {
   const count = workerCount(workers);
   pool = new EvaluatorPool(count, {
     done: tellIteration, failed: fail, settled: () => {},
-    recovered: (message) => self.postMessage({ type: FromCodesign.RECOVERED, message }),
+    recovered: (message) => scope.postMessage({ type: FromCodesign.RECOVERED, message }),
   });
   started = performance.now();
-  self.postMessage({ type: FromCodesign.STARTED, planned: search.budget, workers: count,
+  scope.postMessage({ type: FromCodesign.STARTED, planned: search.budget, workers: count,
     layout: search.layout() });
   nextIteration();
 }
@@ -74,7 +75,7 @@ function tellIteration(fitness) {
   if (!search || over) return;
   const seconds = wallSeconds();
   const record = search.tell(fitness, seconds);
-  self.postMessage({
+  scope.postMessage({
     type: FromCodesign.ITERATION, record, evaluations: search.evaluations, planned: search.budget,
     gallery: search.gallery(), seconds,
   });
@@ -83,7 +84,7 @@ function tellIteration(fitness) {
 
 /**
  * Sends the archive's body in `cell` with its brain (null, with a message, when that cell is empty).
- * @param {[number, number]} cell @param {unknown} ticket
+ * @param {[number, number]} cell @param {number} ticket
  */
 function sendEntry(cell, ticket) {
   if (!search) return;
@@ -92,9 +93,9 @@ function sendEntry(cell, ticket) {
     if (index < 0) throw new Error('no body in that cell yet');
     // with the search's file so far (entry `index` in it): what Fine-tune starts from
     const source = search.runFile(pool?.workers.length ?? 1, wallSeconds());
-    self.postMessage({ type: FromCodesign.ENTRY, cell, ticket, entry: { ...search.entry(index), index, source } });
+    scope.postMessage({ type: FromCodesign.ENTRY, cell, ticket, entry: { ...search.entry(index), index, source } });
   } catch (error) {
-    self.postMessage({ type: FromCodesign.ENTRY, cell, ticket, entry: null, message: messageOf(error) });
+    scope.postMessage({ type: FromCodesign.ENTRY, cell, ticket, entry: null, message: messageOf(error) });
   }
 }
 
@@ -113,12 +114,12 @@ function finish(stopped) {
   const runFile = search.evaluations > 0 ? search.runFile(pool?.workers.length ?? 1, wallSeconds()) : null;
   pool?.terminate();
   pool = null;
-  self.postMessage({ type: FromCodesign.DONE, stopped, runFile });
+  scope.postMessage({ type: FromCodesign.DONE, stopped, runFile });
 }
 
 /** Reports an error and ends the search. @param {string} message */
 function fail(message) {
   if (over) return;
-  self.postMessage({ type: FromCodesign.ERROR, message });
+  scope.postMessage({ type: FromCodesign.ERROR, message });
   finish(true);
 }

@@ -9,7 +9,7 @@
 import { decimal } from '../format.js';
 
 /** @typedef {import('./protocol.js').GalleryEntry} GalleryEntry */
-/** @typedef {{columns: number, rows: number, minVoxels: number, maxVoxels: number, sizeBin: number, maxFeet: number}} Layout */
+/** @typedef {import('./protocol.js').Layout} Layout */
 
 /** Canvas size of one body (CSS pixels). */
 const BODY_W = 72;

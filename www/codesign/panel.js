@@ -10,6 +10,7 @@
  * Problems (a wrong module, a drawing that is no body) are said in words that stay.
  */
 import { foundBody } from '../brain.js';
+import { byId } from '../dom.js';
 import { download } from '../export.js';
 import { messageOf, spawn } from '../kit.js';
 import { plain } from '../message.js';
@@ -36,37 +37,33 @@ const NOT_STARTED = 'The search did not start: the message under the buttons say
  * @property {(text: string, source?: string) => void} message  an error, in words that stay until closed ('' with a source: its error goes)
  */
 
-/** @typedef {{controller: string, shape: string, genome: number[], fitness: number, index: number, source: string}} Entry  a body with its brain, entry `index` of the search's file `source` */
+/** @typedef {import('./protocol.js').Entry} Entry  a body with its brain, entry `index` of the search's file `source` */
+/** @typedef {import('../kit.js').WorkerOf<'codesign/coordinator.js'>} Coordinator */
 
 export class CodesignPanel {
   /** @param {Document} doc @param {CodesignHooks} hooks */
   constructor(doc, hooks) {
-    const el = (/** @type {string} */ id) => {
-      const found = doc.getElementById(id);
-      if (!found) throw new Error(`the page has no #${id}`);
-      return /** @type {any} */ (found);
-    };
     this.hooks = hooks;
-    this.brain = /** @type {HTMLSelectElement} */ (el('codesign-brain'));
-    for (const option of this.brain.options) option.textContent = BRAIN_WORDS[/** @type {keyof BRAIN_WORDS} */ (option.value)].menu;
-    this.from = /** @type {HTMLSelectElement} */ (el('codesign-from'));
+    this.brain = byId(doc, 'codesign-brain', HTMLSelectElement);
+    for (const option of this.brain.options) option.textContent = BRAIN_WORDS[/** @type {keyof typeof BRAIN_WORDS} */ (option.value)].menu;
+    this.from = byId(doc, 'codesign-from', HTMLSelectElement);
     this.from.querySelector('option[value="box"]')?.replaceChildren(BOX_WORDS);
     for (const n of doc.querySelectorAll('.codesign-batch')) n.textContent = String(QUICK.batch); // the legend's round, as planned
-    this.budget = /** @type {HTMLInputElement} */ (el('codesign-budget'));
-    this.seconds = /** @type {HTMLInputElement} */ (el('codesign-seconds'));
+    this.budget = byId(doc, 'codesign-budget', HTMLInputElement);
+    this.seconds = byId(doc, 'codesign-seconds', HTMLInputElement);
     this.buttons = {
-      start: /** @type {HTMLButtonElement} */ (el('codesign-start')), stop: /** @type {HTMLButtonElement} */ (el('codesign-stop')),
-      race: /** @type {HTMLButtonElement} */ (el('codesign-race')), share: /** @type {HTMLButtonElement} */ (el('codesign-share')),
-      export: /** @type {HTMLButtonElement} */ (el('codesign-export')),
+      start: byId(doc, 'codesign-start', HTMLButtonElement), stop: byId(doc, 'codesign-stop', HTMLButtonElement),
+      race: byId(doc, 'codesign-race', HTMLButtonElement), share: byId(doc, 'codesign-share', HTMLButtonElement),
+      export: byId(doc, 'codesign-export', HTMLButtonElement),
     };
-    this.progress = /** @type {HTMLElement} */ (el('codesign-progress'));
+    this.progress = byId(doc, 'codesign-progress');
     /** The dot between the progress and the status, shown once there is a progress to say. */
-    this.sep = /** @type {HTMLElement} */ (el('codesign-sep'));
-    this.summary = /** @type {HTMLElement} */ (el('codesign-summary'));
-    this.status = /** @type {HTMLElement} */ (el('codesign-status'));
-    this.gallery = new Gallery(el('codesign-gallery'), (cell) => this.load(cell));
-    paintLegend(el('codesign-scale'), el('codesign-no-speed'));
-    /** @type {Worker | null} */
+    this.sep = byId(doc, 'codesign-sep');
+    this.summary = byId(doc, 'codesign-summary');
+    this.status = byId(doc, 'codesign-status');
+    this.gallery = new Gallery(byId(doc, 'codesign-gallery'), (cell) => this.load(cell));
+    paintLegend(byId(doc, 'codesign-scale'), byId(doc, 'codesign-no-speed'));
+    /** @type {Coordinator | null} */
     this.coordinator = null;
     this.running = false;
     this.starting = false;
@@ -74,7 +71,10 @@ export class CodesignPanel {
     this.settings = null;
     /** The coordinator said the search started (errors before that: 'did not start'). */
     this.started = false;
-    /** The latest search's last round (its summary says how long it took once it ends). @type {any} */
+    /**
+     * The latest search's last round (its summary says how long it took once it ends).
+     * @type {Extract<import('./protocol.js').FromCodesignMessage, {type: 'iteration'}> | null}
+     */
     this.lastRound = null;
     /** The latest search's run file (when it ended). @type {string | null} */
     this.runFile = null;
@@ -165,7 +165,7 @@ export class CodesignPanel {
     this.update();
   }
 
-  /** @param {Worker} from @param {any} msg */
+  /** @param {Coordinator} from @param {import('./protocol.js').FromCodesignMessage} msg */
   onMessage(from, msg) {
     if (from !== this.coordinator) return;
     switch (msg.type) {
@@ -192,7 +192,7 @@ export class CodesignPanel {
     }
   }
 
-  /** @param {{record: any, evaluations: number, planned: number, gallery: import('./protocol.js').GalleryEntry[], seconds: number}} msg */
+  /** @param {Extract<import('./protocol.js').FromCodesignMessage, {type: 'iteration'}>} msg */
   onIteration(msg) {
     const t0 = performance.now();
     const { record, gallery } = msg;
@@ -223,7 +223,7 @@ export class CodesignPanel {
     this.update();
   }
 
-  /** The search ended with a problem: says it, and ends the coordinator. @param {Worker} which @param {string} error @param {string} status */
+  /** The search ended with a problem: says it, and ends the coordinator. @param {Coordinator} which @param {string} error @param {string} status */
   end(which, error, status) {
     if (which !== this.coordinator) return;
     which.terminate();

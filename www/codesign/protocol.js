@@ -58,6 +58,55 @@ export const FromCodesign = Object.freeze({
 });
 
 /**
+ * A message from the page to the body-search coordinator (the list above).
+ * @typedef {{type: typeof ToCodesign.START, settings: CodesignSettings, workers: number, module: string | null}
+ *   | {type: typeof ToCodesign.STOP}
+ *   | {type: typeof ToCodesign.ENTRY, cell: [number, number], ticket: number}
+ *   | {type: typeof ToCodesign.CRASH_WORKER, index: number}} ToCodesignMessage
+ */
+
+/**
+ * A message from the body-search coordinator to the page (the list above).
+ * @typedef {{type: typeof FromCodesign.STARTED, planned: number, workers: number, layout: Layout}
+ *   | {type: typeof FromCodesign.ITERATION, record: IterationRecord, evaluations: number, planned: number,
+ *       gallery: GalleryEntry[], seconds: number}
+ *   | {type: typeof FromCodesign.ENTRY, cell: [number, number], ticket: number, entry: Entry, message?: undefined}
+ *   | {type: typeof FromCodesign.ENTRY, cell: [number, number], ticket: number, entry: null, message: string}
+ *   | {type: typeof FromCodesign.RECOVERED, message: string}
+ *   | {type: typeof FromCodesign.DONE, stopped: boolean, runFile: string | null}
+ *   | {type: typeof FromCodesign.ERROR, message: string}} FromCodesignMessage
+ */
+
+/**
+ * The archive's shape, as `Codesign.layout()` returns it.
+ * @typedef {object} Layout
+ * @property {number} columns    size bins
+ * @property {number} rows       feet bins
+ * @property {number} minVoxels
+ * @property {number} maxVoxels
+ * @property {number} sizeBin    voxels per size bin
+ * @property {number} maxFeet    the last feet bin holds this many feet or more
+ */
+
+/**
+ * An iteration's record in the search's file, as `Codesign.tell` returns it (non-finite values null).
+ * @typedef {object} IterationRecord
+ * @property {number} iteration
+ * @property {number} evaluations  so far, this iteration included
+ * @property {number | null} best  the archive's best fitness (m/s)
+ * @property {number} filled       archive cells filled
+ * @property {number} qd_score     the sum of the elites' positive fitness values
+ * @property {number} kept         children that took a cell this iteration
+ * @property {number} wall_seconds
+ */
+
+/**
+ * A body with its brain: entry `index` of the search's file `source` (JSON text), as a plain run
+ * file's best (`Codesign.entry`).
+ * @typedef {{controller: string, shape: string, genome: number[], fitness: number, index: number, source: string}} Entry
+ */
+
+/**
  * @typedef {object} CodesignSettings  a body search's settings, the options of `vsr codesign`
  * @property {'frozen' | 'finetune' | 'scratch'} brain
  * @property {string} [controller]  the family for 'scratch' (default attention)

@@ -59,7 +59,7 @@ export class VsrRobot extends HTMLElement {
     this.errorBox.hidden = true;
     root.append(style, this.canvas, this.badge, this.errorBox);
     this.renderer = new Renderer(this.canvas);
-    /** @type {Worker | null} */
+    /** @type {import('../kit.js').WorkerOf<'worker.js'> | null} */
     this.worker = null;
     /** Which load the answers belong to: a newer attribute change makes older fetches moot. */
     this.generation = 0;
@@ -140,7 +140,7 @@ export class VsrRobot extends HTMLElement {
     this.ensureWorker().postMessage({ type: ToWorker.LOAD, params });
   }
 
-  /** @returns {Worker} this element's simulation worker, started if needed */
+  /** @returns {import('../kit.js').WorkerOf<'worker.js'>} this element's simulation worker, started if needed */
   ensureWorker() {
     if (this.worker) return this.worker;
     const worker = spawn('worker.js', (msg) => { if (this.worker === worker) this.onMessage(msg); },
@@ -150,7 +150,7 @@ export class VsrRobot extends HTMLElement {
     return worker;
   }
 
-  /** @param {any} msg a message from the simulation worker */
+  /** @param {import('../protocol.js').FromWorkerMessage} msg a message from the simulation worker */
   onMessage(msg) {
     switch (msg.type) {
       case FromWorker.READY: this.renderer.setPhysics(msg.physics); break;
