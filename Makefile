@@ -4,6 +4,7 @@
 #   make site        the page as one folder for any static web server, at any sub-path, offline
 #                    after the first visit: target/site (scripts/site.mjs; docs/teaching.md says
 #                    how a teacher puts it online; .github/workflows/pages.yml publishes it)
+#   make lint        rustfmt and clippy, then the page's types (make typecheck: builds the wasm package first)
 #   make test-cluster  the campaign recipes from a bare folder: GNU parallel, and Slurm on a
 #                      single-node Slurm started here (scripts/slurm-local.sh; needs root)
 #   make test-python the Python package (python/): wheel, install, pytest (docs/python.md)
@@ -17,10 +18,11 @@ export PATH := $(HOME)/.cargo/bin:$(PATH)
 PORT ?= 8080
 WASM_PACK_BUILD := wasm-pack build --release --target web --out-dir www/pkg --out-name vsr
 
-# The steps depend on each other's results (setup before builds, wasm before test-web).
+# The steps depend on each other's results (setup before builds, wasm before typecheck and test-web).
+# A target runs once per make: the wasm package that lint's typecheck built is the one test-web loads.
 .NOTPARALLEL:
 
-.PHONY: run test setup setup-test wasm serve lint test-native test-wasm test-web test-cluster \
+.PHONY: run test setup setup-test wasm serve lint lint-rust typecheck test-native test-wasm test-web test-cluster \
 	test-parallel test-slurm test-python test-python-install test-browsers bench-wasm bench-python web-package site
 
 run: setup wasm serve
@@ -45,11 +47,19 @@ serve:
 site: setup wasm
 	node scripts/site.mjs
 
-lint:
+lint: lint-rust typecheck
+
+lint-rust:
 	cargo fmt --all --check
 	cargo clippy --all-targets -- -D warnings
 	cargo clippy -p vsr-python --all-targets -- -D warnings
 	cargo clippy --lib --tests --target wasm32-unknown-unknown -- -D warnings
+
+## The page's types: TypeScript (an npm dev dependency) checks every file of www/, JavaScript
+## with JSDoc types, strict (tsconfig.json), and its calls into the wasm package against the
+## declarations wasm-bindgen writes (www/pkg/vsr.d.ts): so after the wasm build. Emits nothing.
+typecheck: wasm
+	npm run --silent typecheck
 
 test-native:
 	cargo test --release
