@@ -125,10 +125,11 @@ function siteIndex(html, page, app, version) {
 
 /**
  * Builds the site into `out` (replaced whole).
- * @param {{out?: string, source?: string, log?: (line: string) => void}} [options]
+ * @param {{out?: string, source?: string, salt?: string, log?: (line: string) => void}} [options] salt: mixed
+ *   into the version (a test's second build of the same files, as a new version)
  * @returns {Promise<{out: string, version: string, files: string[], bytes: number, precache: string[]}>}
  */
-export async function buildSite({ out = process.env.SITE_OUT ?? path.join(ROOT, 'target', 'site'), source = process.env.SITE_SOURCE_URL ?? '', log = console.log } = {}) {
+export async function buildSite({ out = process.env.SITE_OUT ?? path.join(ROOT, 'target', 'site'), source = process.env.SITE_SOURCE_URL ?? '', salt = '', log = console.log } = {}) {
   if (!existsSync(path.join(WWW, 'pkg', 'vsr_bg.wasm'))) throw new Error('www/pkg/vsr_bg.wasm is missing: build the wasm core first (`make wasm`)');
   /** The page's files by path in www/ (index.html apart), the vendored libraries with them. @type {Map<string, Buffer>} */
   const page = new Map();
@@ -156,7 +157,7 @@ export async function buildSite({ out = process.env.SITE_OUT ?? path.join(ROOT, 
 
   const index = await readFile(path.join(WWW, 'index.html'), 'utf8');
   const worker = await readFile(path.join(WWW, SERVICE_WORKER), 'utf8');
-  const hash = createHash('sha256');
+  const hash = createHash('sha256').update(salt);
   for (const [name, bytes] of [...page, ...data, ['index.html', Buffer.from(index)], [SW_NAME, Buffer.from(worker)]]) {
     hash.update(`${name}\0${bytes.length}\0`);
     hash.update(/** @type {Buffer} */ (bytes));

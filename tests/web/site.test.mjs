@@ -145,3 +145,49 @@ test('the guides the page links open as readable pages, and every link in them l
     }
   }
 });
+
+test('offline after the first visit: with the network cut, a reload draws the page, a robot walks, the modules and the guide open', async () => {
+  const { page, problems, context } = await open(site, { width: 1400, height: 900 });
+  await walks(page);
+  await waitForText(page, 'offline-status', /Kept on this device/, 60_000);
+  await page.waitForFunction(() => navigator.serviceWorker.controller !== null, undefined, { timeout: 20_000 });
+  await context.setOffline(true);
+  await page.reload();
+  await walks(page);
+  await page.waitForFunction(() => (/** @type {HTMLSelectElement} */ (document.getElementById('module'))).options.length > 3, undefined, { timeout: 20_000 });
+  await page.waitForFunction(() => { const img = /** @type {HTMLImageElement} */ (document.getElementById('study-image')); return img.complete && img.naturalWidth > 0; },
+    undefined, { timeout: 20_000 });
+  // A pretrained module onto the drawn robot, from the kept copy.
+  await byTestId(page, 'load-pretrained').click();
+  await waitForText(page, 'status', /attention/, 20_000);
+  await walks(page);
+  await page.screenshot({ path: '/tmp/site-offline-1400.png' });
+  // A chapter's link and the teachers' guide, offline too.
+  await page.goto(`${site}?chapter=4`);
+  await page.locator('#tour-box[data-chapter="4"]').waitFor({ timeout: 30_000 });
+  await page.goto(`${site}docs/teaching.html`);
+  assert.match(String(await byTestId(page, 'doc').locator('h1').textContent()), /Teaching/);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('a new version replaces the kept copy as a whole: the page offers it, switches on a click, and only its files stay kept', async () => {
+  const { page, problems, context } = await open(site, { width: 1400, height: 900 });
+  await walks(page);
+  await page.waitForFunction(() => navigator.serviceWorker.controller !== null, undefined, { timeout: 60_000 });
+  const before = built.version;
+  const next = await buildSite({ out: path.join(folder, 'site'), salt: 'a later build', log: () => {} });
+  assert.notEqual(next.version, before);
+  await page.evaluate(async () => { await (await navigator.serviceWorker.getRegistration())?.update(); });
+  await waitForText(page, 'offline-status', /A new version of this page is ready/, 60_000);
+  assert.equal(await page.evaluate(() => document.querySelector('meta[name="vsr-site"]')?.getAttribute('content')), before, 'the old page goes on until asked');
+  await Promise.all([page.waitForEvent('load', { timeout: 60_000 }), byTestId(page, 'offline-update').click()]);
+  await walks(page);
+  assert.equal(await page.evaluate(() => document.querySelector('meta[name="vsr-site"]')?.getAttribute('content')), next.version, 'the page is the new one');
+  const scripts = await page.evaluate(() => performance.getEntriesByType('resource').map((e) => e.name).filter((n) => /\/app-[0-9a-f]+\//.test(n)));
+  assert.ok(scripts.length > 0 && scripts.every((n) => n.includes(`/app-${next.version}/`)), 'every script of the new page from the new version');
+  assert.deepEqual(await page.evaluate(() => caches.keys()), [`vsr-site-${next.version}`], 'one kept copy, the new one');
+  assert.deepEqual(problems, []);
+  await context.close();
+  built = next;
+});

@@ -44,9 +44,14 @@ function offerUpdate(waiting) {
 /** Registers the service worker and follows it. */
 async function start() {
   if (!VERSION || !('serviceWorker' in navigator)) return;
-  const hadController = navigator.serviceWorker.controller !== null;
-  // A page controlled before and handed to another version reloads into it (never an old page with a new core).
-  navigator.serviceWorker.addEventListener('controllerchange', () => { if (hadController) location.reload(); });
+  /** Whether a version of the site serves this page (none on a first visit, until the first one is kept). */
+  const served = () => navigator.serviceWorker.controller !== null;
+  let wasServed = served();
+  // A page served by one version and handed to another reloads into it (never an old page with a new core).
+  navigator.serviceWorker.addEventListener('controllerchange', () => {
+    if (wasServed) location.reload();
+    wasServed = true;
+  });
   let registration;
   try {
     registration = await navigator.serviceWorker.register('sw.js', { updateViaCache: 'none' });
@@ -54,20 +59,20 @@ async function start() {
     say(`This page could not be kept for offline use (${error instanceof Error ? error.message : error}); it works online as before.`, 'failed');
     return;
   }
-  if (registration.waiting && hadController) offerUpdate(registration.waiting);
+  if (registration.waiting && served()) offerUpdate(registration.waiting);
   registration.addEventListener('updatefound', () => {
     const installing = registration.installing;
     installing?.addEventListener('statechange', () => {
       if (installing.state === 'installed') {
-        if (hadController) offerUpdate(installing);
+        if (served()) offerUpdate(installing);
         else say('Kept on this device: the page now opens and runs without the network.', 'kept');
       }
-      if (installing.state === 'redundant' && !hadController) {
+      if (installing.state === 'redundant' && !served()) {
         say('This page could not be kept for offline use (a file could not be fetched); it works online as before.', 'failed');
       }
     });
   });
-  if (hadController && !navigator.onLine) say('No network: the page runs from its copy on this device.', 'offline');
+  if (served() && !navigator.onLine) say('No network: the page runs from its copy on this device.', 'offline');
   addEventListener('offline', () => say('No network: the page runs from its copy on this device.', 'offline'));
   addEventListener('online', () => { if (line()?.dataset.state === 'offline') say('', ''); });
 }
