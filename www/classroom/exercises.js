@@ -261,7 +261,8 @@ export const TASKS = [
       const shared = lab.defaults.attentionGenes;
       return { answer: shared, shown: `${shared} genes`,
         why: `The page counts ${genes(a)} genes for the ${size(3, 3)} box (${a.voxels} voxels) and ${genes(b)} for the biped (${b.voxels} voxels). `
-          + `${shared} of them are the attention block, the same for any body; the rest (four weights for each voxel's place, and one bias) depend on the body or may change with it.` };
+          + `${shared} of them are the attention block, the same for any body; the rest (four weights for each voxel's place, and one bias) depend on the body or may change with it. `
+          + `Those ${shared} genes reach the robot only through four numbers (a, b, c and d) that set every voxel's attention matrix: that is all a kept module brings to a new body.` };
     },
   },
   {

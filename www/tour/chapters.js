@@ -140,7 +140,7 @@ export const CHAPTERS = [
       'Fine-tuning evolves only those weights and keeps the attention. In the paper (its Fig. 7) and our study it gets fast sooner than a brain evolved from scratch: in our study it was ahead after 2,500 evaluations on all four bodies we tried, and by the end of their budgets (10,000 evaluations of fine-tuning, 30,000 from scratch) no difference between the two was detected.',
     ],
     task: 'Read its one-shot speed on the line under the robot, then press Fine-tune: a run from scratch with the same budget follows by itself.',
-    notice: `One-shot, the robot hardly moves: a brain is made for its body. Each run takes ${RUN_TIME}; the numbers above the chart say which one is running and how long it has left. The chart draws fine-tuning, then from scratch as a dashed line: compare them over the first few hundred evaluations, where fine-tuning starts from a brain that already works. By the end of this short run either may lead: one run is one sample; the study's figure has five runs of each.`,
+    notice: `One-shot, the robot hardly moves: a brain is made for its body. What crossed to this body is only the attention, and it acts through four numbers that set every voxel's attention matrix; the weights that drive each voxel were drawn anew. Each run takes ${RUN_TIME}; the numbers above the chart say which one is running and how long it has left. The chart draws fine-tuning, then from scratch as a dashed line: compare them over the first few hundred evaluations, where fine-tuning starts from a brain that already works. By the end of this short run either may lead: one run is one sample; the study's figure has five runs of each.`,
     setup: { rows: BIPED_LARGE, brain: { module: ATTENTION, on: 'drawn' }, terrain: VIEW, run: QUICK, compare: true },
     target: '#scene, #run-finetune',
     figure: 'finetune-biped-large',
@@ -150,11 +150,13 @@ export const CHAPTERS = [
     text: [
       'So far you chose a body and evolved a brain for it. Now turn it around: keep the brain and let evolution search the body.',
       `The brain is the small biped's attention module, its attention kept exactly as it was evolved, as the Fine-tune button keeps it; only the body and each voxel's four output weights evolve. The search starts from a plain ${size(3, 3)} box, adds and removes voxels, and keeps the fastest body of each size and each number of feet.`,
-      'The attention is the same for any body, so one brain can be tried on many bodies without starting again: this is what the paper means by a brain that can be taken apart and put together in other forms.',
+      'The attention is the same for any body, so it can be carried to many bodies, while each body gets output weights evolved for it: this is what the paper means by a brain that can be taken apart and put together in other forms.',
     ],
     task: 'Under “Search bodies for this brain”, press “Search bodies”. When the gallery fills, click a green body to watch it walk.',
     notice: 'The gallery fills round by round: small bodies first, then larger ones and more feet. Green bodies are the fastest; an outline marks bodies new in the last round. The fastest body is often not the biped the brain was evolved on. Each body\'s speed is measured again every round on new hills, so a lucky walk does not stay on top. A quick search is short: its bodies walk slower than the biped this brain had 30,000 evaluations to master. '
-      + 'In our study of this search (ten long searches per brain, on hills the robots never trained on), this frozen brain found faster bodies than searches that had to evolve a plain network or a messaging network together with the body; against an attention brain evolved from scratch with the body, the searches were too few to tell.',
+      + 'What the bodies share is not a whole brain: the kept attention reaches every voxel through just four numbers (a, b, c and d, which set every attention matrix), and each body\'s output weights are evolved for it. '
+      + 'In our study of this search (ten long searches per brain, 6,000 walks each, on hills the robots never trained on; the 30,100 walks that made the module are not counted), the kept attention found faster bodies than searches that had to evolve a plain network or a messaging network together with the body; against an attention brain evolved from scratch with the body, the searches were too few to tell. '
+      + 'Part of that lead is attention itself, not the module: attention evolved from scratch was also ahead of the plain network, by about half as much, though ten searches are too few to be sure (a check made after the study). And every one of these searches used the same module, so whether other modules do as well is not known.',
     setup: { rows: null, brain: { module: ATTENTION, on: 'own' }, terrain: VIEW, run: QUICK, codesign: { brain: 'frozen', from: 'box' } },
     figure: 'codesign-unseen',
     target: '#codesign-panel',

@@ -103,13 +103,15 @@ export const FIGURES = [
     report: 'report-codesign/',
     file: 'codesign-rq3-unseen.svg',
     title: 'Searching for a body: a frozen brain from the biped against brains evolved with the body',
-    paper: 'Our own question (the paper moved brains only between bodies of the same kind). Ten searches per brain, each 6,000 evaluations from a 3 × 3 box. '
+    paper: 'Our own question (the paper moved brains only between bodies of the same kind). Ten searches per brain, each 6,000 evaluations from a 3 × 3 box; the 30,100 evaluations that made the biped\'s module are not counted. '
       + 'With the biped\'s attention kept frozen, the searches ended on faster bodies than with a plain network (mlp) or a messaging one (mlp-comm) evolved along with the body; '
       + 'against attention evolved from scratch with the body, ten searches were too few to tell. '
+      + 'Part of the lead over mlp is attention itself: attention evolved from scratch was ahead of mlp by about half as much, though ten searches are too few to be sure (a check made after the study). '
+      + 'All twenty searches that started from a module used the same one. '
       + 'The box "finetune" sits highest of the five (the fastest median), yet ten searches were again too few to tell it apart from attention evolved from scratch. '
       + 'The fastest body of each brain is in the playground\'s list of modules.',
     read: `${BOXES} A point is one search's final best body, with its brain, walking ten hilly terrains it was not trained on. `
-      + 'The boxes: frozen, the biped\'s attention kept exactly as it was evolved (as the Fine-tune button keeps it), only the body and the output weights evolving; '
+      + 'The boxes: frozen, the biped\'s attention kept exactly as it was evolved (as the Fine-tune button keeps it; it reaches the voxels through four numbers that set every attention matrix), only the body and the output weights evolving; '
       + 'finetune, started from the same module, every gene evolving with the body, its attention too (a name from our study\'s files: not what the Fine-tune button does); '
       + 'scratch-attention, scratch-mlp and scratch-mlp-comm, each brain evolved from scratch along with the body. The figure\'s title calls this search "rq3": only its name in our files.',
     runs: [],
@@ -120,7 +122,8 @@ export const FIGURES = [
     file: 'codesign-rq3-bodies.svg',
     title: 'Searching for a body: the body every search ended on',
     paper: 'Our own question. None of the fifty bodies is the biped the frozen brain was evolved on: the searches invented bodies of 5 to 20 voxels.',
-    read: 'One small drawing per search (a row per brain, a column per seed), with its mean speed on the ten unseen terrains. '
+    read: 'One small drawing per search (a row per brain, fastest first), with its mean speed on the ten unseen terrains; "10 of 10 runs finished": every search of that brain ended. '
+      + 'The top row, for reference, is the module on the small biped it was evolved on, measured the same way: after its 30,100 evaluations on that body it walks faster than every body the searches found in 6,000. '
       + 'The fastest body of each brain is in the playground\'s list of modules: choose it there to watch it walk.',
     runs: [],
   },
