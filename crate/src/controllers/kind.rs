@@ -1,6 +1,8 @@
 //! The controller families a user can pick by name, their parameter-count formulas, and
 //! the factory that builds one for a topology.
 
+use super::any_body::{any_body_len, AnyBody};
+use super::local_inputs::LocalInputs;
 use super::params::check_genes;
 use super::{Attention, Controller, Mlp, MlpComm, SlowAttention, Topology};
 use crate::{Error, Result};
@@ -9,7 +11,8 @@ use std::fmt;
 use std::str::FromStr;
 
 /// A controller family, named in run files and on the command line
-/// (`attention`, `mlp`, `mlp-comm`, `slow-attention`, `mlp-comm-latched`).
+/// (`attention`, `mlp`, `mlp-comm`, `slow-attention`, `mlp-comm-latched`, and the
+/// body-independent `attention-any`, `mlp-any`, `mlp-comm-any`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum ControllerKind {
@@ -24,16 +27,26 @@ pub enum ControllerKind {
     /// MLP-Comm exchanging messages only when the actuation is latched (every 20 steps), as
     /// the original code does; same genome as `MlpComm`.
     MlpCommLatched,
+    /// Attention for any body: the attention block, a bias and each voxel's four weights
+    /// computed from its local inputs (`any_body`): 61 parameters for every body.
+    AttentionAny,
+    /// MLP for any body (no messages): 29 parameters for every body.
+    MlpAny,
+    /// MLP-Comm for any body (messages are the only difference from `mlp-any`): 285.
+    MlpCommAny,
 }
 
 impl ControllerKind {
     /// Every kind, in the order used for help texts.
-    pub const ALL: [ControllerKind; 5] = [
+    pub const ALL: [ControllerKind; 8] = [
         ControllerKind::Attention,
         ControllerKind::Mlp,
         ControllerKind::MlpComm,
         ControllerKind::SlowAttention,
         ControllerKind::MlpCommLatched,
+        ControllerKind::AttentionAny,
+        ControllerKind::MlpAny,
+        ControllerKind::MlpCommAny,
     ];
 
     /// The name accepted by `FromStr` and printed by `Display`.
@@ -44,10 +57,40 @@ impl ControllerKind {
             ControllerKind::MlpComm => "mlp-comm",
             ControllerKind::SlowAttention => "slow-attention",
             ControllerKind::MlpCommLatched => "mlp-comm-latched",
+            ControllerKind::AttentionAny => "attention-any",
+            ControllerKind::MlpAny => "mlp-any",
+            ControllerKind::MlpCommAny => "mlp-comm-any",
         }
     }
 
-    /// Genome length for a robot of `n_voxels` voxels (73 / 41 / 405 / 75 for the biped).
+    /// For a body-independent family, the classic family whose network it runs (its
+    /// per-voxel genes computed from local inputs); `None` for the classic families.
+    pub fn any_body_of(self) -> Option<ControllerKind> {
+        match self {
+            ControllerKind::AttentionAny => Some(ControllerKind::Attention),
+            ControllerKind::MlpAny => Some(ControllerKind::Mlp),
+            ControllerKind::MlpCommAny => Some(ControllerKind::MlpComm),
+            _ => None,
+        }
+    }
+
+    /// True when one genome drives every body (the genome length does not depend on it).
+    pub fn is_body_independent(self) -> bool {
+        self.any_body_of().is_some()
+    }
+
+    /// True when the family has the paper's attention block first in its genome.
+    pub fn has_attention(self) -> bool {
+        matches!(
+            self,
+            ControllerKind::Attention
+                | ControllerKind::SlowAttention
+                | ControllerKind::AttentionAny
+        )
+    }
+
+    /// Genome length for a robot of `n_voxels` voxels (73 / 41 / 405 / 75 for the biped;
+    /// 61 / 29 / 285 for every body, body-independent).
     pub fn param_count(self, n_voxels: usize) -> usize {
         match self {
             ControllerKind::Attention => Attention::param_count_for(n_voxels),
@@ -56,6 +99,9 @@ impl ControllerKind {
                 MlpComm::param_count_for(n_voxels)
             }
             ControllerKind::SlowAttention => SlowAttention::param_count_for(n_voxels),
+            ControllerKind::AttentionAny | ControllerKind::MlpAny | ControllerKind::MlpCommAny => {
+                self.any_body_of().map_or(0, any_body_len)
+            }
         }
     }
 
@@ -100,6 +146,10 @@ pub fn build(kind: ControllerKind, topology: &Topology) -> Box<dyn Controller> {
         ControllerKind::MlpComm => Box::new(MlpComm::new(topology.clone())),
         ControllerKind::SlowAttention => Box::new(SlowAttention::new(n)),
         ControllerKind::MlpCommLatched => Box::new(MlpComm::latched(topology.clone())),
+        ControllerKind::AttentionAny | ControllerKind::MlpAny | ControllerKind::MlpCommAny => {
+            let classic = kind.any_body_of().unwrap_or(ControllerKind::Attention);
+            Box::new(AnyBody::new(classic, topology, LocalInputs::CHOSEN))
+        }
     }
 }
 
@@ -140,7 +190,7 @@ mod tests {
                 (c.needs_every_step(), c.attention().is_some())
             })
             .collect();
-        // attention, mlp, mlp-comm, slow-attention, mlp-comm-latched
+        // attention, mlp, mlp-comm, slow-attention, mlp-comm-latched, and the any-body three
         assert_eq!(
             flags,
             [
@@ -148,7 +198,10 @@ mod tests {
                 (false, false),
                 (true, false),
                 (true, true),
-                (false, false)
+                (false, false),
+                (false, true),
+                (false, false),
+                (true, false)
             ]
         );
     }

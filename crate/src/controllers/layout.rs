@@ -8,6 +8,8 @@
 //! - slow attention: the same with 3 tail genes (bias, then alpha and eta genes)
 //! - MLP: 1 row of (4 per voxel) | bias                         (W[4 i + j], b)
 //! - MLP-Comm: 5 rows of (8 per voxel, then the row's bias)     (P[o (8n + 1) + 8 i + j])
+//! - the body-independent families (any_body): the whole genome is shared, so a body change
+//!   keeps it as it is
 
 use super::slow::SLOW_GENES;
 use super::{ControllerKind, ATTENTION_PARAMS};
@@ -34,6 +36,10 @@ impl GenomeLayout {
             ControllerKind::SlowAttention => (ATTENTION_PARAMS, 4, 1, 0, 1 + SLOW_GENES),
             ControllerKind::Mlp => (0, 1, 4, 0, 1),
             ControllerKind::MlpComm | ControllerKind::MlpCommLatched => (0, 5, 8, 1, 0),
+            // One genome for every body: all of it is shared (any_body).
+            ControllerKind::AttentionAny | ControllerKind::MlpAny | ControllerKind::MlpCommAny => {
+                (kind.param_count(0), 0, 0, 0, 0)
+            }
         };
         GenomeLayout {
             prefix,

@@ -11,10 +11,12 @@
 //! If the lengths of `sensors` or `out` do not match the topology, `control` writes zeros to
 //! `out` and does nothing else (check once per episode with [`check_io`]).
 
+mod any_body;
 mod attention;
 mod frozen;
 mod kind;
 mod layout;
+mod local_inputs;
 mod mlp;
 mod mlp_comm;
 mod params;
@@ -22,11 +24,14 @@ mod slow;
 mod tanh_lanes;
 mod topology;
 
+pub(crate) use any_body::expand as expand_any_body;
+pub use any_body::AnyBody;
 pub use attention::{attention_terms, Attention, ATTENTION_PARAMS};
 pub(crate) use frozen::FrozenAttention;
 pub use kind::{build, ControllerKind};
 pub use layout::remap_genome;
 pub(crate) use layout::GenomeLayout;
+pub use local_inputs::{local_inputs, LocalInputs, LOCAL_INPUTS};
 pub use mlp::Mlp;
 pub use mlp_comm::MlpComm;
 pub use params::Params;

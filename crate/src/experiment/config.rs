@@ -5,6 +5,7 @@
 //! Nothing here depends on how the run is executed: the number of threads or workers is
 //! deliberately absent, because it never changes the result.
 
+use super::body_set::BodySet;
 use super::seeds::{terrain_name_for, TERRAIN_SEEDS};
 use crate::controllers::{ControllerKind, ATTENTION_PARAMS};
 use crate::error::{Error, Result};
@@ -110,6 +111,18 @@ pub struct SourceRun {
     pub genome: Vec<f32>,
 }
 
+/// Training on many bodies: every evaluation walks `per_evaluation` bodies drawn from `set`
+/// (without repeats, by the evaluation's own seed: `evaluation_seed(run seed, generation,
+/// index, Bodies)`), and its fitness is their mean speed. Only a body-independent controller
+/// can (one genome for every body).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct TrainingBodies {
+    /// The bodies (kept whole in the run file, so it replays alone).
+    pub set: BodySet,
+    /// Bodies walked by each evaluation.
+    pub per_evaluation: usize,
+}
+
 /// Everything that determines a run's result; see the module doc.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct EvolutionConfig {
@@ -127,6 +140,9 @@ pub struct EvolutionConfig {
     pub ga: GaConfig,
     /// For fine-tuning runs: the individual whose attention block is frozen.
     pub(crate) source: Option<SourceRun>,
+    /// For training on many bodies: the bodies (then `shape` is the set's first body).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bodies: Option<TrainingBodies>,
 }
 
 impl EvolutionConfig {
@@ -143,7 +159,30 @@ impl EvolutionConfig {
                 ..GaConfig::default()
             },
             source: None,
+            bodies: None,
         }
+    }
+
+    /// The paper's setup for one body-independent `controller` trained on many bodies: each
+    /// evaluation walks `per_evaluation` bodies drawn from `set`.
+    pub fn on_bodies(
+        set: BodySet,
+        per_evaluation: usize,
+        controller: ControllerKind,
+        budget_evals: u64,
+        seed: u64,
+    ) -> Result<Self> {
+        let first = set
+            .bodies
+            .first()
+            .cloned()
+            .ok_or_else(|| Error::Input(format!("the body set {} has no bodies", set.name)))?;
+        let mut config = EvolutionConfig::paper(first, controller, budget_evals, seed);
+        config.bodies = Some(TrainingBodies {
+            set,
+            per_evaluation,
+        });
+        Ok(config)
     }
 
     /// SPEC 10's fine-tuning of `source` on `shape`: same controller, the 32 attention genes
@@ -174,6 +213,9 @@ impl EvolutionConfig {
         }
         self.ga.validate(self.genome_len())?;
         check_budget(self.ga.budget_evals, self.ga.population)?;
+        if let Some(bodies) = &self.bodies {
+            self.validate_bodies(bodies)?;
+        }
         match &self.source {
             Some(source) => self.validate_source(source),
             None if self.ga.frozen_prefix > 0 => bad(format!(
@@ -182,6 +224,38 @@ impl EvolutionConfig {
             )),
             None => Ok(()),
         }
+    }
+
+    /// Many bodies need a body-independent controller and 1 to (set size) bodies per
+    /// evaluation; `shape` is the set's first body.
+    fn validate_bodies(&self, bodies: &TrainingBodies) -> Result<()> {
+        let (set, k) = (&bodies.set, bodies.per_evaluation);
+        if !self.controller.is_body_independent() {
+            let any: Vec<&str> = ControllerKind::ALL
+                .iter()
+                .filter(|c| c.is_body_independent())
+                .map(|c| c.name())
+                .collect();
+            return Err(Error::Input(format!(
+                "the {} controller has genes for each voxel of one body, so it cannot train on                  a body set; choose a controller for any body: {}",
+                self.controller,
+                any.join(", ")
+            )));
+        }
+        if set.bodies.first() != Some(&self.shape) {
+            return Err(Error::Input(format!(
+                "a run on the body set {} names its first body as its shape",
+                set.name
+            )));
+        }
+        if k == 0 || k > set.bodies.len() {
+            return Err(Error::Input(format!(
+                "bodies per evaluation must be between 1 and the {} bodies of {}, got {k}",
+                set.bodies.len(),
+                set.name
+            )));
+        }
+        Ok(())
     }
 
     /// Fine-tuning needs attention on both sides and exactly the attention block frozen.

@@ -20,7 +20,9 @@ use super::seeds::{evaluation_seed, Purpose};
 use crate::controllers::ControllerKind;
 use crate::error::{Error, Result};
 use crate::genetics::{Candidate, Ga, GaState};
+use crate::random::rng_from;
 use crate::simulation::{Shape, Terrain};
+use rand::Rng;
 use serde::{Deserialize, Serialize};
 use std::sync::Arc;
 
@@ -43,8 +45,12 @@ pub struct Job {
     /// The genome to evaluate.
     #[serde(skip)]
     pub genome: Vec<f32>,
-    /// The robot's shape.
+    /// The robot's shape (with `more_bodies`, the first body walked).
     pub(crate) shape: Shape,
+    /// When the run trains on many bodies: the other bodies this evaluation walks; the
+    /// fitness is the mean over every body. Empty otherwise (and then not serialized).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub(crate) more_bodies: Vec<Shape>,
     /// The controller family.
     pub(crate) controller: ControllerKind,
     /// The terrain name, e.g. `hilly-1-10-4821`.
@@ -72,14 +78,20 @@ impl Job {
         let n_voxels = self.shape.voxel_count();
         self.controller
             .check_genome("the job's genome", n_voxels, &self.genome)?;
-        Ok(fitness(
-            &self.shape,
-            terrain,
-            self.controller,
-            &self.genome,
-            Some(self.noise_seed),
-            self.seconds,
-        ))
+        let bodies = std::iter::once(&self.shape).chain(&self.more_bodies);
+        let speeds = bodies.map(|shape| {
+            fitness(
+                shape,
+                Arc::clone(&terrain),
+                self.controller,
+                &self.genome,
+                Some(self.noise_seed),
+                self.seconds,
+            )
+        });
+        // The mean over the bodies (NaN, the worst, if any exploded).
+        let sum: f64 = speeds.sum();
+        Ok(sum / (1 + self.more_bodies.len()) as f64)
     }
 }
 
@@ -148,11 +160,21 @@ impl Evolution {
     fn job(&self, c: Candidate) -> Job {
         let (seed, g, i) = (self.config.seed, c.generation, c.index);
         let terrain_seed = evaluation_seed(seed, g, i, Purpose::Terrain);
+        let (shape, more_bodies) = match &self.config.bodies {
+            None => (self.config.shape.clone(), Vec::new()),
+            Some(bodies) => {
+                let seed = evaluation_seed(seed, g, i, Purpose::Bodies);
+                let mut drawn = draw_bodies(&bodies.set.bodies, bodies.per_evaluation, seed);
+                let first = drawn.remove(0);
+                (first, drawn)
+            }
+        };
         Job {
             generation: g,
             index: i,
             genome: c.genome,
-            shape: self.config.shape.clone(),
+            shape,
+            more_bodies,
             controller: self.config.controller,
             terrain: self.config.terrain.name_for(terrain_seed),
             noise_seed: evaluation_seed(seed, g, i, Purpose::SensorNoise),
@@ -245,6 +267,19 @@ impl Evolution {
             timing,
         ))
     }
+}
+
+/// `k` distinct bodies of `set` (k >= 1, at most its length), drawn by a partial Fisher-Yates
+/// shuffle seeded by `seed`, in the order drawn.
+fn draw_bodies(set: &[Shape], k: usize, seed: u64) -> Vec<Shape> {
+    let mut order: Vec<usize> = (0..set.len()).collect();
+    let mut rng = rng_from(seed);
+    let k = k.clamp(1, set.len().max(1));
+    for j in 0..k {
+        let pick = rng.gen_range(j..order.len());
+        order.swap(j, pick);
+    }
+    order[..k].iter().map(|&i| set[i].clone()).collect()
 }
 
 /// Generations after generation 0 that a run of `population` and `budget` evaluations takes:

@@ -9,20 +9,30 @@
 //! recomputing the matrices at every control call. Other controllers are built as usual
 //! and refuse to freeze.
 
-use super::episode::{Episode, Policy};
+use super::episode::{topology, Episode, Policy};
 use super::evaluate::controller_for;
-use crate::controllers::{Attention, Controller, ControllerKind, FrozenAttention};
+use crate::controllers::{
+    expand_any_body, local_inputs, Attention, Controller, ControllerKind, FrozenAttention,
+    LocalInputs,
+};
 use crate::error::{Error, Result};
 use crate::simulation::Shape;
 
 /// The policy of `kind` with `genome` on `shape`, freezable when it is attention.
 pub fn freezable_policy(kind: ControllerKind, shape: &Shape, genome: &[f32]) -> Result<Policy> {
     let controller = controller_for(kind, shape, genome)?;
-    if kind != ControllerKind::Attention {
-        return Ok(Policy::Brain(controller));
-    }
+    let genome = match kind {
+        ControllerKind::Attention => genome.to_vec(),
+        // The classic attention genome it amounts to on this body (the same network).
+        ControllerKind::AttentionAny => expand_any_body(
+            ControllerKind::Attention,
+            genome,
+            &local_inputs(&topology(shape), LocalInputs::CHOSEN),
+        ),
+        _ => return Ok(Policy::Brain(controller)),
+    };
     let mut attention = Attention::new(shape.voxel_count());
-    attention.set_params(genome)?;
+    attention.set_params(&genome)?;
     Ok(Policy::Brain(Box::new(FrozenAttention::new(attention))))
 }
 

@@ -3,6 +3,7 @@
 //! validation, the ablation, and the playground's defaults.
 
 pub(crate) mod ablation;
+pub mod body_set;
 pub(crate) mod checkpoint;
 pub mod codesign;
 pub mod config;
@@ -24,11 +25,12 @@ pub(crate) mod trajectory;
 pub mod validation;
 
 pub use ablation::{ablate, unfrozen_velocity, AblationPoint, ABLATION_TERRAIN};
+pub use body_set::BodySet;
 pub use checkpoint::Checkpoint;
 pub use codesign::{
     best_and_seconds_in_file, best_in_file, BrainMode, Codesign, CodesignConfig, CodesignRun,
 };
-pub use config::{EvolutionConfig, SourceRun, TrainingTerrain};
+pub use config::{EvolutionConfig, SourceRun, TrainingBodies, TrainingTerrain};
 pub use ensemble::{check_start_offset, gait_ensemble, Ensemble, ENSEMBLE_SHIFT};
 pub use episode::{simulated_seconds, steps_for, topology, Episode, GaitEpisode, Outcome, Policy};
 pub use evolution::{planned_evaluations, Evolution, Job};

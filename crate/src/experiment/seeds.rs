@@ -18,6 +18,10 @@ pub enum Purpose {
     Remap,
     /// How one body-search child is made from its parent (iteration, index in the batch).
     Variation,
+    /// Which training bodies one evaluation walks (generation, index in the batch).
+    Bodies,
+    /// The generator of the study's body sets (generation 0, index = which stream).
+    BodySet,
 }
 
 impl Purpose {
@@ -30,6 +34,8 @@ impl Purpose {
             Purpose::Validation => 4,
             Purpose::Remap => 5,
             Purpose::Variation => 6,
+            Purpose::Bodies => 7,
+            Purpose::BodySet => 8,
         }
     }
 }

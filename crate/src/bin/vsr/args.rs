@@ -12,9 +12,10 @@ pub struct RobotArgs {
     /// Shape: a preset (biped-4x3, comb-7x2, biped-6x4, comb-14x2, worm-WxH, box-WxH) or rows
     /// top first, e.g. 1111-1111-1001.
     #[arg(long)]
-    shape: String,
+    shape: Option<String>,
     /// Controller: attention, mlp, mlp-comm, slow-attention or mlp-comm-latched (MLP-Comm
-    /// exchanging messages only every 20 steps, as the original code).
+    /// exchanging messages only every 20 steps, as the original code); for any body (one
+    /// genome for every body, see --bodies): attention-any, mlp-any, mlp-comm-any.
     #[arg(long)]
     controller: String,
 }
@@ -22,7 +23,18 @@ pub struct RobotArgs {
 impl RobotArgs {
     /// The parsed shape and controller kind, or the error that says which is wrong.
     pub fn parse(&self) -> vsr::Result<(Shape, ControllerKind)> {
-        Ok((Shape::parse(&self.shape)?, self.controller.parse()?))
+        let Some(shape) = &self.shape else {
+            return Err(vsr::Error::Input(
+                "--shape is needed: a preset such as biped-4x3, or rows such as 1111-1111-1001"
+                    .into(),
+            ));
+        };
+        Ok((Shape::parse(shape)?, self.controller.parse()?))
+    }
+
+    /// The controller kind alone, and whether a shape was given.
+    pub fn kind(&self) -> vsr::Result<(ControllerKind, bool)> {
+        Ok((self.controller.parse()?, self.shape.is_some()))
     }
 }
 

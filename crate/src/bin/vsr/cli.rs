@@ -33,6 +33,8 @@ enum Command {
     /// Search bodies around a brain (a pretrained attention module frozen or fine-tuned, or
     /// a brain from scratch): a gallery of bodies, the best of each size and number of feet.
     Codesign(crate::codesign::Args),
+    /// Write the study's body sets (training and held out) from a seed.
+    Bodies(crate::bodies::Args),
     /// Frozen-attention ablation: velocity with the attention frozen at each second.
     Ablate(crate::ablate::Args),
     /// Run the reference simulator's gait ensembles here and compare (--reference FILE).
@@ -95,6 +97,7 @@ pub fn run() -> i32 {
         Command::Validate(args) => crate::validate::run(args),
         Command::Finetune(args) => crate::finetune::run(args),
         Command::Codesign(args) => crate::codesign::run(args),
+        Command::Bodies(args) => crate::bodies::run(args),
         Command::Ablate(args) => crate::ablate::run(args),
         Command::Fidelity(args) => crate::fidelity::run(args),
         Command::Campaign(command) => crate::campaign::run(command),

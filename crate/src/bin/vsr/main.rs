@@ -3,7 +3,7 @@
 //!
 //! Layout: `cli.rs` parses and dispatches; one file per subcommand (`simulate`, `terrain`,
 //! `bench` with `bench/evolution.rs`, `params`, `evolve`, `evaluate`, `validate`, `finetune`,
-//! `ablate`, `fidelity`); the campaign subcommands and `vsr report` in `campaign/`; what several share in
+//! `ablate`, `fidelity`, `bodies`); the campaign subcommands and `vsr report` in `campaign/`; what several share in
 //! one place each: `args.rs` (argument types), `evolution.rs` (running an evolution),
 //! `progress.rs` (a bar on a terminal, one line per generation elsewhere),
 //! `checkpoint.rs`, `trajectory.rs`, `runfile.rs` and `atomic.rs` (files). Subcommands never
@@ -28,6 +28,8 @@ mod args;
 mod atomic;
 #[cfg(not(target_arch = "wasm32"))]
 mod bench;
+#[cfg(not(target_arch = "wasm32"))]
+mod bodies;
 #[cfg(not(target_arch = "wasm32"))]
 mod campaign;
 #[cfg(not(target_arch = "wasm32"))]

@@ -1,10 +1,14 @@
 //! `vsr validate --genome RUN.json [--set paper|unseen]`: the best individual on a set of 10
 //! validation terrains (the paper's hilly-1-10-0..9 by default, or hilly-1-10-10000..10009,
-//! outside the training pool), each velocity, the median and the mean.
+//! outside the training pool), each velocity, the median and the mean. With `--bodies FILE`,
+//! a brain for any body on every body of a set: each body's mean speed, their median and
+//! the share of bodies above 1 m/s.
 
 use std::path::PathBuf;
 
-use vsr::experiment::{validate_on, ValidationSet};
+use rayon::prelude::*;
+use vsr::experiment::body_set::{validate_body, BodiesValidation};
+use vsr::experiment::{validate_on, Best, BodySet, ValidationSet};
 use vsr::{Error, Result};
 
 /// Arguments of `vsr validate`.
@@ -26,6 +30,14 @@ pub struct Args {
     /// Also write that JSON object to this file (atomically).
     #[arg(long)]
     out: Option<PathBuf>,
+    /// Walk a brain for any body on every body of this body-set file instead of its own body
+    /// (JSON: {"bodies", "set", "seconds", "median", "walking_share", "per_body": [{"body",
+    /// "validation"}...]}).
+    #[arg(long, value_name = "FILE")]
+    bodies: Option<PathBuf>,
+    /// Worker threads for --bodies (default: all cores). Never changes the result.
+    #[arg(long)]
+    threads: Option<usize>,
 }
 
 /// Runs the command.
@@ -33,6 +45,9 @@ pub fn run(args: Args) -> Result<()> {
     let (best, seconds) = args.individual.load(args.seconds)?;
     if let Some(out) = &args.out {
         crate::atomic::check_writable(out)?;
+    }
+    if let Some(path) = &args.bodies {
+        return on_bodies(&args, &best, path, seconds);
     }
     let validation = validate_on(&best, args.set, seconds)?;
     if let Some(out) = &args.out {
@@ -49,5 +64,45 @@ pub fn run(args: Args) -> Result<()> {
     }
     say!("{:<16} {:>8.3} m/s", "median", validation.median);
     say!("{:<16} {:>8.3} m/s", "mean", validation.mean);
+    Ok(())
+}
+
+/// `--bodies`: every body of the set, spread over threads (the result never depends on them).
+fn on_bodies(args: &Args, best: &Best, path: &std::path::Path, seconds: f64) -> Result<()> {
+    let bodies = BodySet::read(path)?;
+    // A brain tied to its body is refused before any episode runs.
+    vsr::experiment::body_set::validation::best_on(best, &bodies.bodies[0])?;
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(args.threads.unwrap_or(0))
+        .build()
+        .map_err(|e| Error::Input(format!("cannot start the threads: {e}")))?;
+    let per_body = pool.install(|| {
+        bodies
+            .bodies
+            .par_iter()
+            .map(|b| validate_body(best, b, args.set, seconds))
+            .collect::<Result<Vec<_>>>()
+    })?;
+    let validation = BodiesValidation::new(&bodies, args.set, seconds, per_body);
+    if let Some(out) = &args.out {
+        crate::atomic::write_json(out, &validation, "validation file")?;
+    }
+    if args.json {
+        let body = serde_json::to_string(&validation)
+            .map_err(|e| Error::Io(format!("cannot print JSON: {e}")))?;
+        say!("{body}");
+        return Ok(());
+    }
+    for b in &validation.per_body {
+        say!("{:<24} {:>8.3} m/s", b.body.to_rows(), b.validation.mean);
+    }
+    say!(
+        "{} bodies of {} on the {} terrains: median {:.3} m/s, {:.0}% above 1 m/s",
+        validation.per_body.len(),
+        validation.bodies,
+        validation.set,
+        validation.median,
+        100.0 * validation.walking_share
+    );
     Ok(())
 }

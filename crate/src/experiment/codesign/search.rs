@@ -166,6 +166,7 @@ impl Codesign {
             index,
             genome: design.controller_genome(self.config.controller),
             shape: design.shape()?,
+            more_bodies: Vec::new(),
             controller: self.config.controller,
             terrain: self.config.terrain.name_for(terrain_seed),
             noise_seed: evaluation_seed(seed, it, index, Purpose::SensorNoise),

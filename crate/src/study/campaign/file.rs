@@ -78,6 +78,9 @@ pub struct Campaign {
     /// Gait ensembles measured on the reference simulator, measured here too.
     #[serde(default)]
     pub fidelity: Vec<FidelityGroup>,
+    /// Brains for any body trained on many bodies (`vsr evolve --bodies`).
+    #[serde(default)]
+    pub any_body: Vec<super::any_body::AnyBodyGroup>,
     /// Body searches (`vsr codesign`).
     #[serde(default)]
     pub codesign: Vec<super::codesign::CodesignGroup>,
@@ -140,6 +143,9 @@ impl Campaign {
             let path = path_clean::clean(dir.join(&g.reference));
             g.reference = path.display().to_string();
         }
+        for g in &mut self.any_body {
+            g.relative_to(dir);
+        }
         for g in &mut self.codesign {
             if let Some(module) = &g.module {
                 g.module = Some(path_clean::clean(dir.join(module)).display().to_string());
@@ -192,6 +198,9 @@ impl Campaign {
             }
         }
         for g in &self.codesign {
+            g.check()?;
+        }
+        for g in &self.any_body {
             g.check()?;
         }
         for g in &self.fidelity {

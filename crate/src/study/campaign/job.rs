@@ -44,6 +44,17 @@ pub enum Task {
         /// Episode seconds.
         seconds: f64,
     },
+    /// A brain for any body walked on every body of a set (`vsr validate --bodies`).
+    ValidateBodies {
+        /// The run file.
+        genome: PathBuf,
+        /// The body-set file.
+        bodies: PathBuf,
+        /// The validation set (terrains).
+        set: ValidationSet,
+        /// Episode seconds.
+        seconds: f64,
+    },
     /// A body search (`vsr codesign`).
     Codesign(CodesignTask),
     /// The reference's gait ensembles measured here (`vsr fidelity`).
@@ -76,6 +87,17 @@ pub struct RunTask {
     pub keep_checkpoint: bool,
     /// The checkpoint of the shorter run this one continues.
     pub continue_from: Option<PathBuf>,
+    /// Training on many bodies (`vsr evolve --bodies`); then `shape` names the set.
+    pub bodies: Option<TrainOnBodies>,
+}
+
+/// The body set of a run on many bodies.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TrainOnBodies {
+    /// The body-set file.
+    pub file: PathBuf,
+    /// Bodies walked by each evaluation.
+    pub per_evaluation: usize,
 }
 
 /// A body search of a campaign.

@@ -4,6 +4,7 @@
 //! into a table (`merge`) and its best modules chosen for `pretrained/` (`export`). The command
 //! line reads and writes the files and turns each job into a `vsr` command.
 
+pub mod any_body;
 pub mod codesign;
 pub mod export;
 pub mod file;
@@ -16,6 +17,6 @@ pub mod run_spec;
 
 pub use codesign::CodesignGroup;
 pub use file::Campaign;
-pub use job::{select, CodesignTask, Job, RunTask, Task};
+pub use job::{select, CodesignTask, Job, RunTask, Task, TrainOnBodies};
 pub use plan::{earlier_runs, fidelity_path, known_runs, plan, runs, RunSpec};
 pub use results::{Results, RunData};

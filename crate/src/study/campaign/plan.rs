@@ -172,6 +172,9 @@ pub fn plan(c: &Campaign, out: &Path) -> Vec<Job> {
     for g in &c.codesign {
         jobs.extend(g.jobs(&c.seeds, c.seconds, &c.terrain, &c.validate, out));
     }
+    for g in &c.any_body {
+        jobs.extend(g.jobs(&c.seeds, (c.seconds, c.population, &c.terrain), out));
+    }
     jobs.sort_by_key(|j| j.stage);
     jobs
 }
@@ -229,6 +232,7 @@ fn run_job(
             terrain: c.terrain.clone(),
             keep_checkpoint: keep,
             continue_from: continued.as_deref().map(checkpoint_of),
+            bodies: None,
         }),
         out: r.run_path(out),
         needs,

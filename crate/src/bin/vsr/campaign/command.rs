@@ -40,6 +40,23 @@ pub fn args(job: &Job, threads: usize) -> Vec<String> {
             &seconds.to_string(),
             "--json",
         ]),
+        Task::ValidateBodies {
+            genome,
+            bodies,
+            set,
+            seconds,
+        } => words(&[
+            "validate",
+            "--genome",
+            &genome.display().to_string(),
+            "--bodies",
+            &bodies.display().to_string(),
+            "--set",
+            set.name(),
+            "--seconds",
+            &seconds.to_string(),
+            "--json",
+        ]),
         Task::Codesign(task) => codesign_args(task),
         Task::Fidelity { reference } => {
             words(&["fidelity", "--reference", &reference.display().to_string()])
@@ -79,15 +96,24 @@ fn codesign_args(task: &CodesignTask) -> Vec<String> {
 
 /// `vsr evolve` (or `vsr finetune` from a source run) without `--out`.
 fn run_args(run: &RunTask) -> Vec<String> {
-    let mut args = match &run.from {
-        None => words(&[
+    let mut args = match (&run.from, &run.bodies) {
+        (None, Some(bodies)) => words(&[
+            "evolve",
+            "--bodies",
+            &bodies.file.display().to_string(),
+            "--bodies-per-evaluation",
+            &bodies.per_evaluation.to_string(),
+            "--controller",
+            run.controller.name(),
+        ]),
+        (None, None) => words(&[
             "evolve",
             "--shape",
             &run.shape,
             "--controller",
             run.controller.name(),
         ]),
-        Some(from) => words(&[
+        (Some(from), _) => words(&[
             "finetune",
             "--from",
             &from.display().to_string(),

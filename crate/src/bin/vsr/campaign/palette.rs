@@ -38,6 +38,10 @@ pub fn look(role: Role, other: usize) -> Look {
             ControllerKind::Mlp => VERMILLION,
             ControllerKind::MlpComm => BLUISH_GREEN,
             ControllerKind::MlpCommLatched => REDDISH_PURPLE,
+            // The body-independent families: the same colour as their classic family.
+            ControllerKind::AttentionAny => BLUE,
+            ControllerKind::MlpAny => VERMILLION,
+            ControllerKind::MlpCommAny => BLUISH_GREEN,
         },
         Role::Frozen(_) => BLACK,
         Role::FineTuned => ORANGE,

@@ -98,8 +98,15 @@ fn seconds_per_evaluation(out: &Path) -> Option<f64> {
 /// A run's work per evaluation, in voxel-seconds: its body's voxels times its episode's
 /// seconds (1 voxel for a shape that does not parse: its run would fail anyway).
 fn work(run: &RunTask) -> f64 {
-    let voxels = Shape::parse(&run.shape).map_or(1, |s| s.voxel_count());
-    voxels as f64 * run.seconds
+    let voxels = match &run.bodies {
+        // Each evaluation walks per_evaluation bodies: their mean size times their number.
+        Some(b) => vsr::experiment::BodySet::read(&b.file).map_or(1.0, |set| {
+            let total: usize = set.bodies.iter().map(|s| s.voxel_count()).sum();
+            b.per_evaluation as f64 * total as f64 / set.bodies.len() as f64
+        }),
+        None => Shape::parse(&run.shape).map_or(1, |s| s.voxel_count()) as f64,
+    };
+    voxels * run.seconds
 }
 
 /// The median, if there are values.
