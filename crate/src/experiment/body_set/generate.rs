@@ -1,6 +1,7 @@
 //! The study's body sets, made once by a seeded generator (`vsr bodies`) and
 //! committed before any run trains on them (docs/ANALYSIS-PLAN.md, fourth question).
 //!
+//! - `train-biped`: the paper's biped-4x3 alone (a brain trained on one body, for comparison);
 //! - `train`: [`TRAIN_BODIES`] random connected bodies of 4 to 20 voxels grown in a
 //!   [`GRID`] grid; the study's main training set is its first [`TRAIN_MAIN`] (`train-32`),
 //!   the scaling condition uses all of them (`train-128`).
@@ -184,6 +185,11 @@ pub fn study_sets(seed: u64) -> StudySets {
                 "train-128".into(),
                 format!("training set: {TRAIN_BODIES} random bodies of {v0}-{v1} voxels grown in a {gw} x {gh} grid"),
                 set("train-128", train),
+            ),
+            (
+                "train-biped".into(),
+                "training set: the paper's biped-4x3 alone (it is also in heldout-paper)".into(),
+                set("train-biped", paper[..1].to_vec()),
             ),
             (
                 "heldout-random".into(),
