@@ -27,7 +27,7 @@
 /**
  * This worker's global scope (`self`), its messages typed by its file (protocol.js: WorkerMessages).
  * @template {WorkerFile} F
- * @param {F} file this worker's file, relative to www/
+ * @param {F} file this worker's file, relative to www/ (its type names the messages; nothing reads it)
  * @returns {Scope<WorkerMessages[F]['in'], WorkerMessages[F]['out']>}
  */
 export function workerScope(file) {
