@@ -30,6 +30,7 @@ const KEEP_DELAY_MS = 300;
  * @property {() => boolean} running                          a run uses the robot
  * @property {() => string} lost                              what a link leaves behind, a sentence ('' if nothing)
  * @property {(text: string, kind?: import('./message.js').Kind) => void} say
+ * @property {(state: import('./share.js').PageState) => unknown} [shared]  a link was made of `state` (a class challenge's short code)
  */
 
 export class Keeper {
@@ -157,6 +158,7 @@ export class Keeper {
     this.linkField.dataset.value = url;
     this.linkField.hidden = false;
     this.linkField.select();
+    this.hooks.shared?.(state);
     try {
       await navigator.clipboard.writeText(url);
       this.hooks.say(`Link copied: it opens this robot, its settings and its controller.${this.hooks.lost()}`, 'note');

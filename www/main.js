@@ -29,7 +29,7 @@ import { Race } from './race.js';
 import { Robot } from './robot.js';
 import { pageState } from './robot-state.js';
 import { RunFollower } from './run-follow.js';
-import { RunEstimate } from './run-estimate.js';
+import { RunEstimate, estimateSeconds, voxelCount } from './run-estimate.js';
 import { RunPanel } from './run-panel.js';
 import { SpeedNote } from './speed-note.js';
 import { fillResults } from './tour/results.js';
@@ -79,6 +79,7 @@ const keeper = new Keeper(defaults, {
   running: () => robot.running,
   lost: () => lostInLink(robot?.brain ?? null),
   say: (text, kind = 'error') => messages.show(text, kind),
+  shared: (state) => challenge?.shared(state),
 });
 const speedNote = new SpeedNote(byId(document, 'speed-note'), new Measurer(defaults.viewNoiseSeed));
 const modules = new ModuleList(document, {
@@ -252,7 +253,10 @@ wireWords(document);
 challenge = new Challenge(document, lab, {
   defaults, rows: () => drawing.rows(), race, message: showMessage, pin: (text) => messages.show(text, 'pinned'),
   setView: (terrain) => { viewer.terrain.value = terrain; viewer.reload(); terrainChanged(); },
-  setRun: (values) => { runs.setValues(values); runs.inputs.seconds.dispatchEvent(new Event('change')); }, // walked and kept as if typed
+  fixRun: (values) => { runs.form.fix(values, 'the challenge'); runs.inputs.seconds.dispatchEvent(new Event('change')); }, // walked and kept as if typed
+  runSeconds: (s) => estimateSeconds({ evaluations: s.budget + s.population, seconds: s.seconds, voxels: voxelCount(s.shape),
+    workers: Number(runs.inputs.workers.value) || 1 }, estimate.currentPace()),
+  lastRun: () => ({ runFile: runs.runFile, settings: runs.runSettings, mode: runs.mode }),
   setBody: (rows) => robot.setBody(rows),
 });
 

@@ -6,7 +6,9 @@
  * second per worker: the latest run's here (run-panel.js measures it at every generation,
  * pauses excluded), or, before any run, the page's own measure as it opens (pace.js: a few
  * seconds of evaluations of random brains in evaluation workers of its own, the very evaluation
- * a run makes). The quick settings are made lighter where they would take well over a minute.
+ * a run makes). The quick settings are made lighter where they would take well over a minute,
+ * never those a class challenge fixes (run-settings.js: fix): a computer too slow for them says so
+ * beside the estimate, and runs them all.
  * With the from-scratch comparison switched on, a fine-tune is two runs of the same budget on
  * the same body, one after the other: the estimate says both.
  * The viewer's simulation pace was tried first and missed by 1.5 to 6 times (it
@@ -102,14 +104,14 @@ export class RunEstimate {
       voxels: voxelCount(this.rows()), workers: this.form.number('workers') }, this.currentPace());
     const took = run(p.budget);
     this.lighter = null;
-    if (!(took > QUICK_MOST_S)) return p;
+    if (!(took > QUICK_MOST_S) || this.form.fixed.size > 0) return p; // a challenge's run is everyone's: never lighter
     const budget = LIGHTER.find((b) => b < p.budget && run(b) <= QUICK_AIM_S) ?? LIGHTER[LIGHTER.length - 1];
     this.lighter = { budget, from: p.budget };
     return { ...p, budget };
   }
 
   refresh() {
-    const locked = this.form.inputs.budget.disabled; // a run is going: its progress says how long it has left
+    const locked = this.form.running; // a run is going: its progress says how long it has left
     const run = { evaluations: this.form.planned, seconds: this.form.number('seconds'), voxels: voxelCount(this.rows()),
       workers: this.form.number('workers') };
     const last = this.pace();
@@ -122,9 +124,14 @@ export class RunEstimate {
     const lighter = this.lighter && this.form.number('budget') === this.lighter.budget
       ? ` The quick settings are lighter on this computer: ${count(this.lighter.budget)} evaluations, not `
         + `${count(this.lighter.from)} (about ${durationWords(estimateSeconds({ ...run, evaluations: this.lighter.from + this.form.number('population') }, this.currentPace()))} here).` : '';
+    // A run a challenge fixes is never made lighter: a computer too slow for it is told so, and how long it takes.
+    const slow = this.form.fixed.size > 0 && took > QUICK_MOST_S
+      ? ` This computer is slow for ${this.form.fixedBy}'s run: it runs all ${count(this.form.number('budget'))} evaluations all the same (the run must be the same as everyone's), `
+        + 'so start it now and let it finish, or use a faster computer.' : '';
+    this.out.dataset.slow = String(slow !== '');
     this.out.textContent = Number.isFinite(took)
       ? `${pace}, that is about ${durationWords(took)}${Number.isFinite(two) ? ' a run' : ''} on ${run.workers} worker${run.workers === 1 ? '' : 's'}`
-        + `${Number.isFinite(two) ? `; Fine-tune with the from-scratch comparison makes two runs, about ${durationWords(two)} in all` : ''}.${lighter}`
+        + `${Number.isFinite(two) ? `; Fine-tune with the from-scratch comparison makes two runs, about ${durationWords(two)} in all` : ''}.${lighter}${slow}`
       : '';
     this.out.hidden = !this.out.textContent;
   }

@@ -50,6 +50,11 @@ export class RunSettings {
     this.planChanged = () => {};
     /** The form holds what the page opened with: nothing typed, chosen, restored or set up since. */
     this.untouched = true;
+    /** The settings a class challenge fixes (locked, kept through runs), and by what, in words ('' when none). */
+    this.fixed = /** @type {Set<string>} */ (new Set());
+    this.fixedBy = '';
+    /** A run uses the settings (lock). */
+    this.running = false;
     this.inputs.seed.value = '1';
     this.inputs.terrain.value = defaults.trainingTerrain;
     this.inputs.workers.value = String(Math.max(1, Math.min(MAX_EVALUATORS, navigator.hardwareConcurrency || 1)));
@@ -94,17 +99,37 @@ export class RunSettings {
     return Object.fromEntries(RUN_KEYS.map((k) => [k, this.inputs[k].value]));
   }
 
-  /** @param {Partial<Record<string, string>>} values settings to put in the form */
+  /** @param {Partial<Record<string, string>>} values settings to put in the form (not those a challenge fixes) */
   setValues(values) {
     this.untouched = false;
-    for (const [k, value] of Object.entries(values)) if (this.inputs[k] && value !== undefined) this.inputs[k].value = String(value);
+    for (const [k, value] of Object.entries(values)) if (this.inputs[k] && value !== undefined && !this.fixed.has(k)) this.inputs[k].value = String(value);
     this.describePlan();
   }
 
-  /** @param {boolean} running a run uses the settings: the form is locked */
+  /**
+   * Fixes settings for good (a class challenge: every student's run the same): put in the form,
+   * locked, and never made lighter for a slow computer (run-estimate.js says how long they take instead).
+   * @param {Record<string, string>} values @param {string} by what fixes them, in words
+   */
+  fix(values, by) {
+    this.fixed = new Set();
+    this.setValues(values);
+    this.fixed = new Set(Object.keys(values).filter((k) => this.inputs[k]));
+    this.fixedBy = by;
+    this.lock(false);
+  }
+
+  /** @param {boolean} running a run uses the settings: the form is locked (what a challenge fixes stays locked) */
   lock(running) {
-    for (const button of Object.values(this.buttons)) button.disabled = running;
-    for (const input of Object.values(this.inputs)) input.disabled = running;
+    this.running = running;
+    const fixed = this.fixed.size > 0;
+    for (const button of Object.values(this.buttons)) button.disabled = running || (fixed && button !== this.buttons.dice);
+    this.buttons.dice.disabled = running || this.fixed.has('seed');
+    for (const [k, input] of Object.entries(this.inputs)) {
+      input.disabled = running || this.fixed.has(k);
+      input.dataset.title ??= input.title; // its own title, back when nothing fixes it
+      input.title = this.fixed.has(k) ? `Set by ${this.fixedBy}: the same for everyone` : input.dataset.title;
+    }
   }
 
   /**

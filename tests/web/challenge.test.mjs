@@ -80,7 +80,7 @@ test('a class challenge: ranked by the link the teacher made, duplicates, the sa
   await page.locator('#challenge-make').click();
   await waitForText(page, 'challenge-status', /^Challenge link made/);
   const challengeUrl = await page.locator('#challenge-link').inputValue();
-  assert.match(challengeUrl, /\?challenge=1&terrain=hilly-1-10-0&seconds=30&body=1111-1111-1001&budget=2000&seed=1$/);
+  assert.match(challengeUrl, /\?challenge=1&terrain=hilly-1-10-0&seconds=10&body=1111-1111-1001&budget=2000&seed=1&population=20&train=hilly-1-10$/);
   await page.locator('#rows').fill('11111-11111-10101');
   await page.locator('#rows').press('Enter');
   await waitForText(page, 'shape-status', /^13 voxels/);
@@ -90,7 +90,7 @@ test('a class challenge: ranked by the link the teacher made, duplicates, the sa
   let rows;
   ({ rows, caption } = await rank(page));
   console.log(`# challenge table: ${JSON.stringify(rows)}`);
-  assert.match(caption, /^Ranked by the rules of the challenge link you made: the body 1111-1111-1001; speeds measured again by this page over 30 s on hilly-1-10-0; at most 2,000 evaluations\. The form above \(or the robot drawn now\) differs from your link/);
+  assert.match(caption, /^Ranked by the rules of the challenge link you made: the body 1111-1111-1001; speeds measured again by this page over 10 s on hilly-1-10-0; at most 2,000 evaluations\. The form above \(or the robot drawn now\) differs from your link/);
   assert.match(String(await page.locator('#challenge-rules').textContent()), /^What your students will see: Challenge: the body 1111-1111-1001,/, 'the rules line keeps the link\'s body');
   assert.deepEqual(rows.filter((r) => /not the challenge's body/.test(r[5])).map((r) => r[1]), ['Dan'], 'no entry rejected for the new drawing (Dan\'s is one voxel)');
 
@@ -153,11 +153,11 @@ test('a class challenge: ranked by the link the teacher made, duplicates, the sa
   await page.context().close();
 
   const student = await openPage(env.browser, `${challengeUrl.replace(/^https?:\/\/[^/]+\//, env.url)}`, { width: 1400, height: 900 });
-  await waitForText(student.page, 'challenge-rules', /^Challenge: the body 1111-1111-1001, as fast as it can over 30 s on hilly-1-10-0\. 1 · Your body is drawn for you\. 2 · Evolve its brain: the run is set for you \(2,000 evaluations, seed 1, 30-s walks\)\. 3 · Press “Share link”/);
-  await waitForText(student.page, 'message', /^Challenge: .*over 30 s on hilly-1-10-0\. .*further down/); // at the top, where a student looks first
+  await waitForText(student.page, 'challenge-rules', /^Challenge: the body 1111-1111-1001, as fast as it can over 10 s on hilly-1-10-0\. 1 · Your body is drawn for you\. 2 · Evolve its brain: the run is set for you \(2,000 evaluations, seed 1, 10-s walks\), the same on every computer\. 3 · Press “Share link”/);
+  await waitForText(student.page, 'message', /^Challenge: .*over 10 s on hilly-1-10-0\. .*further down/); // at the top, where a student looks first
   assert.equal(await student.page.locator('#terrain').inputValue(), 'hilly-1-10-0');
   assert.equal(await student.page.locator('#run-budget').inputValue(), '2000');
-  assert.equal(await student.page.locator('#run-seconds').inputValue(), '30', 'trained over the walks the teacher measures');
+  assert.equal(await student.page.locator('#run-seconds').inputValue(), '10', 'trained over the walks the teacher measures');
   assert.equal(await byTestId(student.page, 'challenge-status').isVisible(), false, 'a student\'s page keeps no teacher\'s challenge');
   assert.deepEqual(student.problems, []);
   await student.page.context().close();

@@ -1,9 +1,10 @@
 // @ts-check
 /**
  * The class's entries: every line of the teacher's compare box read with the page's own link
- * reader (share.js), checked against the challenge's rules (challenge-rules.js), its robot
- * measured again by the page on the challenge's terrain for its episode (lab.js: the speed the
- * link claims is never trusted), then put in order.
+ * reader (share.js), or as a short code (challenge-code.js: the robot evolved again here with the
+ * challenge's run, its check compared), checked against the challenge's rules
+ * (challenge-rules.js), its robot measured again by the page on the challenge's terrain for its
+ * episode (lab.js: the speed the link claims is never trusted), then put in order.
  *
  * What the table says of an entry, and whether it gets a place:
  * - a rule broken (another body, more voxels, a budget over the challenge's), or a link that
@@ -17,7 +18,8 @@
  */
 import { messageOf } from '../kit.js';
 import { decodeState } from '../share.js';
-import { bodyProblem, budgetProblem } from './challenge-rules.js';
+import { genomeCheck, looksLikeCode, readCode } from './challenge-code.js';
+import { bodyProblem, budgetProblem, runSettings } from './challenge-rules.js';
 
 /**
  * @typedef {object} Entry  one line of the compare box, read and measured
@@ -29,7 +31,12 @@ import { bodyProblem, budgetProblem } from './challenge-rules.js';
  * @property {{controller: string, genome: Float32Array} | null} genome
  */
 
-/** What an entry needs of the page. @typedef {{lab: import('./lab.js').Lab, defaults: import('../core.js').Defaults}} Tools */
+/**
+ * What an entry needs of the page: evolve (a short code's robot evolved again with the
+ * challenge's run: its best genome) and say (what the ranking does now, for the teacher).
+ * @typedef {{lab: import('./lab.js').Lab, defaults: import('../core.js').Defaults,
+ *   evolve?: (settings: import('../protocol.js').EvolveSettings) => Promise<Float32Array>, say?: (text: string) => void}} Tools
+ */
 
 /**
  * The compare box's lines: a name (optional) and a link each.
@@ -66,7 +73,7 @@ export async function rankEntries(text, r, tools) {
   /** @type {Map<string, string>} a link's robot part → the name it was first pasted under */
   const pasted = new Map();
   for (const { name, link } of linesOf(text)) {
-    const key = link.includes('#') ? link.slice(link.indexOf('#')) : link;
+    const key = link.includes('#') ? link.slice(link.indexOf('#')) : looksLikeCode(link) ? link.toUpperCase().replace(/O/g, '0').replace(/[IL]/g, '1') : link;
     const first = pasted.get(key);
     if (first !== undefined) {
       entries.push({ ...blank(name), problem: `the same link as ${first}: counted once, in ${first}'s row` });
@@ -106,13 +113,15 @@ function markSameRobots(ordered) {
  * @param {string} name @param {string} link @param {import('./challenge-rules.js').Rules} r @param {Tools} tools
  * @returns {Promise<Entry>}
  */
-async function readEntry(name, link, r, { lab, defaults }) {
+async function readEntry(name, link, r, tools) {
+  if (looksLikeCode(link)) return readCodeEntry(name, link, r, tools);
+  const { lab, defaults } = tools;
   const entry = blank(name);
   const hash = link.indexOf('#');
   if (hash < 0) {
     return { ...entry, problem: /[?&]challenge=/.test(link)
       ? `this is the challenge link, not a robot: ask ${name} to press “Share link” and send that link`
-      : 'not a share link of this page (it has no robot after #)' };
+      : 'not a share link of this page (it has no robot after #), nor a short code' };
   }
   /** @type {URL} */
   let url;
@@ -142,6 +151,42 @@ async function readEntry(name, link, r, { lab, defaults }) {
   try {
     const walk = await lab.walk({ rows: state.rows, terrain: r.terrain, seconds: r.seconds,
       ...(genome ? { brain: genome } : { gait }) });
+    return { ...measured, speed: walk.speed };
+  } catch (error) {
+    return { ...measured, problem: `could not be measured: ${messageOf(error)}` };
+  }
+}
+
+/**
+ * One line that is a short code: its robot evolved again with the challenge's run, its check
+ * compared with the genome that makes, then measured as a link's robot is.
+ * @param {string} name @param {string} text @param {import('./challenge-rules.js').Rules} r @param {Tools} tools
+ * @returns {Promise<Entry>}
+ */
+async function readCodeEntry(name, text, r, { lab, defaults, evolve, say }) {
+  const entry = blank(name);
+  const code = readCode(text);
+  if ('error' in code) return { ...entry, problem: `not a short code (${code.error}): ask ${name} to type it again, or to send the link` };
+  const named = { ...entry, rows: code.rows, brain: code.controller, notes: ['handed in as a short code: evolved again here with the challenge\'s run'] };
+  const broken = bodyProblem(code.rows, r);
+  if (broken) return { ...named, problem: broken };
+  if (!evolve) return { ...named, problem: 'a short code needs the page\'s evolution, which this ranking does not have' };
+  /** @type {Float32Array} */
+  let genome;
+  try {
+    say?.(`Evolving ${name}'s robot again from its short code, with the challenge's run…`);
+    genome = await evolve(runSettings(r, code.rows, code.controller));
+  } catch (error) {
+    return { ...named, problem: `could not be evolved again: ${messageOf(error)}` };
+  }
+  if (genomeCheck(genome) !== code.check) {
+    return { ...named, problem: 'its check letters do not match the robot its body makes with the challenge\'s run '
+      + `(a letter typed wrong, a run stopped early, or a robot made another way): ask ${name} for the link` };
+  }
+  const brain = { controller: code.controller, genome };
+  const measured = { ...named, genome: brain, robot: robotKey(code.rows, brain, defaults.gait) };
+  try {
+    const walk = await lab.walk({ rows: code.rows, terrain: r.terrain, seconds: r.seconds, brain });
     return { ...measured, speed: walk.speed };
   } catch (error) {
     return { ...measured, problem: `could not be measured: ${messageOf(error)}` };

@@ -1,7 +1,10 @@
 // @ts-check
 /**
- * A class challenge's rules: a terrain, an episode, a largest body or one fixed body, the run's
- * budget (the most evaluations an entry may be evolved with) and seed. They travel in a challenge
+ * A class challenge's rules: a terrain, an episode, a largest body or one fixed body, and the
+ * run every student makes: its budget (the most evaluations an entry may be evolved with), seed,
+ * population and training terrain, fixed for everyone (the student's run form is locked to them:
+ * the same body gives the same robot on every laptop, which is what a short code relies on,
+ * challenge-code.js). They travel in a challenge
  * link (`?challenge=1&terrain=...`: a query, so it never meets the share link's `#...`), are read
  * back from it, and are the one check of a body and of a budget, for the student's drawing and
  * for the teacher's ranking alike.
@@ -9,13 +12,20 @@
 import { count } from '../format.js';
 
 /** The challenge link's query parameters. */
-const KEYS = Object.freeze(['terrain', 'seconds', 'voxels', 'body', 'budget', 'seed']);
+const KEYS = Object.freeze(['terrain', 'seconds', 'voxels', 'body', 'budget', 'seed', 'population', 'train']);
 
-/** @typedef {{terrain: string, seconds: number, voxels: number | null, body: string | null, budget: string, seed: string}} Rules */
+/** The run a challenge fixes when its link does not say: the quick run's population and training terrains. */
+export const RUN_DEFAULTS = Object.freeze({ population: 20, train: 'hilly-1-10' });
+
+/**
+ * @typedef {{terrain: string, seconds: number, voxels: number | null, body: string | null, budget: string, seed: string,
+ *   population: number, train: string}} Rules
+ */
 
 /**
  * Rules from loose values (a link's query, a form, what was kept), each missing or wrong one the default.
- * @param {{terrain?: unknown, seconds?: unknown, voxels?: unknown, body?: unknown, budget?: unknown, seed?: unknown}} v
+ * @param {{terrain?: unknown, seconds?: unknown, voxels?: unknown, body?: unknown, budget?: unknown, seed?: unknown,
+ *   population?: unknown, train?: unknown}} v
  * @returns {Rules}
  */
 export function rulesFrom(v) {
@@ -23,7 +33,22 @@ export function rulesFrom(v) {
   const voxels = Number(v.voxels);
   return { terrain: text(v.terrain) || 'hilly-1-10-0', seconds: Number(v.seconds) || 30,
     voxels: Number.isInteger(voxels) && voxels > 0 ? voxels : null, body: text(v.body) || null,
-    budget: text(v.budget) || '2000', seed: text(v.seed) || '1' };
+    budget: text(v.budget) || '2000', seed: text(v.seed) || '1',
+    population: Number.isInteger(Number(v.population)) && Number(v.population) > 0 ? Number(v.population) : RUN_DEFAULTS.population,
+    train: text(v.train) || RUN_DEFAULTS.train };
+}
+
+/** The run form's settings a challenge fixes, as the form holds them. @param {Rules} r @returns {Record<string, string>} */
+export function runOf(r) {
+  return { population: String(r.population), seconds: String(r.seconds), budget: r.budget, seed: r.seed, terrain: r.train };
+}
+
+/**
+ * The run a challenge's robot of `rows` was evolved with (what a short code stands for).
+ * @param {Rules} r @param {string} rows @param {string} controller @returns {import('../protocol.js').EvolveSettings}
+ */
+export function runSettings(r, rows, controller) {
+  return { shape: rows, controller, seed: Number(r.seed), seconds: r.seconds, terrain: r.train, population: r.population, budget: Number(r.budget) };
 }
 
 /**
@@ -89,8 +114,8 @@ export function budgetWords(r) {
 export function rulesWords(r) {
   return `Challenge: ${bodyWords(r)}, as fast as it can over ${r.seconds} s on ${r.terrain}. `
     + `1 · ${r.body ? 'Your body is drawn for you' : 'Draw your robot'}. `
-    + `2 · Evolve its brain: the run is set for you (${budgetWords(r)}, seed ${r.seed}, ${r.seconds}-s walks). `
-    + '3 · Press “Share link” and send the link to your teacher, who walks every robot again the same way.';
+    + `2 · Evolve its brain: the run is set for you (${budgetWords(r)}, seed ${r.seed}, ${r.seconds}-s walks), the same on every computer. `
+    + '3 · Press “Share link” and give your teacher the short code it shows (or the link), who makes and walks every robot again the same way.';
 }
 
 /** The rules in a line, for the teacher's table. @param {Rules} r */

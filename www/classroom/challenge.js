@@ -9,12 +9,16 @@
  * made and the links pasted are kept for the teacher's next visit (challenge-store.js). The best
  * four with a brain race side by side.
  */
-import { checkTerrain } from '../core.js';
+import { checkTerrain, runGenome } from '../core.js';
 import { byId } from '../dom.js';
 import { messageOf } from '../kit.js';
 import { terrainRefused } from '../terrain-words.js';
 import { linesOf, rankEntries } from './challenge-entries.js';
-import { bodyProblem, challengeLink, rankingWords, rulesFrom, rulesOf, rulesWords, sameRules } from './challenge-rules.js';
+import { evolveAgain, looksLikeCode, readCode, robotCode } from './challenge-code.js';
+import { bodyProblem, challengeLink, rankingWords, rulesFrom, rulesOf, rulesWords, runOf, runSettings, sameRules } from './challenge-rules.js';
+import { qrBox } from './qr.js';
+import { onlyHere } from './sheet-address.js';
+import { durationWords } from '../run-progress.js';
 import { keepChallenge, loadChallenge } from './challenge-store.js';
 import { showRanking } from './challenge-table.js';
 
@@ -25,8 +29,12 @@ export class Challenge {
   /**
    * @param {Document} doc @param {import('./lab.js').Lab} lab
    * @param {{defaults: import('../core.js').Defaults, rows: () => string, setView: (terrain: string) => void,
-   *   setRun: (values: Record<string, string>) => void, setBody: (rows: string) => Promise<void>,
-   *   race: import('../race.js').Race, message: (text: string) => void, pin: (text: string) => void}} page
+   *   fixRun: (values: Record<string, string>) => void, setBody: (rows: string) => Promise<void>,
+   *   race: import('../race.js').Race, message: (text: string) => void, pin: (text: string) => void,
+   *   runSeconds: (settings: import('../protocol.js').EvolveSettings) => number,
+   *   lastRun: () => {runFile: string | null, settings: import('../protocol.js').EvolveSettings | null, mode: string}}} page
+   *   fixRun: the run settings every student's run uses, locked; runSeconds: how long a run takes here (NaN: not known);
+   *   lastRun: the page's latest finished run (its run file), its settings and mode
    */
   constructor(doc, lab, page) {
     this.lab = lab;
@@ -38,6 +46,11 @@ export class Challenge {
       fixed: byId(doc, 'challenge-fixed', HTMLInputElement), budget: byId(doc, 'challenge-budget', HTMLInputElement), seed: byId(doc, 'challenge-seed', HTMLInputElement) };
     this.linkOut = byId(doc, 'challenge-link', HTMLInputElement);
     this.linkBox = byId(doc, 'challenge-link-box');
+    /** The made link's QR code, for the projector, and the line that says when no student can open the link. */
+    this.qr = byId(doc, 'challenge-qr');
+    this.addressNote = byId(doc, 'challenge-address-note');
+    /** The student's short code, under the share link (challenge-code.js). */
+    this.codeLine = byId(doc, 'challenge-code');
     this.box = byId(doc, 'challenge-compare', HTMLTextAreaElement);
     this.status = byId(doc, 'challenge-status');
     this.table = byId(doc, 'challenge-table', HTMLTableElement);
@@ -128,7 +141,7 @@ export class Challenge {
     // The rules at the top as well, where a student opening the link looks first (the panel is far down).
     this.page.pin(`${rulesWords(r)} (The rules are also under “Class challenge”, further down.)`);
     this.page.setView(r.terrain);
-    this.page.setRun({ budget: r.budget, seed: r.seed, seconds: String(r.seconds) }); // trained over the walks it is measured on
+    this.page.fixRun(runOf(r)); // everyone's run the same, trained over the walks it is measured on
     if (r.body) await this.page.setBody(r.body).catch((error) => this.page.message(`the challenge's body: ${messageOf(error)}`));
   }
 
@@ -167,10 +180,49 @@ export class Challenge {
       : 'Challenge link made: copy it from the field below and send it to your class.');
   }
 
-  /** Shows the made challenge's link and rules. @param {Rules} r */
+  /**
+   * After Share in a challenge: the robot's short code under the link, when the robot is the
+   * challenge's run of its body (the page's latest run, from scratch with the challenge's
+   * settings, finished, its best the brain shared); else why it has none (the link still counts).
+   * @param {import('../share.js').PageState} state what the link holds
+   */
+  async shared(state) {
+    const r = this.opened;
+    if (!r || this.section.dataset.mode !== 'student') return;
+    const last = this.page.lastRun();
+    const brain = state.brain;
+    const want = runSettings(r, state.rows, brain?.controller ?? '');
+    const sameRun = last.settings !== null && Object.entries(want).every(([k, v]) => String(last.settings?.[/** @type {keyof typeof want} */ (k)]) === String(v));
+    /** @type {{generations?: {evaluations: number}[]} | null} */
+    let file = null;
+    try { file = last.runFile ? JSON.parse(last.runFile) : null; } catch { file = null; }
+    const spent = file?.generations?.at(-1)?.evaluations ?? 0;
+    /** @param {Float32Array} g */
+    const same = (g) => !!brain && g.length === brain.genome.length && g.every((x, i) => Object.is(x, brain.genome[i]));
+    const why = !brain ? 'your robot has no brain yet: press Evolve first'
+      : brain.module ? 'its brain was not evolved here for the challenge'
+        : this.lab.latestRun().running ? 'the run is still going: share again once it has finished'
+          : !last.runFile || last.mode !== 'evolve' || !sameRun ? 'its brain is not the challenge\'s run of the body drawn now (was the body changed after the run?)'
+            : spent < want.budget ? 'the run was stopped before its end: press Evolve again and let it finish'
+              : !same(await runGenome(last.runFile)) ? 'its brain is not the run\'s result (was it edited?)' : '';
+    const code = why || !brain ? null : robotCode(state.rows, brain.controller, brain.genome);
+    this.codeLine.dataset.code = code ?? '';
+    this.codeLine.textContent = code
+      ? `Your short code: ${code}. Give your teacher this code (or the link): their page evolves your robot again from it, exactly.`
+      : `No short code for this robot (${why || 'a body too large for a code'}): send your teacher the link.`;
+    this.codeLine.hidden = false;
+  }
+
+  /** Shows the made challenge's link, its QR code and rules. @param {Rules} r */
   showMade(r) {
     this.linkOut.value = challengeLink(r);
     this.linkBox.hidden = false;
+    const here = onlyHere(this.linkOut.value);
+    this.addressNote.textContent = here ? 'This link opens only on this computer (its address is this computer\'s own): '
+      + 'your students cannot open it. Open this page at the address your class uses (the site on your school\'s server, or the published one), then make the link there.' : '';
+    this.addressNote.hidden = !here;
+    this.qr.replaceChildren(qrBox(this.section.ownerDocument, this.linkOut.value, 'Open the class challenge'));
+    this.qr.hidden = false;
     this.rulesLine.textContent = `What your students will see: ${rulesWords(r)}`;
     this.rulesLine.hidden = false;
   }
@@ -188,9 +240,19 @@ export class Challenge {
     this.keep();
     this.section.dataset.state = 'ranking';
     this.rankButton.disabled = true;
-    this.say(`Measuring the class's robots over ${rules.seconds} s on ${rules.terrain}…`);
+    // Short codes are evolved again here, one run each: how long that takes, said before it starts.
+    const codes = [...new Set(linesOf(this.box.value).map((l) => l.link).filter(looksLikeCode).map((c) => c.toUpperCase()))];
+    const seconds = codes.reduce((sum, c) => {
+      const read = readCode(c);
+      return 'error' in read ? sum : sum + this.page.runSeconds(runSettings(rules, read.rows, read.controller));
+    }, 0);
+    const evolving = codes.length === 0 ? ''
+      : ` ${codes.length} short code${codes.length === 1 ? '' : 's'}: each robot evolved again here with the challenge's run`
+        + `${Number.isFinite(seconds) && seconds > 0 ? `, about ${durationWords(seconds)} in all on this computer` : ''}.`;
+    this.say(`Measuring the class's robots over ${rules.seconds} s on ${rules.terrain}…${evolving}`);
     try {
-      const ranking = await rankEntries(this.box.value, rules, { lab: this.lab, defaults: this.page.defaults });
+      const ranking = await rankEntries(this.box.value, rules, { lab: this.lab, defaults: this.page.defaults, evolve: evolveAgain,
+        say: (text) => this.say(`${text}${evolving}`) });
       this.ranked = ranking.placed;
       this.rankedBy = rules;
       showRanking(this.table, ranking, `${source}: ${rankingWords(rules)}.${changed}`);

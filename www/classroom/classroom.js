@@ -11,7 +11,8 @@ import { messageOf } from '../kit.js';
 import { CHAPTERS } from '../tour/chapters.js';
 import { exerciseOf } from './exercises.js';
 import { keepGuess } from './guess-lock.js';
-import { lessonPlanNodes } from './lesson-plan.js';
+import { LESSON, lessonPlanNodes, lessonStepWords, lessonTimes } from './lesson-plan.js';
+import { qrBox } from './qr.js';
 import { addressField, chapterLink, onlyHere, pageAddress } from './sheet-address.js';
 import { withTerms } from './simple-words.js';
 
@@ -176,7 +177,12 @@ export class Classroom {
     keys.dataset.testid = 'teacher-keys-open';
     keys.title = 'Every task\'s answer, computed by the page now, with why';
     keys.addEventListener('click', () => this.keys());
-    tools.append(print, keys);
+    const lesson = /** @type {HTMLButtonElement} */ (make(doc, 'button', '', 'The 50-minute lesson'));
+    lesson.type = 'button';
+    lesson.dataset.testid = 'lesson-open';
+    lesson.title = 'One lesson for a class of 30, minute by minute: what you project, what the students do';
+    lesson.addEventListener('click', () => this.lesson());
+    tools.append(lesson, print, keys);
     fold.append(summary, tools);
     bar.append(fold);
     return bar;
@@ -243,6 +249,43 @@ export class Classroom {
     });
     sheet.scrollIntoView({ block: 'start' });
     if (print && !onlyHere(base)) setTimeout(() => doc.defaultView?.print(), 0);
+    return sheet;
+  }
+
+  /**
+   * The 50-minute lesson (lesson-plan.js), minute by minute, with the QR code of the address the
+   * class opens (this page's, or the one the teacher types: an address that opens only on this
+   * computer is said).
+   */
+  lesson() {
+    const doc = this.doc;
+    const sheet = this.sheet('lesson', `${LESSON.name}, for ${LESSON.who}`);
+    sheet.dataset.testid = 'lesson';
+    const base = pageAddress(location.href);
+    const qr = make(doc, 'div', 'lesson-qr');
+    const showQr = (/** @type {string} */ href) => qr.replaceChildren(qrBox(doc, href, 'Open this page'), make(doc, 'p', 'sheet-link', href));
+    sheet.querySelector('.class-sheet-bar')?.prepend(addressField(doc, base, showQr));
+    showQr(base);
+    sheet.append(make(doc, 'p', 'sheet-how', 'Before the lesson: open the page once on every laptop (it is then kept there and works without the network), '
+      + 'and make the challenge link (Class challenge, For the teacher, at the bottom of the page) so that its QR code is ready.'), qr);
+    const table = make(doc, 'table', 'lesson-table');
+    table.dataset.testid = 'lesson-table';
+    const head = make(doc, 'tr');
+    for (const h of ['Minutes', 'Step', 'You project', 'Students do']) head.append(make(doc, 'th', '', h));
+    const body = make(doc, 'tbody');
+    const times = lessonTimes();
+    LESSON.steps.forEach((step, i) => {
+      const row = make(doc, 'tr');
+      row.append(make(doc, 'td', '', times[i]), make(doc, 'td', '', lessonStepWords(step)), make(doc, 'td', '', step.projects), make(doc, 'td', '', step.students));
+      body.append(row);
+    });
+    const thead = make(doc, 'thead');
+    thead.append(head);
+    table.append(thead, body);
+    sheet.append(table, make(doc, 'p', 'sheet-how', 'Chapters 8 to 10 (a transplanted brain, a search for bodies, your own robot) are for another lesson or for home: '
+      + 'the worksheet has every chapter\'s link. '), make(doc, 'p', 'sheet-plan'));
+    sheet.lastElementChild?.append(...lessonPlanNodes(doc));
+    sheet.scrollIntoView({ block: 'start' });
     return sheet;
   }
 

@@ -1,10 +1,63 @@
 // @ts-check
 /**
- * The lesson plan: two lessons of 45 minutes, one device for every two students, chapter by
- * chapter with time to start and to compare. The answer keys' sheet prints it and
- * docs/teaching.md gives it as a table (the browser test checks that both say the same).
+ * The lesson plans. LESSON: one lesson of 50 minutes for a class of 30 (a laptop each, or one
+ * per pair), minute by minute, what the teacher projects and what the students do, ending with
+ * the class challenge; the teacher's “The 50-minute lesson” sheet shows it (classroom.js) and
+ * docs/teaching.md gives it as a table. LESSONS: two lessons of 45 minutes, one device for every
+ * two students, chapter by chapter with time to start and to compare; the answer keys' sheet
+ * prints it and docs/teaching.md gives it as a table. The browser tests check that the page and
+ * the guide say the same.
  */
 import { CHAPTERS, RUN_TIME } from '../tour/chapters.js';
+
+/**
+ * @typedef {object} LessonStep  a few minutes of the 50-minute lesson
+ * @property {number} minutes
+ * @property {string} what  a chapter (by title) or a step of the lesson
+ * @property {string} projects  what the teacher shows on the projector
+ * @property {string} students  what the students do
+ */
+
+/** The 50-minute lesson. */
+export const LESSON = Object.freeze({
+  name: 'One lesson of 50 minutes',
+  who: 'a class of 30, a laptop each or one per pair',
+  /** @type {LessonStep[]} */
+  steps: [
+    { minutes: 4, what: 'Open the page', projects: 'this sheet\'s QR code of the page\'s address, and the address in words',
+      students: 'open it (the camera on the QR code, or type the address), then press Learn: chapter 1' },
+    { minutes: 5, what: 'A voxel and its colours', projects: 'chapter 1: read its question aloud',
+      students: 'tick an answer, press Reveal, then change the delay between columns and watch the speed' },
+    { minutes: 4, what: 'A body', projects: 'a drawing cut in two: the page refuses it, in words',
+      students: 'answer, Reveal, then draw a body of their own' },
+    { minutes: 3, what: 'One small brain in every voxel', projects: 'the gene count under the brain',
+      students: 'add voxels and watch the count grow by four for each' },
+    { minutes: 5, what: 'Attention, read on one voxel', projects: 'one voxel\'s attention map, enlarged (click it)',
+      students: 'answer, Reveal, then click the maps of two voxels and compare them' },
+    { minutes: 8, what: 'Evolution', projects: 'your own quick run: the chart climbing',
+      students: `answer before pressing Evolve, then watch: the run takes ${RUN_TIME}; then race generation 0 against the last` },
+    { minutes: 3, what: 'Three brains, side by side', projects: 'the race of three brains, after a show of hands: which wins?',
+      students: 'vote, then watch on the screen' },
+    { minutes: 3, what: 'Freeze the attention', projects: 'the walking robot, frozen',
+      students: 'answer, Reveal, then press Freeze the attention on their own robot' },
+    { minutes: 10, what: 'Class challenge', projects: 'the challenge link\'s QR code (made before the lesson: Class challenge, For the teacher)',
+      students: 'open it, draw a body within its rules, press Evolve (the same run on every laptop), then Share link: hand in the short code or the link' },
+    { minutes: 5, what: 'Rank, race, compare', projects: 'Rank the class, then Race the best four',
+      students: 'watch the best four race; who predicted right, and why?' },
+  ],
+});
+
+/** When each step of the 50-minute lesson starts and ends, "0-4", "4-9", ... @returns {string[]} */
+export function lessonTimes() {
+  let at = 0;
+  return LESSON.steps.map((s) => `${at}–${(at += s.minutes)}`);
+}
+
+/** A step of the 50-minute lesson in words: a chapter with its number. @param {LessonStep} step */
+export function lessonStepWords(step) {
+  const n = CHAPTERS.findIndex((c) => c.title === step.what) + 1;
+  return n > 0 ? `Chapter ${n}: ${step.what}` : step.what;
+}
 
 /** @typedef {{what: string, minutes: number}} Step  a chapter (by title) or a step of the lesson (START, WRAP) */
 
