@@ -112,8 +112,12 @@ export class Readout {
   }
 }
 
-/** @param {HTMLElement} el @param {number} value @param {string} text */
+/**
+ * A figure, or a dash while it has no value (before the first frame, a pace while the walk is
+ * held): never "…", which reads as a figure still coming.
+ * @param {HTMLElement} el @param {number} value @param {string} text
+ */
 function show(el, value, text) {
   el.dataset.value = String(value);
-  el.textContent = Number.isFinite(value) ? text : '…';
+  el.textContent = Number.isFinite(value) ? text : '–';
 }

@@ -74,7 +74,9 @@ export class RunProgress {
    */
   generation(msg, generations, bestSoFar, mode) {
     const { record } = msg;
-    this.table.push([RUN_WORDS[mode] ?? mode, record.generation, msg.evaluations, record.best ?? NaN, record.median ?? NaN, bestSoFar]);
+    // Speeds to 4 decimals (0.1 mm/s) for a spreadsheet, not 17 digits; the run file keeps every digit.
+    const speed = (/** @type {number | null | undefined} */ v) => (v === null || v === undefined ? NaN : Math.round(v * 1e4) / 1e4);
+    this.table.push([RUN_WORDS[mode] ?? mode, record.generation, msg.evaluations, speed(record.best), speed(record.median), speed(bestSoFar)]);
     show(this.out.generation, record.generation, `${record.generation} of ${generations}`);
     show(this.out.evaluations, msg.evaluations, `${count(msg.evaluations)} / ${count(msg.planned)}`);
     show(this.out.best, bestSoFar, `${fixed(bestSoFar)} m/s`);

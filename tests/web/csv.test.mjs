@@ -1,7 +1,7 @@
 // @ts-check
 /**
  * Browser test of the CSV downloads (node --test): a run's table (a row per generation: its
- * best, its median, the evaluations so far) parses and holds the run file's own figures, the
+ * best, its median, the evaluations so far, speeds to 4 decimals) parses and holds the run file's own figures, the
  * same run Export run downloads; a race's table (every half second, each robot's distance from
  * the start line) parses, starts at 0 m and ends at the distance and speed the lanes show at
  * the finish. The buttons are `run-csv` and `race-csv`. Saves screenshots/csv-run.png and csv-race.png.
@@ -70,8 +70,10 @@ test('a run\'s CSV: per generation its best, median and evaluations, as in its r
     const [what, generation, evaluations, best, median, soFar] = rows[i + 1];
     bestSoFar = Math.max(bestSoFar, g.best);
     assert.equal(what, 'evolve');
+    const four = (/** @type {number} */ v) => Math.round(v * 1e4) / 1e4; // 0.1 mm/s: a spreadsheet's speeds, not 17 digits
     assert.deepEqual([Number(generation), Number(evaluations), Number(best), Number(median), Number(soFar)],
-      [g.generation, g.evaluations, g.best, g.median, bestSoFar], `generation ${g.generation}: every digit the run file has`);
+      [g.generation, g.evaluations, four(g.best), four(g.median), four(bestSoFar)], `generation ${g.generation}: the run file's figures to 4 decimals`);
+    for (const v of [best, median, soFar]) assert.match(v, /^-?\d+(\.\d{1,4})?$/, 'at most 4 decimals');
   });
   await page.locator('#run-progress').screenshot({ path: path.join(SCREENSHOTS, 'csv-run.png') });
   assert.deepEqual(problems, []);
