@@ -177,7 +177,7 @@ test('the quick settings are lighter where this computer would take over 90 s, a
   const QUICK = { population: 20, seconds: 10, budget: 2000 };
   /** @type {Record<string, number>} */ const form = { workers: 2, seconds: 10, budget: 2000, population: 20 };
   const fake = { quick: (/** @type {any} */ p) => p, number: (/** @type {string} */ k) => form[k], planned: 2020, untouched: true,
-    inputs: { budget: { disabled: false } }, preset: (/** @type {any} */ p) => { form.budget = p.budget; } };
+    running: false, fixed: new Set(), fixedBy: '', preset: (/** @type {any} */ p) => { form.budget = p.budget; } };
   const out = /** @type {any} */ ({ dataset: {}, textContent: '', hidden: true });
   let pace = NaN; // voxel-seconds per second per worker: 2,020 evaluations of 10 voxels for 10 s on 2 workers take 101,000 / pace s
   const estimate = new RunEstimate(out, /** @type {any} */ (fake), () => pace, () => '1111-1111-1001', QUICK);
@@ -191,12 +191,20 @@ test('the quick settings are lighter where this computer would take over 90 s, a
   fake.planned = 220;
   estimate.refresh();
   assert.match(out.textContent, /^At the pace of the last run here, that is about 33 s on 2 workers\. The quick settings are lighter on this computer: 200 evaluations, not 2,000 \(about 5 min 0 s here\)\.$/);
+  // A class challenge fixes the run: never lighter, and the same slow computer says so instead.
+  fake.fixed = new Set(['budget']);
+  fake.fixedBy = 'the challenge';
+  form.budget = 2000;
+  fake.planned = 2020;
+  assert.deepEqual(fake.quick(QUICK), QUICK, 'a challenge\'s run: as it is');
+  estimate.refresh();
+  assert.match(out.textContent, /^At the pace of the last run here, that is about 5 min 0 s on 2 workers\. This computer is slow for the challenge's run: it runs all 2,000 evaluations all the same/);
 });
 
 test('with the from-scratch comparison switched on, the estimate covers the fine-tune and the run after it', () => {
   /** @type {Record<string, number>} */ const form = { workers: 2, seconds: 10, budget: 2000, population: 20 };
   const fake = { quick: (/** @type {any} */ p) => p, number: (/** @type {string} */ k) => form[k], planned: 2020, untouched: false,
-    inputs: { budget: { disabled: false } }, preset: () => {} };
+    running: false, fixed: new Set(), fixedBy: '', preset: () => {} };
   const out = /** @type {any} */ ({ dataset: {}, textContent: '', hidden: true });
   let compare = false;
   const estimate = new RunEstimate(out, /** @type {any} */ (fake), () => 101_000 / 60, () => '1111-1111-1001', form, () => compare);

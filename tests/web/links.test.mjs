@@ -113,10 +113,13 @@ test('a glossary explains every word of the page; the paper and the study are li
   assert.match(String(await paper.textContent()), /Evolving Modular Soft Robots without Explicit Inter-Module Communication using Local Self-Attention/);
   assert.equal(await page.locator('header a', { hasText: 'what our study found' }).getAttribute('href'), '#results-plain',
     'the header opens the results in plain words');
-  const results = await page.locator('#results-plain a', { hasText: 'researchers' }).getAttribute('href');
-  const response = await page.request.get(new URL(String(results), env.url).href);
+  const researchers = await page.locator('#results-plain a', { hasText: 'researchers' }).getAttribute('href');
+  const response = await page.request.get(new URL(String(researchers), env.url).href);
   assert.equal(response.status(), 200, 'the study\'s results for researchers are served with the page');
-  assert.match(await response.text(), /^# /m);
+  assert.match(String(response.headers()['content-type']), /^text\/html/, 'as a web page (docs/RESULTS.md rendered)');
+  const results = await response.text();
+  assert.match(results, /<h1[^>]*>Results/);
+  assert.doesNotMatch(results, /^#+ /m, 'no raw Markdown');
   const visible = await page.evaluate(() => document.body.innerText + [...document.querySelectorAll('[title]')].map((e) => e.getAttribute('title')).join(' '));
   for (const internal of [/SPEC \d/, /downstream/i, /\bengine\b/i, /sim s \/ wall s/, /\.js\b/, /\bevals\b/]) {
     assert.doesNotMatch(visible, internal, `the page shows ${internal}`);
