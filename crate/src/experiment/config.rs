@@ -237,7 +237,7 @@ impl EvolutionConfig {
                 .map(|c| c.name())
                 .collect();
             return Err(Error::Input(format!(
-                "the {} controller has genes for each voxel of one body, so it cannot train on                  a body set; choose a controller for any body: {}",
+                "the {} controller has genes for each voxel of one body, so it cannot train on a body set; choose a controller for any body: {}",
                 self.controller,
                 any.join(", ")
             )));
@@ -260,13 +260,11 @@ impl EvolutionConfig {
 
     /// Fine-tuning needs attention on both sides and exactly the attention block frozen.
     fn validate_source(&self, source: &SourceRun) -> Result<()> {
-        let has_attention = |k: ControllerKind| {
-            matches!(k, ControllerKind::Attention | ControllerKind::SlowAttention)
-        };
+        let has_attention = ControllerKind::has_attention;
         if !has_attention(source.controller) || !has_attention(self.controller) {
             return Err(Error::Input(format!(
                 "fine-tuning transfers an attention block: the source controller is {} and the \
-                 new one {}, both must be attention or slow-attention",
+                 new one {}, both must be attention, slow-attention or attention-any",
                 source.controller, self.controller
             )));
         }

@@ -58,7 +58,8 @@ pub fn replay(
     terrain: impl Into<Arc<Terrain>>,
     noise_seed: Option<u64>,
 ) -> Result<Episode> {
-    if let Some(other) = shape.filter(|s| **s != best.shape) {
+    let body_independent = best.controller.is_body_independent();
+    if let Some(other) = shape.filter(|s| **s != best.shape && !body_independent) {
         return Err(Error::Input(format!(
             "this {} controller needs shape {} ({} voxels), not {} ({} voxels); \
              leave the shape out to use its own",
@@ -69,9 +70,11 @@ pub fn replay(
             other.voxel_count()
         )));
     }
-    let controller = controller_for(best.controller, &best.shape, &best.genome)?;
+    // A brain for any body walks the shape it is given.
+    let body = shape.unwrap_or(&best.shape);
+    let controller = controller_for(best.controller, body, &best.genome)?;
     Ok(Episode::with_policy(
-        &best.shape,
+        body,
         terrain,
         Policy::Brain(controller),
         noise_seed,

@@ -12,7 +12,7 @@
 use super::config::{EvolutionConfig, SourceRun};
 use super::run::{Best, RunFile};
 use super::seeds::{evaluation_seed, Purpose};
-use crate::controllers::{ControllerKind, ATTENTION_PARAMS};
+use crate::controllers::ATTENTION_PARAMS;
 use crate::error::{Error, Result};
 use crate::genetics::GaConfig;
 use crate::random::rng_from;
@@ -23,13 +23,18 @@ use rand::Rng;
 /// the best individual of `run` put on `shape`, the first genome of that fine-tuning run
 /// (`initial_population`): its 32 attention genes kept, the downstream genes re-drawn for
 /// the new body (unchanged on its own body). An MLP or MLP-Comm module has no
-/// body-independent part: it keeps its own body and is refused on another.
+/// body-independent part: it keeps its own body and is refused on another. A brain for any
+/// body (attention-any, ...) crosses whole: one genome drives every body.
 pub fn transplant(source: SourceRun, shape: Shape, seed: u64) -> Result<Vec<f32>> {
-    let attention = matches!(
-        source.controller,
-        ControllerKind::Attention | ControllerKind::SlowAttention
-    );
-    if !attention {
+    if source.controller.is_body_independent() {
+        source.controller.check_genome(
+            "the module's genome",
+            shape.voxel_count(),
+            &source.genome,
+        )?;
+        return Ok(source.genome);
+    }
+    if !source.controller.has_attention() {
         if source.shape == shape {
             return Ok(source.genome);
         }
@@ -50,7 +55,9 @@ pub fn transplant(source: SourceRun, shape: Shape, seed: u64) -> Result<Vec<f32>
 /// The first member(s) of a fine-tuning run's population: the source individual, adapted
 /// to the new genome length (see the module doc). The configuration is already validated.
 pub(crate) fn initial_population(config: &EvolutionConfig, source: &SourceRun) -> Vec<Vec<f32>> {
-    let same_layout = source.shape == config.shape && source.controller == config.controller;
+    // A brain for any body has one layout for every body: it starts whole.
+    let same_layout = source.controller == config.controller
+        && (source.shape == config.shape || config.controller.is_body_independent());
     if same_layout {
         return vec![source.genome.clone()];
     }

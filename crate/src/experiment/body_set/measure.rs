@@ -6,7 +6,8 @@
 //!
 //!     cargo test --release --lib local_inputs_choice -- --ignored --nocapture
 //!
-//! It prints one line per (inputs, seed): training fitness of the final best and the median
+//! (`VSR_MEASURE_EVALS`, `VSR_MEASURE_SEEDS=1,2` and `VSR_MEASURE_INPUTS=constant,neighbours`
+//! narrow it.) It prints one line per (inputs, seed): training fitness of the final best and the median
 //! over `heldout-random` of each body's mean speed on the unseen terrains (20-s episodes here).
 
 use super::BodySet;
@@ -84,8 +85,18 @@ fn local_inputs_choice() {
         .unwrap_or(2000);
     let seconds = 20.0;
     println!("inputs            seed  training best  held-out median (m/s), {evals} evaluations, 4 bodies each, {seconds}-s episodes");
-    for which in LocalInputs::ALL {
-        for seed in [1u64, 2] {
+    let env = |name: &str| std::env::var(name).unwrap_or_default();
+    let seeds: Vec<u64> = env("VSR_MEASURE_SEEDS")
+        .split(',')
+        .filter_map(|s| s.trim().parse().ok())
+        .collect();
+    let seeds = if seeds.is_empty() { vec![1, 2] } else { seeds };
+    let only = env("VSR_MEASURE_INPUTS");
+    for which in LocalInputs::ALL
+        .into_iter()
+        .filter(|w| only.is_empty() || only.split(',').any(|o| o == w.name()))
+    {
+        for &seed in &seeds {
             let mut config = EvolutionConfig::on_bodies(
                 train.clone(),
                 4,
