@@ -266,6 +266,13 @@ test('simple words: formulas and statistics hidden, kept after a reload; the new
   assert.equal(await byTestId(page, 'simple-words').isChecked(), true, 'kept');
   assert.equal(await page.locator('#attention-reader details.formula').evaluate((el) => getComputedStyle(el).display), 'none');
   assert.equal(await page.locator('#results-plain details.stats').isVisible(), false);
+  // Labels in plain words where they have them, the expert's figures hidden (issue 46's list: f (Hz), φ (rad / column), ...).
+  const labels = () => page.evaluate(() => [...document.querySelectorAll('[data-simple]')].map((e) => e.textContent));
+  assert.deepEqual(await labels(), ['The drawing as text (1: a voxel)', 'beats per second', 'delay from column to column', 'Training hills (new ones every walk)']);
+  for (const expert of ['#engine-rate', '#run-workers']) assert.equal(await page.locator(expert).isVisible(), false, `${expert} hidden in simple words`);
+  await byTestId(page, 'simple-words').uncheck();
+  assert.deepEqual(await labels(), ['Rows (top first)', 'f (Hz)', 'φ (rad / column)', 'Training terrain'], 'the expert\'s words back');
+  await byTestId(page, 'simple-words').check();
 
   // The glossary explains the issue's words, and a word in the page links to its entry.
   const glossary = String(await page.locator('#glossary dl').textContent());

@@ -1,7 +1,9 @@
 // @ts-check
 /**
- * Words for a class: the “Simple words” switch in the header hides formulas and statistics
- * (elements marked `formula` or `stats`; classroom.css), and is kept in the browser; the
+ * Words for a class: the “Simple words” switch in the header hides formulas, statistics and
+ * figures for the expert (elements marked `formula`, `stats` or `expert`; classroom.css), says a
+ * label in plain words where it has them (`data-simple`: "f (Hz)" becomes "beats per second"),
+ * and is kept in the browser; the
  * glossary's words are links where they appear (`a.term`), which open the glossary at their
  * entry, and links within the page (`a.jump`) scroll there without touching the address (its
  * `#...` is the share link's); and {@link withStats} marks a caption's statistics so that the switch can hide them.
@@ -77,6 +79,11 @@ export function wireWords(doc) {
   const box = byId(doc, 'simple-words', HTMLInputElement);
   const set = (/** @type {boolean} */ on) => {
     if (on) doc.documentElement.dataset.words = 'simple'; else delete doc.documentElement.dataset.words;
+    for (const el of doc.querySelectorAll('[data-simple]')) {
+      if (!(el instanceof HTMLElement)) continue;
+      el.dataset.expert ??= el.textContent ?? '';
+      el.textContent = on ? el.dataset.simple ?? '' : el.dataset.expert;
+    }
   };
   let kept = false;
   try { kept = localStorage.getItem(KEY) === '1'; } catch { /* storage off: the switch starts off */ }
