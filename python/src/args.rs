@@ -3,6 +3,7 @@
 
 use numpy::PyReadonlyArray2;
 use pyo3::prelude::*;
+use pyo3::types::{PyBool, PyList, PyString, PyTuple};
 use vsr::controllers::ControllerKind;
 use vsr::experiment::config::check_seconds;
 use vsr::simulation::{Shape, Terrain};
@@ -21,7 +22,7 @@ pub fn setup(
     shape: &str,
     controller: &str,
     terrain_name: &str,
-    length: f64,
+    length: &Bound<'_, PyAny>,
 ) -> PyResult<(Shape, ControllerKind, Terrain, f64)> {
     let (shape, kind) = robot(shape, controller)?;
     Ok((shape, kind, terrain(terrain_name)?, seconds(length)?))
@@ -32,22 +33,90 @@ pub fn terrain(name: &str) -> PyResult<Terrain> {
     Terrain::parse(name).map_err(to_py)
 }
 
-/// An episode length, checked as the command line checks it (the same message).
-pub fn seconds(seconds: f64) -> PyResult<f64> {
+/// The episode length when none is given (s): the paper's.
+pub const DEFAULT_SECONDS: f64 = 30.0;
+
+/// An episode length as Python gives it (`seconds`): a number (else a `ValueError` naming
+/// `seconds`), then checked as the command line checks it (the same message).
+pub fn seconds(value: &Bound<'_, PyAny>) -> PyResult<f64> {
+    let seconds = number(value, "seconds")?;
     check_seconds(seconds).map_err(to_py)?;
     Ok(seconds)
 }
 
+/// A real-number argument named `name`: a Python int or float (or anything with
+/// `__float__`, numpy's scalars included), not a bool or a string; anything else, and an int
+/// too large for a float, a `ValueError` that names it, not the `TypeError` or
+/// `OverflowError` of a plain conversion. The range is the caller's to check.
+pub fn number(value: &Bound<'_, PyAny>, name: &str) -> PyResult<f64> {
+    let refused = || input(format!("{name} must be a number, got {}", describe(value)));
+    if value.is_instance_of::<PyBool>() || value.is_instance_of::<PyString>() {
+        return Err(refused());
+    }
+    value.extract::<f64>().map_err(|_| refused())
+}
+
+/// An optional [`number`] (None when not given).
+pub fn optional_number(value: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Option<f64>> {
+    value
+        .filter(|v| !v.is_none())
+        .map(|v| number(v, name))
+        .transpose()
+}
+
 /// A whole-number argument (a seed, a count, a number of threads) named `name`: an integer
-/// in [0, 2^64 - 1], anything else (-1, 2.5, "3") a `ValueError` that names it, not the
-/// `OverflowError` or `TypeError` of a plain conversion.
+/// in [0, 2^64 - 1], anything else (-1, 2.5, "3", True, 2^64) a `ValueError` that names it,
+/// not the `OverflowError` or `TypeError` of a plain conversion.
 pub fn whole(value: &Bound<'_, PyAny>, name: &str) -> PyResult<u64> {
-    value.extract::<u64>().map_err(|_| {
+    integer(value).ok_or_else(|| {
         input(format!(
             "{name} must be an integer in [0, 2^64 - 1], got {}",
             describe(value)
         ))
     })
+}
+
+/// `value` as a u64 when it is a Python integer (or one of numpy's) in range; a bool is not
+/// taken for 0 or 1.
+fn integer(value: &Bound<'_, PyAny>) -> Option<u64> {
+    if value.is_instance_of::<PyBool>() {
+        return None;
+    }
+    value.extract::<u64>().ok()
+}
+
+/// A pair of whole numbers named `name`, e.g. `voxels` (min, max): a tuple or list of two
+/// integers in [0, 2^64 - 1], anything else a `ValueError` that names it and its parts.
+pub fn pair(value: &Bound<'_, PyAny>, name: &str, parts: &str) -> PyResult<(usize, usize)> {
+    let refused = || {
+        input(format!(
+            "{name} must be two integers {parts}, each in [0, 2^64 - 1], got {}",
+            describe(value)
+        ))
+    };
+    if !(value.is_instance_of::<PyTuple>() || value.is_instance_of::<PyList>()) {
+        return Err(refused());
+    }
+    let items: Vec<Bound<'_, PyAny>> = value.try_iter()?.collect::<PyResult<_>>()?;
+    match items.as_slice() {
+        [a, b] => {
+            let one = |v: &Bound<'_, PyAny>| integer(v).and_then(|n| usize::try_from(n).ok());
+            Ok((one(a).ok_or_else(refused)?, one(b).ok_or_else(refused)?))
+        }
+        _ => Err(refused()),
+    }
+}
+
+/// An optional [`pair`] (None when not given).
+pub fn optional_pair(
+    value: Option<&Bound<'_, PyAny>>,
+    name: &str,
+    parts: &str,
+) -> PyResult<Option<(usize, usize)>> {
+    value
+        .filter(|v| !v.is_none())
+        .map(|v| pair(v, name, parts))
+        .transpose()
 }
 
 /// [`whole`] as a `usize` (a count of threads, of bodies).
@@ -62,8 +131,8 @@ pub fn optional_threads(value: Option<&Bound<'_, PyAny>>) -> PyResult<Option<usi
     let Some(v) = value.filter(|v| !v.is_none()) else {
         return Ok(None);
     };
-    match v.extract::<usize>() {
-        Ok(n) if n >= 1 => Ok(Some(n)),
+    match integer(v).and_then(|n| usize::try_from(n).ok()) {
+        Some(n) if n >= 1 => Ok(Some(n)),
         _ => Err(input(format!(
             "threads must be an integer of at least 1, or None for every core; got {}",
             describe(v)

@@ -12,7 +12,9 @@ use vsr::controllers::ControllerKind;
 use vsr::experiment::codesign::source_in_file;
 use vsr::experiment::{BrainMode, Codesign, CodesignConfig, Job, Timing, TrainingTerrain};
 
-use crate::args::{optional_threads, optional_usize, whole};
+use crate::args::{
+    optional_number, optional_pair, optional_threads, optional_usize, whole, DEFAULT_SECONDS,
+};
 use crate::batch::{info, Pool};
 use crate::errors::to_py;
 
@@ -21,7 +23,7 @@ use crate::errors::to_py;
 /// entry `entry`).
 #[pyfunction]
 #[pyo3(signature = (brain, evals, seed, module=None, controller="attention", start=None,
-    seconds=30.0, terrain="hilly-1-10", grid=None, voxels=None, batch=None, threads=None,
+    seconds=None, terrain="hilly-1-10", grid=None, voxels=None, batch=None, threads=None,
     entry=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn codesign(
@@ -32,10 +34,10 @@ pub fn codesign(
     module: Option<&str>,
     controller: &str,
     start: Option<&str>,
-    seconds: f64,
+    seconds: Option<Bound<'_, PyAny>>,
     terrain: &str,
-    grid: Option<(usize, usize)>,
-    voxels: Option<(usize, usize)>,
+    grid: Option<Bound<'_, PyAny>>,
+    voxels: Option<Bound<'_, PyAny>>,
     batch: Option<Bound<'_, PyAny>>,
     threads: Option<Bound<'_, PyAny>>,
     entry: Option<Bound<'_, PyAny>>,
@@ -44,6 +46,9 @@ pub fn codesign(
     let batch = optional_usize(batch.as_ref(), "batch")?;
     let threads = optional_threads(threads.as_ref())?;
     let entry = optional_usize(entry.as_ref(), "entry")?;
+    let seconds = optional_number(seconds.as_ref(), "seconds")?.unwrap_or(DEFAULT_SECONDS);
+    let grid = optional_pair(grid.as_ref(), "grid", "(width, height)")?;
+    let voxels = optional_pair(voxels.as_ref(), "voxels", "(min, max)")?;
     let brain: BrainMode = brain.parse().map_err(to_py)?;
     let controller: ControllerKind = controller.parse().map_err(to_py)?;
     let module = match (module, entry) {

@@ -17,7 +17,9 @@ use vsr::simulation::constants::ACTUATION_HOLD_STEPS;
 use vsr::simulation::sensors::READING_BOUNDS;
 use vsr::simulation::{Shape, Terrain};
 
-use crate::args::{describe, seconds as check_seconds, terrain as parse_terrain, whole};
+use crate::args::{
+    describe, seconds as check_seconds, terrain as parse_terrain, whole, DEFAULT_SECONDS,
+};
 use crate::errors::{input, to_py};
 
 type Engine = vsr::experiment::Episode;
@@ -36,15 +38,19 @@ pub struct Episode {
 #[pymethods]
 impl Episode {
     #[new]
-    #[pyo3(signature = (shape, terrain, seconds=30.0, noise_seed=None))]
+    #[pyo3(signature = (shape, terrain, seconds=None, noise_seed=None))]
     #[pyo3(text_signature = "(shape, terrain, seconds=30.0, noise_seed=0)")]
     fn new(
         shape: &str,
         terrain: &str,
-        seconds: f64,
+        seconds: Option<Bound<'_, PyAny>>,
         noise_seed: Option<Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
         let shape = Shape::parse(shape).map_err(to_py)?;
+        let seconds = match seconds {
+            Some(seconds) => check_seconds(&seconds)?,
+            None => DEFAULT_SECONDS,
+        };
         let noise_seed = match noise_seed {
             Some(seed) => whole(&seed, "noise_seed")?,
             None => 0,
@@ -53,7 +59,7 @@ impl Episode {
             shape,
             terrain: parse_terrain(terrain)?,
             noise_seed,
-            steps: steps_for(check_seconds(seconds)?),
+            steps: steps_for(seconds),
             engine: None,
             last_x: 0.0,
         })

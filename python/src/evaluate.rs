@@ -30,11 +30,11 @@ pub fn evaluate<'py>(
     shape: &str,
     controller: &str,
     terrain: &str,
-    seconds: f64,
+    seconds: Bound<'py, PyAny>,
     threads: Option<Bound<'py, PyAny>>,
     noise_seed: Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-    let (shape, kind, terrain, seconds) = setup(shape, controller, terrain, seconds)?;
+    let (shape, kind, terrain, seconds) = setup(shape, controller, terrain, &seconds)?;
     let threads = optional_threads(threads.as_ref())?;
     let noise = Some(whole(&noise_seed, "noise_seed")?);
     let (count, length) = (genomes.shape()[0], genomes.shape()[1]);

@@ -7,6 +7,7 @@
 mod args;
 mod batch;
 mod bodies;
+mod body_set;
 mod codesign;
 mod controller;
 mod episode;
@@ -28,6 +29,8 @@ fn _vsr(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(simulate::simulate, m)?)?;
     m.add_function(wrap_pyfunction!(measures::validate, m)?)?;
     m.add_function(wrap_pyfunction!(measures::ablate, m)?)?;
+    m.add_function(wrap_pyfunction!(body_set::read_bodies, m)?)?;
+    m.add_function(wrap_pyfunction!(body_set::validate_bodies, m)?)?;
     m.add_function(wrap_pyfunction!(terrain::terrain_for, m)?)?;
     m.add_function(wrap_pyfunction!(runfile::check_run, m)?)?;
     m.add_function(wrap_pyfunction!(runfile::new_run, m)?)?;

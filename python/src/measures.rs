@@ -17,18 +17,18 @@ use crate::errors::{input, to_py};
 /// `vsr validate` of `genome`: a dict with `set`, `terrains` (names), `noise_seeds`,
 /// `velocities` (float64 array), `median` and `mean`.
 #[pyfunction]
-#[pyo3(signature = (genome, shape, controller, set="paper", seconds=30.0))]
+#[pyo3(signature = (genome, shape, controller, set, seconds))]
 pub fn validate<'py>(
     py: Python<'py>,
     genome: Vec<f32>,
     shape: &str,
     controller: &str,
     set: &str,
-    seconds: f64,
+    seconds: Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let best = best(genome, shape, controller)?;
     let set = set.parse::<ValidationSet>().map_err(to_py)?;
-    let seconds = check_seconds(seconds)?;
+    let seconds = check_seconds(&seconds)?;
     let validation = py
         .detach(|| validate_on(&best, set, seconds))
         .map_err(to_py)?;
@@ -56,10 +56,10 @@ pub fn ablate<'py>(
     controller: &str,
     terrain: &str,
     last_second: Bound<'py, PyAny>,
-    seconds: f64,
+    seconds: Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let best = best(genome, shape, controller)?;
-    let seconds = check_seconds(seconds)?;
+    let seconds = check_seconds(&seconds)?;
     let asked = whole(&last_second, "last_second")?;
     let last_second = u32::try_from(asked)
         .ok()

@@ -5,7 +5,7 @@
 use pyo3::prelude::*;
 use vsr::experiment::{Best, EvolutionConfig, RunFile, TrainingTerrain};
 
-use crate::args::{robot, whole};
+use crate::args::{optional_number, robot, seconds as check_seconds, whole};
 use crate::errors::to_py;
 
 /// The run file `text` checked as `vsr evaluate` checks it, printed as `vsr` prints it.
@@ -25,14 +25,16 @@ pub fn new_run(
     genome: Vec<f32>,
     shape: &str,
     controller: &str,
-    fitness: Option<f64>,
+    fitness: Option<Bound<'_, PyAny>>,
     seed: Bound<'_, PyAny>,
     evaluations: Bound<'_, PyAny>,
-    seconds: Option<f64>,
+    seconds: Option<Bound<'_, PyAny>>,
     terrain: Option<&str>,
 ) -> PyResult<String> {
     let (shape, kind) = robot(shape, controller)?;
     let (seed, evaluations) = (whole(&seed, "seed")?, whole(&evaluations, "evaluations")?);
+    let fitness = optional_number(fitness.as_ref(), "fitness")?;
+    let seconds = seconds.as_ref().map(check_seconds).transpose()?;
     let mut config = EvolutionConfig::paper(shape.clone(), kind, evaluations, seed);
     config.ga.budget_evals = evaluations.max(config.ga.population as u64);
     if let Some(seconds) = seconds {

@@ -40,11 +40,11 @@ pub fn simulate<'py>(
     shape: &str,
     controller: &str,
     terrain: &str,
-    seconds: f64,
+    seconds: Bound<'py, PyAny>,
     noise_seed: Bound<'py, PyAny>,
     trajectory: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let (shape, kind, terrain, seconds) = setup(shape, controller, terrain, seconds)?;
+    let (shape, kind, terrain, seconds) = setup(shape, controller, terrain, &seconds)?;
     let noise_seed = whole(&noise_seed, "noise_seed")?;
     let brain = controller_for(kind, &shape, &genome).map_err(to_py)?;
     let n = shape.voxel_count();

@@ -6,11 +6,13 @@
 use pyo3::prelude::*;
 use vsr::experiment::TrainingTerrain;
 
+use crate::args::whole;
 use crate::errors::to_py;
 
 /// The terrain name of draw `draw` from `terrain` (a family or a name).
 #[pyfunction]
-pub fn terrain_for(terrain: &str, draw: u64) -> PyResult<String> {
+pub fn terrain_for(terrain: &str, draw: Bound<'_, PyAny>) -> PyResult<String> {
+    let draw = whole(&draw, "draw")?;
     let training = TrainingTerrain::parse(terrain).map_err(to_py)?;
     Ok(training.name_for(draw))
 }

@@ -133,3 +133,65 @@ def test_a_word_that_is_not_a_string_is_named(call, named):
 def test_a_run_file_given_as_a_genome_says_where_its_genes_are():
     with pytest.raises(TypeError, match=r"got a dict \(a run file\? its genes are run\['best'\]\['genome'\]\)"):
         vsr.validate({"best": {}}, "biped-4x3", "attention")
+
+
+ANY = np.zeros(61, dtype=np.float32)
+
+
+@pytest.mark.parametrize("call, named", [
+    # integers: negative, beyond 2^64 - 1, fractional, a string, a bool
+    (lambda: vsr.codesign("scratch", 100, 1, voxels=(-1, 5)), "voxels"),
+    (lambda: vsr.codesign("scratch", 100, 1, voxels=(2, 2**64)), "voxels"),
+    (lambda: vsr.codesign("scratch", 100, 1, grid=(3,)), "grid"),
+    (lambda: vsr.codesign("scratch", 100, 1, grid=(2.5, 3)), "grid"),
+    (lambda: vsr.codesign("scratch", 100, 1, grid="5x5"), "grid"),
+    (lambda: vsr.codesign("scratch", -100, 1), "evals"),
+    (lambda: vsr.codesign("scratch", 100.5, 1), "evals"),
+    (lambda: vsr.codesign("scratch", "100", 1), "evals"),
+    (lambda: vsr.codesign("scratch", 100, 2**64), "seed"),
+    (lambda: vsr.codesign("scratch", 100, 1, batch=-2), "batch"),
+    (lambda: vsr.codesign("scratch", 100, 1, threads=-1), "threads"),
+    (lambda: vsr.evaluate(GENOMES, "biped-4x3", "attention", "flat", noise_seed=True), "noise_seed"),
+    (lambda: vsr.evaluate(GENOMES, "biped-4x3", "attention", "flat", noise_seed=2**64), "noise_seed"),
+    (lambda: vsr.evaluate(GENOMES, "biped-4x3", "attention", "flat", threads=True), "threads"),
+    (lambda: vsr.evaluate_bodies(["11"], ANY, "attention-any", "flat", threads=2**70), "threads"),
+    (lambda: vsr.ablate(GENOMES[0], "biped-4x3", "attention", last_second=2.5), "last_second"),
+    (lambda: vsr.new_run(GENOMES[0], "biped-4x3", "attention", seed=1.5), "seed"),
+    (lambda: vsr.Episode("biped-4x3", "flat", noise_seed=-3), "noise_seed"),
+    (lambda: vsr.Episode("biped-4x3", "flat").reset(seed=2**65), "seed"),
+    (lambda: vsr.validate(ANY, controller="attention-any", bodies=["11"], threads=0), "threads"),
+    # numbers: a string, a bool, an int too large for a float, None where a number belongs
+    (lambda: vsr.codesign("scratch", 100, 1, seconds="10"), "seconds"),
+    (lambda: vsr.evaluate(GENOMES, "biped-4x3", "attention", "flat", seconds="10"), "seconds"),
+    (lambda: vsr.evaluate(GENOMES, "biped-4x3", "attention", "flat", seconds=10**400), "seconds"),
+    (lambda: vsr.evaluate(GENOMES, "biped-4x3", "attention", "flat", seconds=None), "seconds"),
+    (lambda: vsr.evaluate_bodies(["11"], ANY, "attention-any", "flat", seconds=True), "seconds"),
+    (lambda: vsr.simulate(GENOMES[0], "biped-4x3", "attention", "flat", seconds=[3]), "seconds"),
+    (lambda: vsr.validate(GENOMES[0], "biped-4x3", "attention", seconds="30"), "seconds"),
+    (lambda: vsr.validate(ANY, controller="attention-any", bodies=["11"], seconds="3"), "seconds"),
+    (lambda: vsr.ablate(GENOMES[0], "biped-4x3", "attention", seconds=b"10"), "seconds"),
+    (lambda: vsr.new_run(GENOMES[0], "biped-4x3", "attention", fitness="fast"), "fitness"),
+    (lambda: vsr.new_run(GENOMES[0], "biped-4x3", "attention", seconds="30"), "seconds"),
+    (lambda: vsr.Episode("biped-4x3", "flat", seconds="30"), "seconds"),
+])
+def test_a_bad_number_is_a_value_error_that_names_its_setting(call, named):
+    with pytest.raises(ValueError, match=rf"^invalid input: {named} must be "):
+        call()
+
+
+@pytest.mark.parametrize("call", [
+    lambda: vsr.codesign("scratch", 100, 1, seconds=-5),
+    lambda: vsr.evaluate(GENOMES, "biped-4x3", "attention", "flat", seconds=float("nan")),
+    lambda: vsr.new_run(GENOMES[0], "biped-4x3", "attention", seconds=1e9),
+    lambda: vsr.Episode("biped-4x3", "flat", seconds=0),
+])
+def test_seconds_out_of_range_say_the_range(call):
+    with pytest.raises(ValueError, match=r"^invalid input: episode seconds must be in \(0, 3600\]"):
+        call()
+
+
+def test_numpy_scalars_are_numbers():
+    one = vsr.evaluate(GENOMES[0], "biped-4x3", "attention", "flat", seconds=np.float32(1.0),
+                       noise_seed=np.uint64(3), threads=np.int64(1))
+    assert one.tolist() == vsr.evaluate(GENOMES[0], "biped-4x3", "attention", "flat",
+                                        seconds=1.0, noise_seed=3).tolist()

@@ -76,8 +76,5 @@ def new_run(genome, shape, controller, fitness=None, seed=0, evaluations=0, seco
     `fitness`. ``vsr evaluate --genome FILE`` and the page replay it once saved, for
     `seconds` unless told otherwise."""
     values = [float(g) for g in genes(np.ravel(genome), 1, "the genome")]
-    if fitness is not None:
-        fitness = float(fitness)
-    text = _vsr.new_run(values, shape, controller, fitness, seed, evaluations, float(seconds),
-                        terrain)
+    text = _vsr.new_run(values, shape, controller, fitness, seed, evaluations, seconds, terrain)
     return _arrays(json.loads(text))
