@@ -11,7 +11,8 @@
  *                         a browser never keeps an old script beside a new core
  *   sw.js                 the service worker (www/offline/service-worker.js) with the version and
  *                         the list of files it keeps for offline use (every file of the site but
- *                         the study's run files, which it keeps once opened)
+ *                         the study's run files, which it keeps once opened, and the link
+ *                         preview's image, app-V/preview.png, which only a link preview reads)
  *   pretrained/           manifest.json and the modules and bodies it lists
  *   study/                the study's tables, figures and claim file the page shows, and the run
  *                         file of every run the study panel lists (the page's own lists decide:
@@ -22,6 +23,8 @@
  * Every address in it is relative, so the folder works at any sub-path. Nothing else is copied.
  * SITE_SOURCE_URL (e.g. https://github.com/OWNER/REPO/blob/SHA, set by the Pages workflow) is
  * where a guide's links to other files of the repository point; without it they are plain words.
+ * SITE_URL (the site's own address, set by the Pages workflow) makes the link preview's image
+ * (og:image) a whole address, as link previews want; without it, it is relative.
  *
  *   node scripts/site.mjs            # or `make site`
  *
@@ -117,19 +120,28 @@ async function docFiles(page) {
  * The page's index.html for the site: its own files' addresses (style sheets, the main
  * script) into the versioned folder, and the site's version for offline.js.
  * @param {string} html @param {Map<string, Buffer>} page @param {string} app the versioned folder, e.g. 'app-1a2b/' @param {string} version
+ * @param {string} [url] the site's own address (SITE_URL, ending in /), if known
  */
-function siteIndex(html, page, app, version) {
-  const out = html.replace(/\b(href|src)="([^"#:?]+)"/g, (all, attr, ref) => (page.has(ref) ? `${attr}="${app}${ref}"` : all));
-  return out.replace('<meta charset="utf-8">', `<meta charset="utf-8">\n  <meta name="vsr-site" content="${version}">`);
+function siteIndex(html, page, app, version, url = '') {
+  const out = html.replace(/\b(href|src)="([^"#:?]+)"/g, (all, attr, ref) => (page.has(ref) ? `${attr}="${app}${ref}"` : all))
+    // The link preview's image: relative, or at the site's address when it is known (a preview reader wants a whole address).
+    .replace(/(<meta (?:property|name)="(?:og|twitter):image" content=")([^"#:?]+)"/g, (all, head, ref) => (page.has(ref) ? `${head}${url}${app}${ref}"` : all));
+  const meta = `<meta name="vsr-site" content="${version}">${url ? `\n  <meta property="og:url" content="${url}">` : ''}`;
+  return out.replace('<meta charset="utf-8">', `<meta charset="utf-8">\n  ${meta}`);
 }
+
+/** The page's preview image for link previews (index.html's og:image), not kept for offline use. */
+export const PREVIEW = 'preview.png';
 
 /**
  * Builds the site into `out` (replaced whole).
- * @param {{out?: string, source?: string, salt?: string, log?: (line: string) => void}} [options] salt: mixed
- *   into the version (a test's second build of the same files, as a new version)
+ * @param {{out?: string, source?: string, url?: string, salt?: string, log?: (line: string) => void}} [options] salt: mixed
+ *   into the version (a test's second build of the same files, as a new version); url: the site's address (SITE_URL), for
+ *   the link preview's image
  * @returns {Promise<{out: string, version: string, files: string[], bytes: number, precache: string[]}>}
  */
-export async function buildSite({ out = process.env.SITE_OUT ?? path.join(ROOT, 'target', 'site'), source = process.env.SITE_SOURCE_URL ?? '', salt = '', log = console.log } = {}) {
+export async function buildSite({ out = process.env.SITE_OUT ?? path.join(ROOT, 'target', 'site'), source = process.env.SITE_SOURCE_URL ?? '',
+  url = process.env.SITE_URL ?? '', salt = '', log = console.log } = {}) {
   if (!existsSync(path.join(WWW, 'pkg', 'vsr_bg.wasm'))) throw new Error('www/pkg/vsr_bg.wasm is missing: build the wasm core first (`make wasm`)');
   /** The page's files by path in www/ (index.html apart), the vendored libraries with them. @type {Map<string, Buffer>} */
   const page = new Map();
@@ -167,11 +179,11 @@ export async function buildSite({ out = process.env.SITE_OUT ?? path.join(ROOT, 
 
   /** The site's files by path. @type {Map<string, Buffer>} */
   const site = new Map();
-  site.set('index.html', Buffer.from(siteIndex(index, page, app, version)));
+  site.set('index.html', Buffer.from(siteIndex(index, page, app, version, url && `${url.replace(/\/*$/, '')}/`)));
   for (const [file, bytes] of page) site.set(app + file, bytes);
   for (const [file, bytes] of data) site.set(file, bytes);
   // Kept for offline use on the first visit: everything but the study's run files (kept once opened).
-  const precache = ['./', ...[...site.keys()].filter((f) => f !== 'index.html' && !/^study\/runs\//.test(f))].sort();
+  const precache = ['./', ...[...site.keys()].filter((f) => f !== 'index.html' && f !== app + PREVIEW && !/^study\/runs\//.test(f))].sort();
   site.set(SW_NAME, Buffer.from(`self.VSR_SITE = ${JSON.stringify({ version, precache })};\n${worker}`));
 
   const staging = `${out}.tmp`;

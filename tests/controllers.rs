@@ -18,10 +18,10 @@ fn expected_count(kind: ControllerKind, n: usize) -> usize {
         ControllerKind::Mlp => 4 * n + 1,
         ControllerKind::MlpComm | ControllerKind::MlpCommLatched => (8 * n + 1) * 5,
         ControllerKind::SlowAttention => 32 + 4 * n + 1 + 2,
-        // One genome for every body: shared genes, then 7 local-input weights per voxel gene.
-        ControllerKind::AttentionAny => 32 + 1 + 4 * 7,
-        ControllerKind::MlpAny => 1 + 4 * 7,
-        ControllerKind::MlpCommAny => 5 + 5 * 8 * 7,
+        // One genome for every body: shared genes, then 5 local-input weights per voxel gene.
+        ControllerKind::AttentionAny => 32 + 1 + 4 * 5,
+        ControllerKind::MlpAny => 1 + 4 * 5,
+        ControllerKind::MlpCommAny => 5 + 5 * 8 * 5,
     }
 }
 

@@ -22,3 +22,20 @@ export function byId(root, id, type) {
   if (!(found instanceof want)) throw new Error(`#${id} is a <${found.localName}>, not an ${want.name}`);
   return found;
 }
+
+/**
+ * Calls `show` once, the first time `el` comes within `margin` (above or below) of the screen:
+ * for what the page fetches only when someone can see it, not at start (the study's tables and
+ * figures; issue 46). An element hidden (display: none) is not near: it waits until it shows.
+ * @param {Element} el @param {() => void} show @param {string} [margin] a CSS length, e.g. '300px'
+ */
+export function whenNear(el, show, margin = '0px') {
+  let done = false;
+  const seen = new IntersectionObserver((entries) => {
+    if (done || !entries.some((e) => e.isIntersecting)) return;
+    done = true;
+    seen.disconnect();
+    show();
+  }, { rootMargin: `${margin} 0px ${margin} 0px` });
+  seen.observe(el);
+}

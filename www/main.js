@@ -10,7 +10,7 @@
 import { lostInLink, whyNoFinetune } from './brain.js';
 import { ready } from './core.js';
 import { rowsField, wireDrawControls } from './draw-controls.js';
-import { byId } from './dom.js';
+import { byId, whenNear } from './dom.js';
 import { Drawing } from './drawing.js';
 import { Editor } from './editor.js';
 import { Keeper } from './keeper.js';
@@ -246,7 +246,11 @@ const playground = {
 };
 const lab = new Lab({ defaults, latestRun: () => ({ ...race.run, running: robot.running }), raceSeconds: () => Number(race.seconds.value) });
 const study = new StudyPanel(document, playground);
-study.loaded.then(() => modules.setStudyRuns(study.runs));
+// The module list's note on a study run's other stops needs the study's tables: read once the note can be seen (or the list is used),
+// watched from when the list is made (while the page fills in, the note passes through the first screen).
+const studyRuns = () => void study.load().then(() => modules.setStudyRuns(study.runs));
+modules.listed.then(() => whenNear(byId(document, 'module-details'), studyRuns));
+modules.select.addEventListener('change', studyRuns);
 const tour = new Tour(document, playground, study, new Classroom(document, lab));
 fillResults(byId(document, 'results-plain-body'), (id) => study.show(id));
 wireWords(document);

@@ -103,6 +103,8 @@ async function answerAndReveal(page, n) {
   if (shows) assert.equal(await page.locator('#tour-body figure').isVisible(), true, `chapter ${n}: the figure after the reveal`);
   if (setup.race) await page.locator('#race-panel:not([data-state="waiting"])').waitFor({ timeout: 10_000 });
   assert.ok(await speeds() > 0, `chapter ${n}: the module list's speeds after the reveal`);
+  await byTestId(page, 'study').scrollIntoViewIfNeeded(); // the study panel reads its files once in sight
+  await page.waitForFunction(() => (/** @type {HTMLImageElement} */ (document.getElementById('study-image'))).naturalWidth > 0);
   assert.equal(await page.locator('#study-image').isVisible(), true, `chapter ${n}: the study's figure after the reveal`);
   assert.equal(await page.locator('#robot-speed').isVisible(), true, `chapter ${n}: the viewer's speed after the reveal`);
   assert.ok((await covered()).every((c) => !c), `chapter ${n}: the speeds in "Driven by" after the reveal`);

@@ -61,6 +61,8 @@ test('the study\'s results in plain words: no Markdown, no file paths, every num
     assert.match(said, new RegExp(`under way: ${claim.finished_runs} of the ${claim.planned_runs} runs have finished`), said);
     assert.doesNotMatch(said, /allow a difference between/, 'no interim answer');
   }
+  await byTestId(page, 'study').scrollIntoViewIfNeeded(); // the study panel reads its files once in sight
+  await page.waitForFunction(() => document.querySelector('[data-testid="study-claim"]')?.textContent !== '');
   assert.equal(await page.locator('[data-testid="study-claim"]').textContent(), said, 'the study panel says the same');
   const figures = await byTestId(page, 'study-figure').locator('option').evaluateAll((os) => os.map((o) => /** @type {HTMLOptionElement} */ (o).value));
   assert.equal(figures.some((id) => id.startsWith('claim-')), claim.complete, `the claim's figures only once it is complete: ${figures}`);
@@ -94,12 +96,15 @@ test('once every run of the claim\'s test is in, the page gives its answer on ea
   await page.route('**/report-noninferiority/intervals-noninferiority-unseen.svg', (route) => route.fulfill({
     body: '<svg xmlns="http://www.w3.org/2000/svg" width="80" height="50"><text y="20">intervals</text></svg>', contentType: 'image/svg+xml' }));
   await page.reload();
+  await byTestId(page, 'results-plain').scrollIntoViewIfNeeded(); // the findings read the claim's file once in sight
   await page.waitForFunction(() => /On the comb/.test(document.querySelector('[data-testid="claim"]')?.textContent ?? ''));
   const said = String(await page.locator('[data-testid="claim"]').textContent());
   assert.match(said, /On the biped \(biped-4x3\), attention is not slower than mlp-comm by 0\.5 m\/s or more, and is faster \(median speeds 3\.90 against 3\.40 m\/s; the runs allow a difference between −0\.12 and \+1\.03 m\/s, with 95% confidence\)\./);
   assert.match(said, /On the comb \(comb-7x2\), not settled: the runs still allow attention being more than 0\.5 m\/s slower/);
   assert.match(said, /On the biped \(biped-6x4\), attention is not slower than mlp-comm by 0\.5 m\/s or more, though these runs do not show it faster either \(/);
   assert.doesNotMatch(said, /under way/);
+  await byTestId(page, 'study').scrollIntoViewIfNeeded();
+  await page.waitForFunction(() => /On the comb/.test(document.querySelector('[data-testid="study-claim"]')?.textContent ?? ''));
   assert.equal(await page.locator('[data-testid="study-claim"]').textContent(), said, 'the study panel says the same');
   // The study panel now lists the test's figures, drawn from its own table of runs only.
   const pick = byTestId(page, 'study-figure');

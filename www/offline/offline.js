@@ -77,4 +77,6 @@ async function start() {
   addEventListener('online', () => { if (line()?.dataset.state === 'offline') say('', ''); });
 }
 
-void start();
+// Once the page has loaded: the first visit's copy of the whole site (about 4 MB) is fetched after what the first screen needs, not with it.
+if (document.readyState === 'complete') void start();
+else addEventListener('load', () => void start(), { once: true });

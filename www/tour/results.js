@@ -8,6 +8,7 @@
  * the section's content.
  */
 
+import { whenNear } from '../dom.js';
 import { fillClaim } from './claim.js';
 import { figure } from './figures.js';
 
@@ -112,7 +113,7 @@ export function fillResults(box, show) {
     if (f.claim) {
       const claim = add('p', 'A larger test of the paper\'s exact claim: reading its state…', 'claim');
       claim.dataset.testid = 'claim';
-      void fillClaim(claim);
+      whenNear(claim, () => void fillClaim(claim), '300px'); // its file is fetched when the section can be seen
       item.append(claim);
     }
     if (f.figure) {

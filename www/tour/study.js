@@ -4,10 +4,12 @@
  * writes, served from study/report/), one at a time with what it shows and what the paper
  * found, and under it the runs it is drawn from (the tables of figures.js): one click walks the
  * chosen run's best robot in the viewer, on its own body (its run file, study/runs/<run>.json,
- * becomes a module of the list, so it can also race or be transplanted).
+ * becomes a module of the list, so it can also race or be transplanted). Its tables, claim and
+ * figure are fetched when needed, not at start (issue 46): when the panel comes near the screen,
+ * a figure is asked for (the tour, the findings) or the module list needs the runs ({@link StudyPanel#load}).
  */
 import { withStats } from '../classroom/simple-words.js';
-import { byId } from '../dom.js';
+import { byId, whenNear } from '../dom.js';
 import { fetchOk, messageOf } from '../kit.js';
 import { shortLabel, unseenWords } from '../module-names.js';
 import { CLAIM_TABLE, FIGURES, STUDY_DIR, TABLES, figureSrc } from './figures.js';
@@ -50,18 +52,36 @@ export class StudyPanel {
     this.watch = byId(doc, 'study-watch', HTMLButtonElement);
     this.runNote = byId(doc, 'study-run-note');
     this.runBar = byId(doc, 'study-run-bar');
-    void fillClaim(byId(doc, 'study-claim'));
+    this.claim = byId(doc, 'study-claim');
     /** @type {StudyRun[]} */
     this.runs = [];
+    /** The tables' reading, once asked for ({@link load}). @type {Promise<void> | null} */
+    this.loading = null;
     this.listFigures(false);
-    this.pick.addEventListener('change', () => this.showFigure());
+    this.pick.addEventListener('change', () => this.open());
     this.watch.addEventListener('click', () => this.watchRun());
     this.runPick.addEventListener('change', () => this.noteRun());
-    this.loaded = Promise.all(TABLES.map(table))
+    whenNear(this.section, () => void this.open(), '300px');
+  }
+
+  /**
+   * Reads the study's tables (and the claim's, once its test is complete) and says the claim's
+   * state, once: the first call fetches, every call resolves when they are read (or could not be).
+   * @returns {Promise<void>}
+   */
+  load() {
+    this.loading ??= Promise.all(TABLES.map(table))
       .then((tables) => { this.runs = tables.flat(); })
-      .catch((error) => page.message(`the study's runs could not be listed: ${messageOf(error)}`))
-      .then(() => this.showFigure())
-      .then(() => this.addClaim());
+      .catch((error) => this.page.message(`the study's runs could not be listed: ${messageOf(error)}`))
+      .then(() => Promise.all([fillClaim(this.claim), this.addClaim()]))
+      .then(() => undefined);
+    return this.loading;
+  }
+
+  /** The panel as someone sees it: its tables read, then the chosen figure and its runs. */
+  async open() {
+    await this.load();
+    await this.showFigure();
   }
 
   /** Lists the figures, those of the claim's test only when it is `complete`; the chosen one stays chosen. @param {boolean} complete */
@@ -86,7 +106,7 @@ export class StudyPanel {
   /** Shows the figure `id` and scrolls to it (from a tour chapter). @param {string} id */
   async show(id) {
     this.pick.value = id;
-    await this.showFigure();
+    await this.open();
     this.section.scrollIntoView({ block: 'start', behavior: 'instant' });
   }
 

@@ -5,8 +5,8 @@
 //! the voxel's index (attention: four downstream weights per voxel), so its length depends on
 //! the body and a new body needs new genes. A body-independent family keeps the classic
 //! network and computes each voxel's own genes from what the voxel knows of its place, its
-//! [local inputs](super::local_inputs) f (7 floats: a constant, which neighbours exist, its
-//! place in the bounding box), through one matrix G that every voxel shares:
+//! [local inputs](super::local_inputs) f (5 floats: a constant and which of its four
+//! neighbours exist), through one matrix G that every voxel shares:
 //! gene q of voxel i = sum_k G[q][k] f_i[k]. Nothing else changes: the attention family still
 //! sends no messages, MLP-Comm's messages are still the only difference from MLP, and a
 //! voxel whose local inputs equal another's runs exactly its brain.
@@ -15,38 +15,46 @@
 //! - first the classic family's shared genes, in [`GenomeLayout::split`] order: attention,
 //!   the 32-gene attention block then the downstream bias (33); MLP, the bias (1); MLP-Comm,
 //!   each output's bias (5);
-//! - then G: one row of [`LOCAL_INPUTS`] genes for each of the classic family's per-voxel genes
+//! - then G: one row of 5 genes (one per local input) for each of the classic family's
+//!   per-voxel genes
 //!   (attention: row r gives W[r n + i], the weight of attended reading r; MLP: row j gives the
 //!   weight of reading j; MLP-Comm: row 8 o + j gives the weight from input j to output o).
 //!
-//! Lengths: attention-any 33 + 4 x 7 = 61, mlp-any 1 + 4 x 7 = 29, mlp-comm-any 5 + 40 x 7 =
-//! 285. The attention block comes first, as in the classic genome, so it transfers the same way.
+//! Lengths: attention-any 33 + 4 x 5 = 53, mlp-any 1 + 4 x 5 = 21, mlp-comm-any 5 + 40 x 5 =
+//! 205. The attention block comes first, as in the classic genome, so it transfers the same way.
 
-use super::local_inputs::{local_inputs, LocalInputs, LOCAL_INPUTS};
+use super::local_inputs::{local_inputs, LocalInputs};
 use super::params::check_genes;
 use super::{build, Controller, ControllerKind, GenomeLayout, Params, Topology};
 use crate::Result;
 
-/// Genome length of the body-independent version of `classic`.
-pub(crate) fn any_body_len(classic: ControllerKind) -> usize {
+/// Genome length of the body-independent version of `classic` reading `which`.
+pub(crate) fn any_body_len_with(classic: ControllerKind, which: LocalInputs) -> usize {
     let layout = GenomeLayout::of(classic);
-    layout.shared_len() + layout.voxel_len() * LOCAL_INPUTS
+    layout.shared_len() + layout.voxel_len() * which.width()
+}
+
+/// Genome length of the body-independent version of `classic` (the families' inputs).
+pub(crate) fn any_body_len(classic: ControllerKind) -> usize {
+    any_body_len_with(classic, LocalInputs::CHOSEN)
 }
 
 /// The classic genome that `genome` (a body-independent genome of the family built on
-/// `classic`) amounts to on a body whose voxels have local inputs `inputs`.
-pub(crate) fn expand(
+/// `classic`) amounts to on a body whose voxels have local inputs `inputs` (all of one width).
+pub(crate) fn expand<F: AsRef<[f32]>>(
     classic: ControllerKind,
     genome: &[f32],
-    inputs: &[[f32; LOCAL_INPUTS]],
+    inputs: &[F],
 ) -> Vec<f32> {
     let layout = GenomeLayout::of(classic);
     let (shared, generator) = genome.split_at(layout.shared_len());
+    let width = inputs.first().map_or(1, |f| f.as_ref().len()).max(1);
     let voxels: Vec<Vec<f32>> = inputs
         .iter()
         .map(|f| {
+            let f = f.as_ref();
             generator
-                .chunks_exact(LOCAL_INPUTS)
+                .chunks_exact(width)
                 .map(|row| row.iter().zip(f).fold(0.0f32, |s, (g, x)| s + g * x))
                 .collect()
         })
@@ -58,7 +66,7 @@ pub(crate) fn expand(
 /// A body-independent brain on one body; see the module doc.
 pub struct AnyBody {
     classic: ControllerKind,
-    inputs: Vec<[f32; LOCAL_INPUTS]>,
+    inputs: Vec<Vec<f32>>,
     params: Params,
     inner: Box<dyn Controller>,
 }
@@ -70,7 +78,25 @@ impl AnyBody {
         AnyBody {
             classic,
             inputs: local_inputs(topology, which),
-            params: Params::zeros(any_body_len(classic)),
+            params: Params::zeros(any_body_len_with(classic, which)),
+            inner: build(classic, topology),
+        }
+    }
+
+    /// The measurement's layout: all seven inputs per gene, those `which` does not read at 0
+    /// (docs/ANALYSIS-PLAN.md, fourth question; `body_set::measure`).
+    #[cfg(test)]
+    pub(crate) fn masked(classic: ControllerKind, topology: &Topology, which: LocalInputs) -> Self {
+        use super::local_inputs::{local_inputs_masked, LOCAL_INPUTS};
+        let inputs = local_inputs_masked(topology, which)
+            .iter()
+            .map(|f| f.to_vec())
+            .collect();
+        let layout = GenomeLayout::of(classic);
+        AnyBody {
+            classic,
+            inputs,
+            params: Params::zeros(layout.shared_len() + layout.voxel_len() * LOCAL_INPUTS),
             inner: build(classic, topology),
         }
     }
@@ -124,15 +150,15 @@ mod tests {
 
     #[test]
     fn lengths_do_not_depend_on_the_body() {
-        assert_eq!(any_body_len(ControllerKind::Attention), 61);
-        assert_eq!(any_body_len(ControllerKind::Mlp), 29);
-        assert_eq!(any_body_len(ControllerKind::MlpComm), 285);
+        assert_eq!(any_body_len(ControllerKind::Attention), 53);
+        assert_eq!(any_body_len(ControllerKind::Mlp), 21);
+        assert_eq!(any_body_len(ControllerKind::MlpComm), 205);
     }
 
     #[test]
     fn a_constant_only_brain_gives_every_voxel_the_same_weights() {
         let mut rng = ChaCha8Rng::seed_from_u64(3);
-        let genome = random_vec(&mut rng, 61, 1.0);
+        let genome = random_vec(&mut rng, 37, 1.0);
         let inputs = local_inputs(&biped(), LocalInputs::Constant);
         let classic = expand(ControllerKind::Attention, &genome, &inputs);
         assert_eq!(classic.len(), ControllerKind::Attention.param_count(6));
@@ -140,16 +166,16 @@ mod tests {
         assert_eq!(classic.last(), Some(&genome[32]), "the bias is kept");
         for r in 0..4 {
             let row = &classic[32 + 6 * r..32 + 6 * (r + 1)];
-            assert!(row.iter().all(|&w| w == genome[33 + 7 * r]), "row {r}");
+            assert!(row.iter().all(|&w| w == genome[33 + r]), "row {r}");
         }
     }
 
     #[test]
     fn a_voxel_reads_its_weights_from_its_place() {
-        let mut genome = vec![0.0f32; 29];
+        let mut genome = vec![0.0f32; 21];
         // Weight of reading 2 (vy): 0.5 plus 2 x (has an up neighbour).
-        genome[1 + 2 * 7] = 0.5;
-        genome[1 + 2 * 7 + 1] = 2.0;
+        genome[1 + 2 * 5] = 0.5;
+        genome[1 + 2 * 5 + 1] = 2.0;
         let inputs = local_inputs(&biped(), LocalInputs::CHOSEN);
         let classic = expand(ControllerKind::Mlp, &genome, &inputs);
         // MLP layout: W[4 i + j], then the bias. Feet (0, 1) have an up neighbour, the top
@@ -183,8 +209,8 @@ mod tests {
     #[test]
     fn a_bad_genome_is_refused_and_changes_nothing() {
         let mut c = AnyBody::new(ControllerKind::Attention, &biped(), LocalInputs::CHOSEN);
-        assert!(c.set_params(&[0.0; 60]).is_err());
-        let mut nan = vec![0.0; 61];
+        assert!(c.set_params(&[0.0; 52]).is_err());
+        let mut nan = vec![0.0; 53];
         nan[40] = f32::NAN;
         assert!(c.set_params(&nan).is_err());
         assert!(c.genome().iter().all(|&g| g == 0.0));

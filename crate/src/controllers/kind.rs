@@ -28,11 +28,11 @@ pub enum ControllerKind {
     /// the original code does; same genome as `MlpComm`.
     MlpCommLatched,
     /// Attention for any body: the attention block, a bias and each voxel's four weights
-    /// computed from its local inputs (`any_body`): 61 parameters for every body.
+    /// computed from its local inputs (`any_body`): 53 parameters for every body.
     AttentionAny,
-    /// MLP for any body (no messages): 29 parameters for every body.
+    /// MLP for any body (no messages): 21 parameters for every body.
     MlpAny,
-    /// MLP-Comm for any body (messages are the only difference from `mlp-any`): 285.
+    /// MLP-Comm for any body (messages are the only difference from `mlp-any`): 205.
     MlpCommAny,
 }
 
@@ -90,7 +90,7 @@ impl ControllerKind {
     }
 
     /// Genome length for a robot of `n_voxels` voxels (73 / 41 / 405 / 75 for the biped;
-    /// 61 / 29 / 285 for every body, body-independent).
+    /// 53 / 21 / 205 for every body, body-independent).
     pub fn param_count(self, n_voxels: usize) -> usize {
         match self {
             ControllerKind::Attention => Attention::param_count_for(n_voxels),

@@ -3,8 +3,8 @@
 //! ([`super::AnyBody`]) computes each voxel's weights from them instead of from the voxel's
 //! index, so one genome fits every body.
 //!
-//! Layout: [`LOCAL_INPUTS`] = 7 floats per voxel, in voxel index order:
-//! `[1, up, right, down, left, x, y]`, where
+//! Layout: per voxel, in voxel index order, the first [`LocalInputs::width`] of
+//! `[1, up, right, down, left, x, y]` ([`LOCAL_INPUTS`] = 7 in all), where
 //! - `1` is a constant (so a brain with no other input is the same for every voxel);
 //! - `up`, `right`, `down`, `left` are 1 where that neighbour exists, else 0 (a voxel feels
 //!   whether it is attached on a side);
@@ -12,9 +12,11 @@
 //!   +1 (right, top), 0 along a side of one voxel. They come from the neighbour table alone
 //!   (a walk over the links), not from the world.
 //!
-//! [`LocalInputs`] says which of them a brain reads; those it does not read are 0 (the
-//! constant always reads 1). docs/ANALYSIS-PLAN.md (fourth question) records the measurement
-//! behind the choice the families use ([`LocalInputs::CHOSEN`]).
+//! [`LocalInputs`] says which of them a brain reads (a prefix of that list). The families read
+//! [`LocalInputs::CHOSEN`], the constant and the four neighbour flags: facts a voxel knows from
+//! what it is attached to. docs/ANALYSIS-PLAN.md (fourth question) records the measurement
+//! behind that choice, made with all 7 inputs in every genome and the unread ones set to 0
+//! ([`local_inputs_masked`]).
 
 use super::Topology;
 
@@ -34,7 +36,7 @@ pub enum LocalInputs {
 
 impl LocalInputs {
     /// The inputs the body-independent families read (measured: see the module doc).
-    pub const CHOSEN: LocalInputs = LocalInputs::NeighboursAndPlace;
+    pub const CHOSEN: LocalInputs = LocalInputs::Neighbours;
 
     /// Every variant, for the measurement.
     pub const ALL: [LocalInputs; 3] = [
@@ -42,6 +44,15 @@ impl LocalInputs {
         LocalInputs::Neighbours,
         LocalInputs::NeighboursAndPlace,
     ];
+
+    /// Inputs read per voxel: 1, 5 or 7.
+    pub fn width(self) -> usize {
+        match self {
+            LocalInputs::Constant => 1,
+            LocalInputs::Neighbours => 5,
+            LocalInputs::NeighboursAndPlace => LOCAL_INPUTS,
+        }
+    }
 
     /// A short name for tables.
     pub fn name(self) -> &'static str {
@@ -53,8 +64,18 @@ impl LocalInputs {
     }
 }
 
-/// Each voxel's local inputs for `topology`, in voxel index order (see the module doc).
-pub fn local_inputs(topology: &Topology, which: LocalInputs) -> Vec<[f32; LOCAL_INPUTS]> {
+/// Each voxel's local inputs for `topology`, in voxel index order: the first
+/// [`LocalInputs::width`] of the seven (see the module doc).
+pub fn local_inputs(topology: &Topology, which: LocalInputs) -> Vec<Vec<f32>> {
+    local_inputs_masked(topology, which)
+        .into_iter()
+        .map(|f| f[..which.width()].to_vec())
+        .collect()
+}
+
+/// All seven inputs of each voxel, those `which` does not read set to 0 (the measurement's
+/// layout: see the module doc).
+pub fn local_inputs_masked(topology: &Topology, which: LocalInputs) -> Vec<[f32; LOCAL_INPUTS]> {
     let n = topology.voxel_count();
     let place = places(topology);
     let (reads_links, reads_place) = match which {
@@ -151,27 +172,29 @@ mod tests {
             (3, 2),
         ];
         let t = Topology::from_cells(&cells).unwrap();
-        let f = local_inputs(&t, LocalInputs::NeighboursAndPlace);
+        let f = local_inputs_masked(&t, LocalInputs::NeighboursAndPlace);
         // The left foot: attached only above, at the bottom left corner.
         assert_eq!(f[0], [1.0, 1.0, 0.0, 0.0, 0.0, -1.0, -1.0]);
         // The top right corner: attached below and to the left.
         assert_eq!(f[9], [1.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0]);
         // Middle of the back row, second column: x = -1/3, y = 0.
         assert_eq!(f[3][5..], [2.0 / 3.0 - 1.0, 0.0]);
-        let only_links = local_inputs(&t, LocalInputs::Neighbours);
+        let only_links = local_inputs_masked(&t, LocalInputs::Neighbours);
         assert_eq!(only_links[9], [1.0, 0.0, 0.0, 1.0, 1.0, 0.0, 0.0]);
+        assert_eq!(
+            local_inputs(&t, LocalInputs::Neighbours)[9],
+            [1.0, 0.0, 0.0, 1.0, 1.0]
+        );
         let constant = local_inputs(&t, LocalInputs::Constant);
-        assert!(constant
-            .iter()
-            .all(|f| *f == [1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]));
+        assert!(constant.iter().all(|f| *f == [1.0]));
     }
 
     #[test]
     fn a_single_voxel_and_a_row_sit_in_the_middle_where_a_side_is_one_voxel() {
-        let one = local_inputs(&Topology::isolated(1), LocalInputs::CHOSEN);
+        let one = local_inputs_masked(&Topology::isolated(1), LocalInputs::NeighboursAndPlace);
         assert_eq!(one[0], [1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]);
         let row = Topology::from_cells(&[(0, 0), (1, 0), (2, 0)]).unwrap();
-        let f = local_inputs(&row, LocalInputs::CHOSEN);
+        let f = local_inputs_masked(&row, LocalInputs::NeighboursAndPlace);
         assert_eq!(
             f.iter().map(|f| (f[5], f[6])).collect::<Vec<_>>(),
             [(-1.0, 0.0), (0.0, 0.0), (1.0, 0.0)]

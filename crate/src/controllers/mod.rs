@@ -31,7 +31,7 @@ pub(crate) use frozen::FrozenAttention;
 pub use kind::{build, ControllerKind};
 pub use layout::remap_genome;
 pub(crate) use layout::GenomeLayout;
-pub use local_inputs::{local_inputs, LocalInputs, LOCAL_INPUTS};
+pub use local_inputs::{local_inputs, local_inputs_masked, LocalInputs, LOCAL_INPUTS};
 pub use mlp::Mlp;
 pub use mlp_comm::MlpComm;
 pub use params::Params;

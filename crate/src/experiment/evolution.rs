@@ -125,6 +125,20 @@ impl Evolution {
         })
     }
 
+    /// A run from scratch whose genomes have `genome_len` genes instead of the controller's own
+    /// count: only for a measurement that evaluates its jobs itself (`body_set::measure`, the
+    /// local inputs measured with a longer, masked genome).
+    #[cfg(test)]
+    pub(crate) fn with_genome_len(config: EvolutionConfig, genome_len: usize) -> Result<Evolution> {
+        let ga = Ga::new(config.ga.clone(), genome_len, ga_seed(&config))?;
+        Ok(Evolution {
+            ground: run_ground(&config.terrain)?,
+            config,
+            ga,
+            history: Vec::new(),
+        })
+    }
+
     /// A run continued from a GA state and the records of the generations before it (see
     /// `checkpoint`). The configuration is the one the state was taken from.
     pub(super) fn from_parts(

@@ -8,9 +8,9 @@
 //! - Held out, never in any training set, nor the mirror image of one:
 //!   (a) `heldout-random`: [`HELD_OUT_RANDOM`] more bodies from the same generator;
 //!   (b) `heldout-mutants`: [`HELD_OUT_MUTANTS`] bodies made from a body of `train-32` by 1 to 3
-//!       single-voxel edits (add a voxel beside the body, or remove one that splits nothing);
+//!   single-voxel edits (add a voxel beside the body, or remove one that splits nothing);
 //!   (c) `heldout-combs`: a whole family kept out of training: combs (a full top row with
-//!       single-voxel teeth every 2 or 3 cells, 2 or 3 rows tall; comb-7x2 is in (d));
+//!   single-voxel teeth every 2 or 3 cells, 2 or 3 rows tall; comb-7x2 is in (d));
 //!   (d) `heldout-paper`: the paper's four shapes.
 //!
 //! A random body starts as one voxel and grows by a voxel beside it, drawn uniformly among
@@ -125,7 +125,7 @@ fn combs() -> Vec<Shape> {
                     .map(|x| if x % spacing == 0 { '1' } else { '0' })
                     .collect();
                 let mut rows = vec!["1".repeat(width)];
-                rows.extend(std::iter::repeat_n(lower, height - 1));
+                rows.extend(std::iter::repeat(lower).take(height - 1));
                 let shape = Shape::parse(&rows.join("-")).expect("a comb is a body");
                 if shape.to_rows() != "1111111-1010101" {
                     out.push(shape);

@@ -28,7 +28,7 @@ fn speed(
     noise: u64,
     seconds: f64,
 ) -> f64 {
-    let mut brain = AnyBody::new(ControllerKind::Attention, &topology(shape), which);
+    let mut brain = AnyBody::masked(ControllerKind::Attention, &topology(shape), which);
     if brain.set_params(genome).is_err() {
         return f64::NAN;
     }
@@ -97,6 +97,8 @@ fn local_inputs_choice() {
         .filter(|w| only.is_empty() || only.split(',').any(|o| o == w.name()))
     {
         for &seed in &seeds {
+            // The measurement's layout (7 inputs per gene, unread ones 0) is a longer genome
+            // than the families' own: the run is set up with the masked length.
             let mut config = EvolutionConfig::on_bodies(
                 train.clone(),
                 4,
@@ -107,7 +109,9 @@ fn local_inputs_choice() {
             .unwrap();
             config.seconds = seconds;
             config.ga.population = 50;
-            let mut evolution = crate::experiment::Evolution::new(config).unwrap();
+            let masked_len = 33 + 4 * crate::controllers::LOCAL_INPUTS;
+            let mut evolution =
+                crate::experiment::Evolution::with_genome_len(config, masked_len).unwrap();
             evolution
                 .run(|jobs| Ok(batch(which, jobs)), |_| Ok(()), || 0.0)
                 .unwrap();
