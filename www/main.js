@@ -20,7 +20,7 @@ import { MessageBox } from './message.js';
 import { Challenge } from './classroom/challenge.js';
 import { Classroom } from './classroom/classroom.js';
 import { Lab } from './classroom/lab.js';
-import { wireWords } from './classroom/simple-words.js';
+import { simplify, wireWords } from './classroom/simple-words.js';
 import { CodesignPanel } from './codesign/panel.js';
 import { SearchEstimate } from './codesign/estimate.js';
 import { BOX } from './codesign/plan.js';
@@ -254,6 +254,10 @@ modules.select.addEventListener('change', studyRuns);
 const tour = new Tour(document, playground, study, new Classroom(document, lab));
 fillResults(byId(document, 'results-plain-body'), (id) => study.show(id));
 wireWords(document);
+// The lines the page writes as it goes, marked for simple words: a drawing's code and evaluations per second hidden, a terrain's name explained.
+for (const id of ['shape-status', 'module-details', 'driver', 'speed-note', 'robot-speed', 'run-rate', 'run-plan', 'study-run-note', 'freeze-report', 'challenge-rules']) {
+  simplify(byId(document, id));
+}
 challenge = new Challenge(document, lab, {
   defaults, rows: () => drawing.rows(), race, message: showMessage, pin: (text) => messages.show(text, 'pinned'),
   setView: (terrain) => { viewer.terrain.value = terrain; viewer.reload(); terrainChanged(); },

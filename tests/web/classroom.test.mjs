@@ -10,7 +10,9 @@
  * no answer is in the text a pair reads before its reveal (the tour's box, the glossary; the
  * chapters' own words: giveaway.test.mjs); chapter 5 reveals only from the pair's own run;
  * the study's figure captions hold no statistics; the lesson plan's guide is served;
- * the simple-words switch hides formulas and statistics and stays on after a reload, and the
+ * the simple-words switch hides formulas and statistics, says labels in plain words, hides a
+ * drawing's code and explains terrain names and glossary words where they stand (and the
+ * expert's words come back when it is off), and stays on after a reload, and the
  * glossary explains the issue's newcomer words, linked where they appear, with the voxel's
  * width the core's (the plain results: results.test.mjs; the class challenge: challenge.test.mjs). Screenshots:
  * screenshots/classroom-*.png, worksheet.pdf.
@@ -269,11 +271,34 @@ test('simple words: formulas and statistics hidden, kept after a reload; the new
   assert.equal(await page.locator('#attention-reader details.formula').evaluate((el) => getComputedStyle(el).display), 'none');
   assert.equal(await page.locator('#results-plain details.stats').isVisible(), false);
   // Labels in plain words where they have them, the expert's figures hidden (issue 46's list: f (Hz), φ (rad / column), ...).
-  const labels = () => page.evaluate(() => [...document.querySelectorAll('[data-simple]')].map((e) => e.textContent));
-  assert.deepEqual(await labels(), ['The drawing as text (1: a voxel)', 'beats per second', 'delay from column to column', 'Training hills (new ones every walk)']);
+  const labels = () => page.evaluate(() => [...document.querySelectorAll('[data-simple]')]
+    .map((e) => ({ text: e.textContent, simple: /** @type {HTMLElement} */ (e).dataset.simple, expert: /** @type {HTMLElement} */ (e).dataset.expert })));
+  const simple = await labels();
+  assert.ok(simple.every((l) => l.text === l.simple), `every label in its plain words: ${JSON.stringify(simple)}`);
+  for (const words of ['The drawing as text (1: a voxel)', 'beats per second', 'delay from column to column', 'Training hills (new ones every walk)',
+    'rows: the reading that asks; columns: the readings it listens to (area, vx, vy, touch)', 'Save this run (a file)', 'Open a run saved before (its file)']) {
+    assert.ok(simple.some((l) => l.text === words), `simple words say “${words}”`);
+  }
   for (const expert of ['#engine-rate', '#run-workers']) assert.equal(await page.locator(expert).isVisible(), false, `${expert} hidden in simple words`);
+  // What the page writes as it goes: a drawing's code gone (the status, the module's details), a terrain's name and a glossary word explained where they stand.
+  await page.waitForFunction(() => /rows 1111-1111-1001/.test(document.getElementById('module-details')?.textContent ?? ''));
+  const marked = await page.evaluate(() => ({
+    hidden: [...document.querySelectorAll('#shape-status .simpler.expert, #module-details .simpler.expert')].map((e) => [e.textContent, getComputedStyle(e).display]),
+    explained: [...document.querySelectorAll('#robot-speed [data-explain], #speed-note [data-explain], #param-count a.term[data-explain]')]
+      .map((e) => [e.textContent, getComputedStyle(e, '::after').content]),
+  }));
+  assert.deepEqual(marked.hidden, [[' · 1111-1111-1001', 'none'], [' (rows 1111-1111-1001)', 'none']], 'the drawing\'s code is gone');
+  for (const [word, after] of [['hilly-1-10-0', 'the same hills every time'], ['hilly-1-10', 'new hills drawn for every walk'], ['bias', 'one more number, added in']]) {
+    assert.ok(marked.explained.some(([text, shown]) => text === word && String(shown).includes(after)), `${word} explained: ${JSON.stringify(marked.explained)}`);
+  }
   await byTestId(page, 'simple-words').uncheck();
-  assert.deepEqual(await labels(), ['Rows (top first)', 'f (Hz)', 'φ (rad / column)', 'Training terrain'], 'the expert\'s words back');
+  const expert = await labels();
+  assert.ok(expert.every((l) => l.text === l.expert), 'the expert\'s words back');
+  for (const words of ['Rows (top first)', 'f (Hz)', 'φ (rad / column)', 'Training terrain', 'rows: query, columns: key (area, vx, vy, touch)', 'Export run', 'Import run file']) {
+    assert.ok(expert.some((l) => l.text === words), `the expert's “${words}”`);
+  }
+  assert.equal(await page.locator('#shape-status').innerText(), '10 voxels · 1111-1111-1001', 'the code back');
+  assert.equal(await page.locator('#robot-speed [data-explain]').first().evaluate((e) => getComputedStyle(e, '::after').content), 'none', 'no explanation for the expert');
   await byTestId(page, 'simple-words').check();
 
   // The glossary explains the issue's words, and a word in the page links to its entry.

@@ -184,7 +184,10 @@ export const TASKS = [
       const ratio = last.fitness / first.fitness;
       const answer = first.fitness <= 0 || ratio > 10 ? 2 : ratio >= 2 ? 1 : 0;
       const times = first.fitness > 0 ? `${decimal(ratio, 1)} times` : 'beyond any ratio (generation 0 went nowhere)';
-      return { answer, shown: `${['less than 2 times', '2 to 10 times', 'more than 10 times'][answer]} (${times})`,
+      // Which run the ratio is of, where it is said: the study's long run climbs far higher than a class's quick one.
+      const whose = own.length >= 2 ? ', in your own run'
+        : `, in the study's run of ${count(last.evaluations ?? NaN)} evaluations, not a class's quick run of ${count(Number(setup(EVOLUTION).run?.budget))}`;
+      return { answer, shown: `${['less than 2 times', '2 to 10 times', 'more than 10 times'][answer]} (${times})${whose}`,
         why: `From ${source}: generation 0's best walked ${ms(first.fitness)} in training, the last generation's best (generation ${last.generation}) ${ms(last.fitness)}. `
           + 'Random brains barely move; each generation keeps the fastest and tries changed copies of them, and small gains pile up.'
           + (own.length >= 2 ? '' : ` A student's Reveal answers from their own quick run of ${count(Number(setup(EVOLUTION).run?.budget))} evaluations, which gets less far (it asks them to press Evolve first).`) };
@@ -221,7 +224,8 @@ export const TASKS = [
       const walk = await lab.walk({ rows, terrain: setup(FREEZE).terrain, seconds, brain: { controller, genome }, freezeAt: at });
       const [before, frozen] = [/** @type {number} */ (walk.before), /** @type {number} */ (walk.frozen)];
       const answer = freezeChoice(frozen / before);
-      return { answer, shown: `${FREEZE_CHOICES[answer]}: ${ms(frozen)} against ${ms(before)}`,
+      return { answer, shown: `${FREEZE_CHOICES[answer]}: ${ms(frozen)} frozen (its mean speed from second ${at} to ${seconds}) `
+          + `against ${ms(before)} before (its mean over the first ${at} s)`,
         why: `The page just walked this robot ${at} s (${ms(before)}), froze its attention and walked on to ${seconds} s: ${ms(frozen)} frozen. `
           + 'The changing attention is how each voxel re-weighs its readings as it moves; fixed, it can no longer, and the stride falls apart (the paper\'s Fig. 6 and our study found the same for every best robot). '
           + 'Frozen in mid-stride it still stumbles on a little way; the study\'s figure starts each frozen walk from standing, hence its few centimetres per second.' };

@@ -42,7 +42,8 @@ function answerWords(s, shape) {
     worse: `${s.treatment} is worse, by more than ${decimal(s.margin, 1)} m/s: the paper's claim does not hold here`,
     'not shown': `not settled: the runs still allow ${s.treatment} being more than ${decimal(s.margin, 1)} m/s slower`,
   }[a.verdict];
-  return `On ${bodyWords(shape.shape)}, ${verdict} (median speeds ${decimal(a.medians[0])} against ${decimal(a.medians[1])} m/s; `
+  return `On ${bodyWords(shape.shape)}, ${verdict} (median speeds ${decimal(a.medians[0])} against ${decimal(a.medians[1])} m/s: the middle one of this test's own `
+    + `${count(shape.planned)} runs of each brain, each run's best robot on ten terrains no robot trained on; `
     + `the runs allow a difference between ${signed(a.interval[0])} and ${signed(a.interval[1])} m/s, with 95% confidence).`;
 }
 
@@ -54,7 +55,7 @@ export function claimWords(s) {
   const perArm = count(s.planned_runs / (2 * s.shapes.length));
   const asks = `The paper's own words are that ${s.treatment} "performs better or comparatively" to ${s.control}: that it is at least about as fast. `
     + `Ten runs of each cannot settle that, so a larger test asks it exactly: is ${s.treatment} slower by ${decimal(s.margin, 1)} m/s or more `
-    + `(a margin fixed in advance, less than half of ${s.control}'s estimated lead over mlp on either body)? `
+    + `(a margin fixed in advance: chosen before any run, so that nobody could pick it to suit the answer; less than half of ${s.control}'s estimated lead over mlp on either body)? `
     + `Everything about it was written down before any of its runs began: ${perArm} fresh runs of each brain on each body, ${count(s.planned_runs)} in all.`;
   if (!s.complete) {
     return `${asks} It is under way: ${count(s.finished_runs)} of the ${count(s.planned_runs)} runs have finished. `

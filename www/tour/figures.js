@@ -38,7 +38,7 @@ export const CLAIM_TABLE = 'noninferiority.csv';
 /** How to read a box plot. */
 const BOX = 'Each box holds the runs of one brain (one dot per run, each with its own seed): the line in it is the median run, the box the middle half, the whiskers reach the slowest and the fastest run.';
 /** How to read a box plot with the tests of each pair under it (their numbers: the glossary and "What our study found"). */
-const BOXES = `${BOX} The small print under the plot compares pairs of brains: "no difference detected" means the runs drawn are too few to be sure the two brains differ, `
+const BOXES = `${BOX} The small print under the plot compares pairs of brains, its numbers saying how sure each comparison is: "no difference detected" means the runs drawn are too few to be sure the two brains differ, `
   + 'not that they are equal (see the glossary).';
 /** Where the study's tests of ten runs are, in words (a heading of the page: captions hold no links). */
 const FOUND = '“What our study found”, further down the page';
@@ -103,7 +103,7 @@ export const FIGURES = [
     report: 'report-codesign/',
     file: 'codesign-rq3-unseen.svg',
     title: 'Searching for a body: a frozen brain from the biped against brains evolved with the body',
-    paper: 'Our own question (the paper moved brains only between bodies of the same kind). Ten searches per brain, each 6,000 evaluations from a 3 × 3 box; the 30,100 evaluations that made the biped\'s module are not counted. '
+    paper: 'Our own question (the paper moved brains only between bodies of the same kind). Ten searches per brain, each 6,000 evaluations from a 3 × 3 box; the 30,100 evaluations that made the biped\'s module (its budget of 30,000, passed a little because a run finishes its last generation) are not counted. '
       + 'With the biped\'s attention kept frozen, the searches ended on faster bodies than with a plain network (mlp) or a messaging one (mlp-comm) evolved along with the body; '
       + 'against attention evolved from scratch with the body, ten searches were too few to tell. '
       + 'Part of the lead over mlp is attention itself: attention evolved from scratch was ahead of mlp by about half as much, though ten searches are too few to be sure (a check made after the study). '
