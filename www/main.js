@@ -255,7 +255,8 @@ const tour = new Tour(document, playground, study, new Classroom(document, lab))
 fillResults(byId(document, 'results-plain-body'), (id) => study.show(id));
 wireWords(document);
 // The lines the page writes as it goes, marked for simple words: a drawing's code and evaluations per second hidden, a terrain's name explained.
-for (const id of ['shape-status', 'module-details', 'driver', 'speed-note', 'robot-speed', 'run-rate', 'run-plan', 'study-run-note', 'freeze-report', 'challenge-rules']) {
+for (const id of ['shape-status', 'module-details', 'driver', 'speed-note', 'robot-speed', 'run-rate', 'run-plan', 'study-run-note', 'freeze-report', 'challenge-rules',
+  'tour-box']) {
   simplify(byId(document, id));
 }
 challenge = new Challenge(document, lab, {

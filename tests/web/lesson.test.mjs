@@ -39,6 +39,7 @@ test('the 50-minute lesson: minute by minute in the page and in docs/teaching.md
     assert.deepEqual(rows, expected, `the page's table (${width} px)`);
     const qr = sheet.locator('[data-testid="qr"]');
     assert.equal(await qr.getAttribute('data-link'), env.url, 'a QR code of the page\'s address');
+    await qr.locator('svg path').waitFor(); // drawn once uqr is here (fetched when the teacher's box opens, not at start)
     assert.ok(await qr.locator('svg path').count() === 1);
     assert.match(String(await byTestId(page, 'worksheet-address-note').textContent()), /opens only on this computer/, 'served at 127.0.0.1: said');
     await byTestId(page, 'worksheet-address').fill('https://school.example/robots/');

@@ -4,7 +4,8 @@
  * built here into a temporary folder) served by a plain static server, `python3 -m http.server`,
  * from the folder above it, so the page lives at a sub-path (/site/), as on GitHub Pages or a
  * school's server. The page opens with no console error and no missing file, asks only for
- * addresses under /site/, fetches none of the study's files before its panel is in sight, has a
+ * addresses under /site/, fetches none of the study's files before its panel is in sight (nor the
+ * QR codes' library before a teacher's box opens), has a
  * description and a preview image for link previews, and a robot walks; a chapter opens by its
  * link; the guides the page links are readable web pages (no raw Markdown) whose links all lead
  * somewhere. The key path of a lesson, walked as a student does: open, draw, load a module,
@@ -125,13 +126,19 @@ test('served at a sub-path by python3 -m http.server: the page loads with no err
     /** @type {string[]} */
     const study = [];
     const { page, problems, context } = await open('about:blank', { width, height: 900 });
-    page.on('request', (r) => { if (r.url().startsWith(`${site}study/`)) study.push(r.url().slice(site.length)); });
+    /** The QR library, asked for by the teacher's boxes only. */
+    let qr = false;
+    page.on('request', (r) => {
+      if (r.url().startsWith(`${site}study/`)) study.push(r.url().slice(site.length));
+      if (r.url().endsWith('/vendor/uqr.js')) qr = true;
+    });
     await page.goto(site);
     await walks(page);
     await page.waitForFunction(() => (/** @type {HTMLSelectElement} */ (document.getElementById('module'))).options.length > 3, undefined, { timeout: 20_000 });
     await screenshot(page, `site-${width}.png`);
     await page.waitForTimeout(1000);
     assert.deepEqual(study, [], `at ${width} px the first screen fetches none of the study's files`);
+    assert.equal(qr, false, `at ${width} px the first screen fetches no QR library`);
     // Scrolled to, the study panel fetches its tables and figure.
     await byTestId(page, 'study').scrollIntoViewIfNeeded();
     await page.waitForFunction(() => { const img = /** @type {HTMLImageElement} */ (document.getElementById('study-image')); return img.complete && img.naturalWidth > 0; },

@@ -16,7 +16,7 @@ import { terrainRefused } from '../terrain-words.js';
 import { linesOf, rankEntries } from './challenge-entries.js';
 import { evolveAgain, looksLikeCode, readCode, robotCode } from './challenge-code.js';
 import { bodyProblem, challengeLink, rankingWords, rulesFrom, rulesOf, rulesWords, runOf, runSettings, sameRules } from './challenge-rules.js';
-import { qrBox } from './qr.js';
+import { loadQr, qrBox } from './qr.js';
 import { onlyHere } from './sheet-address.js';
 import { durationWords } from '../run-progress.js';
 import { keepChallenge, loadChallenge } from './challenge-store.js';
@@ -41,6 +41,7 @@ export class Challenge {
     this.page = page;
     this.section = byId(doc, 'challenge-panel');
     this.teacher = /** @type {HTMLDetailsElement} */ (this.section.querySelector('details.challenge-teacher'));
+    this.teacher.addEventListener('toggle', () => void loadQr(), { once: true }); // the challenge link's QR code, drawn at once
     this.rulesLine = byId(doc, 'challenge-rules');
     this.form = { terrain: byId(doc, 'challenge-terrain', HTMLInputElement), seconds: byId(doc, 'challenge-seconds', HTMLInputElement), voxels: byId(doc, 'challenge-voxels', HTMLInputElement),
       fixed: byId(doc, 'challenge-fixed', HTMLInputElement), budget: byId(doc, 'challenge-budget', HTMLInputElement), seed: byId(doc, 'challenge-seed', HTMLInputElement) };

@@ -12,7 +12,7 @@ import { CHAPTERS } from '../tour/chapters.js';
 import { exerciseOf } from './exercises.js';
 import { keepGuess } from './guess-lock.js';
 import { LESSON, lessonPlanNodes, lessonStepWords, lessonTimes } from './lesson-plan.js';
-import { qrBox } from './qr.js';
+import { loadQr, qrBox } from './qr.js';
 import { addressField, chapterLink, onlyHere, pageAddress } from './sheet-address.js';
 import { withTerms } from './simple-words.js';
 
@@ -164,6 +164,7 @@ export class Classroom {
     const bar = make(doc, 'div', 'tour-class');
     // Folded and named for the teacher: the keys hold every chapter's answer.
     const fold = make(doc, 'details', 'tour-teacher');
+    fold.addEventListener('toggle', () => void loadQr(), { once: true }); // the lesson sheet's QR code, drawn at once
     const summary = make(doc, 'summary', '', 'For the teacher: worksheet, answer keys, lesson plan');
     summary.dataset.testid = 'tour-teacher';
     const tools = make(doc, 'div', 'tour-teacher-tools');

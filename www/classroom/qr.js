@@ -4,36 +4,53 @@
  * typing it. The code is made by uqr (an npm library: scripts/serve.mjs serves it at
  * /vendor/uqr.js, `make site` copies it into the site) and drawn as an SVG of black squares on
  * a white border, sharp at any size; "Show large" puts it over the whole screen, with the link
- * in words under it, until Close or Escape.
+ * in words under it, until Close or Escape. uqr is fetched when a code is first wanted (only the
+ * teacher's boxes show one: {@link loadQr} when one opens), not with the page's first screen.
  */
-import { encode } from '../vendor/uqr.js';
 
 const SVG = 'http://www.w3.org/2000/svg';
 
+/** @typedef {typeof import('../vendor/uqr.js').encode} Encode */
+/** uqr, once asked for. @type {Promise<Encode> | null} */
+let library = null;
+/** uqr's encoder, once it is here. @type {Encode | null} */
+let encoder = null;
+
+/** Fetches uqr (once), so that the codes a teacher's box makes are drawn at once. @returns {Promise<Encode>} */
+export function loadQr() {
+  library ??= import('../vendor/uqr.js').then((m) => { encoder = m.encode; return m.encode; });
+  return library;
+}
+
 /**
- * The QR code of `text` as an SVG element, `size` CSS pixels wide.
+ * The QR code of `text` as an SVG element, `size` CSS pixels wide: drawn at once when uqr is
+ * here, else as soon as it is (the element is the same).
  * @param {Document} doc @param {string} text @param {number} size @returns {SVGSVGElement}
  */
 export function qrSvg(doc, text, size) {
-  const { data } = encode(text, { ecc: 'M', border: 4 });
-  const n = data.length;
   const svg = /** @type {SVGSVGElement} */ (doc.createElementNS(SVG, 'svg'));
-  svg.setAttribute('viewBox', `0 0 ${n} ${n}`);
   svg.setAttribute('width', String(size));
   svg.setAttribute('height', String(size));
   svg.setAttribute('shape-rendering', 'crispEdges');
   svg.setAttribute('role', 'img');
   svg.setAttribute('aria-label', `QR code of ${text}`);
-  const back = doc.createElementNS(SVG, 'rect');
-  back.setAttribute('width', String(n));
-  back.setAttribute('height', String(n));
-  back.setAttribute('fill', '#fff');
-  let d = '';
-  data.forEach((row, y) => row.forEach((dark, x) => { if (dark) d += `M${x} ${y}h1v1h-1z`; }));
-  const dots = doc.createElementNS(SVG, 'path');
-  dots.setAttribute('d', d);
-  dots.setAttribute('fill', '#000');
-  svg.append(back, dots);
+  const draw = (/** @type {Encode} */ encode) => {
+    const { data } = encode(text, { ecc: 'M', border: 4 });
+    const n = data.length;
+    svg.setAttribute('viewBox', `0 0 ${n} ${n}`);
+    const back = doc.createElementNS(SVG, 'rect');
+    back.setAttribute('width', String(n));
+    back.setAttribute('height', String(n));
+    back.setAttribute('fill', '#fff');
+    let d = '';
+    data.forEach((row, y) => row.forEach((dark, x) => { if (dark) d += `M${x} ${y}h1v1h-1z`; }));
+    const dots = doc.createElementNS(SVG, 'path');
+    dots.setAttribute('d', d);
+    dots.setAttribute('fill', '#000');
+    svg.replaceChildren(back, dots);
+  };
+  if (encoder) draw(encoder);
+  else loadQr().then(draw, () => svg.setAttribute('aria-label', `The QR code could not be drawn; the link: ${text}`));
   return svg;
 }
 

@@ -43,8 +43,6 @@ export const EXPLAIN = {
   softmax: 'a squashing into shares that add up to 1',
   saturates: 'sits at +1 or −1',
   median: 'the middle one',
-  mlp: 'a plain network, no attention',
-  'mlp-comm': 'voxels that send messages',
 };
 
 /** The terms as whole words, the longest first (mlp-comm before mlp). */
@@ -129,7 +127,7 @@ export function simplify(el) {
     const texts = [];
     while (walk.nextNode()) {
       const node = /** @type {Text} */ (walk.currentNode);
-      if (!node.parentElement?.closest('.simpler')) texts.push(node);
+      if (!node.parentElement?.closest('.simpler, option, select, textarea')) texts.push(node);
     }
     for (const node of texts) {
       const text = node.data;

@@ -42,8 +42,7 @@ function answerWords(s, shape) {
     worse: `${s.treatment} is worse, by more than ${decimal(s.margin, 1)} m/s: the paper's claim does not hold here`,
     'not shown': `not settled: the runs still allow ${s.treatment} being more than ${decimal(s.margin, 1)} m/s slower`,
   }[a.verdict];
-  return `On ${bodyWords(shape.shape)}, ${verdict} (median speeds ${decimal(a.medians[0])} against ${decimal(a.medians[1])} m/s: the middle one of this test's own `
-    + `${count(shape.planned)} runs of each brain, each run's best robot on ten terrains no robot trained on; `
+  return `On ${bodyWords(shape.shape)}, ${verdict} (median speeds ${decimal(a.medians[0])} against ${decimal(a.medians[1])} m/s, the middle ones of this test's own runs; `
     + `the runs allow a difference between ${signed(a.interval[0])} and ${signed(a.interval[1])} m/s, with 95% confidence).`;
 }
 

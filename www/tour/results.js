@@ -35,7 +35,7 @@ export const FINDINGS = [
     paper: 'Yes: attention walked faster, even though its voxels never talk.',
     ours: 'We cannot tell them apart. On the biped, ten attention runs against ten mlp-comm runs, each run\'s best robot on ten terrains no robot trained on: '
       + 'the typical gap, comparing every attention run with every mlp-comm run, was 0.70 m/s for attention, but ten runs of each are too few to rule out '
-      + 'anything from attention being 0.30 m/s slower to 1.40 m/s faster (the larger test below has other runs, thirty of each, so its middle speeds differ). On the comb they are closer still. Our first five runs of each on the comb (seeds 1-5, where mlp-comm was ahead overall) then went on '
+      + 'anything from attention being 0.30 m/s slower to 1.40 m/s faster (the larger test below has fresh runs of its own, so its middle speeds differ). On the comb they are closer still. Our first five runs of each on the comb (seeds 1-5, where mlp-comm was ahead overall) then went on '
       + 'to twice the evaluations (60,000): attention 3.28 m/s, mlp-comm 3.62 m/s, and still no difference detected.',
     figure: 'validation-comb',
     claim: true,
