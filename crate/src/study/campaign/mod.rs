@@ -19,4 +19,4 @@ pub use codesign::CodesignGroup;
 pub use file::Campaign;
 pub use job::{select, CodesignTask, Job, RunTask, Task, TrainOnBodies};
 pub use plan::{earlier_runs, fidelity_path, known_runs, plan, runs, RunSpec};
-pub use results::{Results, RunData};
+pub use results::{AnyBodyData, AnyBodySpec, Results, RunData};

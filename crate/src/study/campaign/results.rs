@@ -142,10 +142,49 @@ pub struct Results {
     pub known: Vec<(RunSpec, RunData)>,
     /// Data of every planned body search, in campaign order (group, condition, seed).
     pub codesign: Vec<(CodesignSpec, CodesignData)>,
+    /// Data of every planned run of a brain for any body, in campaign order (group, seed,
+    /// controller).
+    pub any_body: Vec<(AnyBodySpec, AnyBodyData)>,
     /// Planned output files not found.
     pub missing: Vec<PathBuf>,
     /// The fidelity measurements found, with their reference files, in campaign order.
     pub fidelity: Vec<(PathBuf, Fidelity)>,
+}
+
+/// One planned run of an `[[any_body]]` group.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct AnyBodySpec {
+    /// The group's name.
+    pub group: String,
+    /// The controller (a family for any body).
+    pub controller: crate::controllers::ControllerKind,
+    /// Evaluation budget.
+    pub evals: u64,
+    /// Run seed.
+    pub seed: u64,
+}
+
+impl AnyBodySpec {
+    /// The file stem of its outputs (`any_body::AnyBodyGroup::stem`).
+    pub fn stem(&self) -> String {
+        format!(
+            "{}-{}-{}-s{}",
+            self.group, self.controller, self.evals, self.seed
+        )
+    }
+}
+
+/// What exists of one any-body run: whether its run file is there, and its validations per
+/// (body-set stem, terrain set).
+#[derive(Debug, Clone, Default)]
+pub struct AnyBodyData {
+    /// The run file exists (the run is finished: a run in flight writes only its checkpoint).
+    pub finished: bool,
+    /// Its best on each body set, per (body-set stem, terrain set).
+    pub validation: std::collections::BTreeMap<
+        (String, ValidationSet),
+        crate::experiment::body_set::BodiesValidation,
+    >,
 }
 
 impl Results {
@@ -188,12 +227,27 @@ impl Results {
                 }
             }
         }
+        let mut any_body = Vec::new();
+        for g in &campaign.any_body {
+            for &seed in g.seeds.as_deref().unwrap_or(&campaign.seeds) {
+                for &controller in &g.controllers {
+                    let spec = AnyBodySpec {
+                        group: g.name.clone(),
+                        controller,
+                        evals: g.evals,
+                        seed,
+                    };
+                    any_body.push((spec, AnyBodyData::default()));
+                }
+            }
+        }
         Results {
             campaign,
             data,
             earlier,
             known,
             codesign,
+            any_body,
             missing: Vec::new(),
             fidelity: Vec::new(),
         }

@@ -25,6 +25,7 @@ use figures::{band, best_series, box_of, Figure, Plot};
 use std::fmt::Write;
 
 mod ablation;
+mod any_body;
 mod codesign;
 mod earlier;
 mod families;
@@ -96,6 +97,7 @@ pub fn report(results: &Results) -> Report {
         }
     }
     codesign::codesign_sections(results, &mut r);
+    any_body::any_body_section(results, &mut r);
     fidelity::fidelity_section(results, &mut r);
     r
 }

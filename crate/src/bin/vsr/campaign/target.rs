@@ -123,6 +123,22 @@ pub fn load_results(campaign: Campaign, out: &Path) -> Result<Results> {
             results.fidelity.push((reference, f));
         }
     }
+    let groups = results.campaign.any_body.clone();
+    for (spec, data) in &mut results.any_body {
+        data.finished = spec_path(out, "runs", &spec.stem(), "json").exists();
+        let Some(g) = groups.iter().find(|g| g.name == spec.group) else {
+            continue;
+        };
+        for bodies in g.validated_on() {
+            let stem = vsr::study::campaign::any_body::set_stem(bodies);
+            for &set in &g.sets {
+                let name = format!("{}.{stem}.{set}", spec.stem());
+                if let Some(v) = read_json(&spec_path(out, "validation", &name, "json"), json)? {
+                    data.validation.insert((stem.clone(), set), v);
+                }
+            }
+        }
+    }
     for i in 0..results.codesign.len() {
         let spec = results.codesign[i].0.clone();
         let path = spec.run_path(out);
@@ -164,6 +180,11 @@ fn check_codesign(spec: &CodesignSpec, run: &CodesignRun) -> std::result::Result
         ));
     }
     Ok(())
+}
+
+/// `out/folder/stem.ext`.
+fn spec_path(out: &Path, folder: &str, stem: &str, ext: &str) -> PathBuf {
+    out.join(folder).join(format!("{stem}.{ext}"))
 }
 
 fn json<T: serde::de::DeserializeOwned>(text: &str) -> Result<T> {
