@@ -238,3 +238,242 @@ fn vsr_codesign_is_the_same_on_one_and_two_threads_and_its_best_replays() {
     ]);
     assert!(text(&o).contains("takes no module"), "{}", text(&o));
 }
+
+/// A brain for any body as a module: a random `kind` genome (one length for every body),
+/// "trained" on the biped.
+fn any_body_module(kind: ControllerKind, seed: u64) -> vsr::experiment::SourceRun {
+    use rand::{Rng, SeedableRng};
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    vsr::experiment::SourceRun {
+        genome: (0..kind.param_count(0))
+            .map(|_| rng.gen_range(-1.0f32..1.0))
+            .collect(),
+        shape: Shape::parse("biped-4x3").unwrap(),
+        controller: kind,
+        seed,
+        budget_evals: 100,
+        fitness: 1.0,
+    }
+}
+
+/// A small search around `module` from a 3 x 3 box: 2-s episodes, 10 new bodies a round.
+fn any_body_config(
+    brain: BrainMode,
+    module: vsr::experiment::SourceRun,
+    budget: u64,
+) -> CodesignConfig {
+    let mut config = CodesignConfig::with_module(
+        brain,
+        Some(module),
+        ControllerKind::Mlp, // not used: the module's family is the search's
+        Some("box-3x3"),
+        budget,
+        4,
+    )
+    .unwrap();
+    config.seconds = 2.0;
+    config.batch = 10;
+    config
+}
+
+#[test]
+fn a_brain_for_any_body_frozen_searches_bodies_only() {
+    let module = any_body_module(ControllerKind::AttentionAny, 1);
+    let config = any_body_config(BrainMode::Frozen, module.clone(), 60);
+    assert_eq!(config.controller, ControllerKind::AttentionAny);
+    let run = search(config.clone(), sequential);
+    assert_eq!(
+        without_timing(&run),
+        without_timing(&search(config, two_threads)),
+        "the same bits on two threads"
+    );
+    assert!(
+        run.archive.len() >= 2,
+        "several bodies: {}",
+        run.archive.len()
+    );
+    let mut bodies = std::collections::BTreeSet::new();
+    for e in &run.archive {
+        assert_eq!(
+            e.genome, module.genome,
+            "entry {:?}: the module's genome",
+            e.cell
+        );
+        assert_eq!(e.design.genes, module.genome, "no other gene in the design");
+        bodies.insert(e.shape.to_rows());
+    }
+    assert_eq!(
+        bodies.len(),
+        run.archive.len(),
+        "a different body in every cell"
+    );
+    assert_eq!(run.best.genome, module.genome);
+    // Read back: the best is the module's genome on the best body, as a module again.
+    let text = run.to_json();
+    let back = CodesignRun::from_json(&text).unwrap();
+    assert_eq!(back.best, run.best);
+    // A file whose entry's genes moved is damaged.
+    let mut moved = run.clone();
+    moved.archive[0].design.genes[40] += 0.5;
+    moved.archive[0].genome[40] += 0.5;
+    let err = CodesignRun::from_json(&moved.to_json())
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("entry 0 is damaged") && err.contains("kept whole"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_brain_for_any_body_fine_tuned_keeps_its_attention_and_evolves_the_shared_genes() {
+    let module = any_body_module(ControllerKind::AttentionAny, 2);
+    let run = search(
+        any_body_config(BrainMode::Finetune, module.clone(), 60),
+        sequential,
+    );
+    for e in &run.archive {
+        assert_eq!(
+            e.genome.len(),
+            module.genome.len(),
+            "one length for every body"
+        );
+        assert_eq!(
+            e.genome[..32],
+            module.genome[..32],
+            "entry {:?}: attention held",
+            e.cell
+        );
+    }
+    assert!(
+        run.archive
+            .iter()
+            .any(|e| e.genome[32..] != module.genome[32..]),
+        "the shared genes evolve"
+    );
+    // mlp-any has no attention: every gene may change.
+    let mlp = any_body_module(ControllerKind::MlpAny, 3);
+    let run = search(
+        any_body_config(BrainMode::Finetune, mlp.clone(), 40),
+        sequential,
+    );
+    assert!(run.archive.iter().any(|e| e.genome[0] != mlp.genome[0]));
+}
+
+#[test]
+fn a_brain_for_any_body_from_scratch_has_one_genome_length_for_every_body() {
+    let mut config = CodesignConfig::new(
+        BrainMode::Scratch,
+        ControllerKind::AttentionAny,
+        None,
+        Shape::parse("box-3x3").unwrap(),
+        40,
+        2,
+    );
+    config.seconds = 2.0;
+    config.batch = 10;
+    let run = search(config, sequential);
+    assert!(run.archive.len() >= 2);
+    let len = ControllerKind::AttentionAny.param_count(0);
+    for e in &run.archive {
+        assert_eq!(e.genome.len(), len, "{}", e.shape.to_rows());
+        assert_eq!(e.design.genes.len(), len, "no gene per grid cell");
+    }
+}
+
+#[test]
+fn vsr_codesign_searches_bodies_only_around_a_brain_trained_on_many_bodies() {
+    let dir = std::env::temp_dir().join(format!("vsr-codesign-any-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let module = dir.join("any.json");
+    let o = vsr(&[
+        "evolve",
+        "--bodies",
+        root.join("campaigns/bodies/train-32.txt").to_str().unwrap(),
+        "--controller",
+        "attention-any",
+        "--evals",
+        "20",
+        "--population",
+        "10",
+        "--seconds",
+        "2",
+        "--bodies-per-evaluation",
+        "2",
+        "--seed",
+        "1",
+        "--out",
+        module.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", text(&o));
+    let trained = RunFile::from_json(&std::fs::read_to_string(&module).unwrap()).unwrap();
+    let out = dir.join("bodies.json");
+    let o = vsr(&[
+        "codesign",
+        "--brain",
+        "frozen",
+        "--from",
+        module.to_str().unwrap(),
+        "--start",
+        "box-3x3",
+        "--evals",
+        "30",
+        "--seed",
+        "2",
+        "--seconds",
+        "2",
+        "--batch",
+        "10",
+        "--threads",
+        "1",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", text(&o));
+    assert!(
+        text(&o).contains("frozen brain (attention-any)"),
+        "{}",
+        text(&o)
+    );
+    let run = CodesignRun::from_json(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    assert!(run.archive.len() >= 2);
+    for e in &run.archive {
+        assert_eq!(e.genome, trained.best.genome, "{}", e.shape.to_rows());
+    }
+    // Its bodies walk with that one genome: vsr evaluate reads any entry.
+    let o = vsr(&[
+        "evaluate",
+        "--genome",
+        out.to_str().unwrap(),
+        "--entry",
+        "1",
+        "--terrain",
+        "flat",
+        "--seconds",
+        "1",
+    ]);
+    assert!(o.status.success(), "{}", text(&o));
+    // An MLP module is still refused, in words that name the brains that can.
+    let o = vsr(&[
+        "codesign",
+        "--brain",
+        "frozen",
+        "--from",
+        root.join("pretrained/biped-4x3-mlp.json").to_str().unwrap(),
+        "--evals",
+        "5",
+        "--seed",
+        "1",
+        "--out",
+        dir.join("never.json").to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    assert!(
+        text(&o).contains("only an attention module can be reassembled")
+            && text(&o).contains("a brain for any body (attention-any, mlp-any, mlp-comm-any)"),
+        "{}",
+        text(&o)
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -18,11 +18,14 @@ use crate::evolution::thread_pool;
 /// Arguments of `vsr codesign`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// The brain: frozen (a pretrained attention module held fixed; bodies and per-voxel
-    /// genes evolve), finetune (the module as the start; every gene evolves) or scratch.
+    /// The brain: frozen (a pretrained module held fixed: an attention module's block, the
+    /// bodies and per-voxel genes evolving; a brain for any body whole, only the bodies
+    /// evolving), finetune (the module as the start: every gene evolves; a brain for any body
+    /// keeps its attention block and evolves the genes its voxels share) or scratch.
     #[arg(long)]
     brain: BrainMode,
-    /// The pretrained attention module's run file (frozen, finetune).
+    /// The pretrained module's run file (frozen, finetune): attention, or a brain for any body
+    /// (attention-any, mlp-any, mlp-comm-any).
     #[arg(long, value_name = "RUN.json")]
     from: Option<PathBuf>,
     /// With --from a co-design run file: its archive entry (0 first, in the file's order) is

@@ -4,7 +4,7 @@
 //! co-design run file; thread and worker counts are deliberately absent.
 
 use super::body::BodyGrid;
-use crate::controllers::ControllerKind;
+use crate::controllers::{ControllerKind, GenomeLayout, ATTENTION_PARAMS};
 use crate::error::{Error, Result};
 use crate::experiment::config::{check_seconds, SourceRun, TrainingTerrain, MAX_SEED};
 use crate::simulation::Shape;
@@ -24,10 +24,14 @@ pub const DEFAULT_START: &str = "box-3x3";
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum BrainMode {
-    /// A pretrained attention module's 32-gene block held fixed; the body, the per-voxel
-    /// genes and the bias evolve.
+    /// A pretrained module held fixed. An attention module: its 32-gene block is held and the
+    /// body, the per-voxel genes and the bias evolve. A brain for any body (`attention-any`,
+    /// `mlp-any`, `mlp-comm-any`): its whole genome is held, so only the body evolves (every
+    /// child is a body edit; Strgar & Kriegman's setting).
     Frozen,
-    /// The pretrained module as the start; every gene evolves.
+    /// The pretrained module as the start. An attention module: every gene evolves. A brain
+    /// for any body: the genes every voxel shares evolve, its attention block (if it has one)
+    /// held fixed, as `vsr finetune` holds it.
     Finetune,
     /// Every gene drawn at random, of any controller family.
     Scratch,
@@ -71,7 +75,7 @@ impl FromStr for BrainMode {
 pub struct CodesignConfig {
     /// How the brain is obtained.
     pub brain: BrainMode,
-    /// The controller family (attention for `frozen` and `finetune`).
+    /// The controller family (the module's for `frozen` and `finetune`).
     pub controller: ControllerKind,
     /// The pretrained module (`frozen`, `finetune`), whole so a run file replays alone.
     pub module: Option<SourceRun>,
@@ -175,12 +179,23 @@ impl CodesignConfig {
         ))
     }
 
-    /// Genes `[0, frozen)` of the shared genes never change (the module's attention block).
+    /// Genes `[0, frozen)` of the shared genes never change: the module's attention block
+    /// (an attention module frozen; a brain for any body with attention, fine-tuned), or all
+    /// of them (a brain for any body frozen: only the body evolves).
     pub fn frozen_shared(&self) -> usize {
+        let any_body = self.controller.is_body_independent();
         match self.brain {
-            BrainMode::Frozen => crate::controllers::ATTENTION_PARAMS,
+            BrainMode::Frozen if any_body => GenomeLayout::of(self.controller).shared_len(),
+            BrainMode::Frozen => ATTENTION_PARAMS,
+            BrainMode::Finetune if any_body && self.controller.has_attention() => ATTENTION_PARAMS,
             _ => 0,
         }
+    }
+
+    /// True when no gene evolves, only the body: a brain for any body, frozen whole.
+    pub fn bodies_only(&self) -> bool {
+        let layout = GenomeLayout::of(self.controller);
+        layout.voxel_len() == 0 && self.frozen_shared() >= layout.shared_len()
     }
 
     /// Number of archive columns (voxel-count bins).
@@ -207,32 +222,39 @@ impl CodesignConfig {
                 ))
             }
             (BrainMode::Frozen | BrainMode::Finetune, Some(module)) => {
-                if module.controller != ControllerKind::Attention {
+                let kind = module.controller;
+                if kind != ControllerKind::Attention && !kind.is_body_independent() {
+                    let any: Vec<&str> = ControllerKind::ALL
+                        .iter()
+                        .filter(|k| k.is_body_independent())
+                        .map(|k| k.name())
+                        .collect();
                     return bad(format!(
-                        "this module is {}, not attention: only an attention module can be \
-                         reassembled into other bodies{}",
-                        module.controller,
-                        match module.controller {
+                        "this module is {kind}, not attention: only an attention module can be \
+                         reassembled into other bodies{}; a brain for any body ({}) drives \
+                         every body whole",
+                        match kind {
                             ControllerKind::MlpComm | ControllerKind::MlpCommLatched =>
                                 " (an MLP-Comm module needs its neighbours' messages, and its \
                                  genes belong to the voxels of its own body)",
                             _ => " (its genes belong to the voxels of its own body)",
-                        }
+                        },
+                        any.join(", ")
                     ));
                 }
-                module.controller.check_genome(
+                kind.check_genome(
                     "the module's genome",
                     module.shape.voxel_count(),
                     &module.genome,
                 )?;
+                if self.controller != kind {
+                    return bad(format!(
+                        "--brain {} evolves the module's {kind} controller, not {}",
+                        self.brain, self.controller
+                    ));
+                }
             }
             (BrainMode::Scratch, None) => {}
-        }
-        if self.brain != BrainMode::Scratch && self.controller != ControllerKind::Attention {
-            return bad(format!(
-                "--brain {} evolves the module's attention controller, not {}",
-                self.brain, self.controller
-            ));
         }
         let (w, h) = (self.grid_width, self.grid_height);
         if w == 0 || h == 0 || w > 100 || h > 100 {

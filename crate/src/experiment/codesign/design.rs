@@ -6,7 +6,7 @@
 //! dormant for a later return.
 
 use super::body::BodyGrid;
-use super::config::{BrainMode, CodesignConfig};
+use super::config::CodesignConfig;
 use crate::controllers::{ControllerKind, GenomeLayout};
 use crate::error::Result;
 use crate::random::standard_normal;
@@ -79,7 +79,18 @@ impl Design {
     /// one that splits nothing, each half the time, the other when one is impossible under
     /// the voxel bounds), otherwise a Gaussian mutation of every gene in use (the shared genes
     /// past the frozen block, and the voxels' own genes; dormant genes are left as they are).
+    /// When no gene evolves ([`CodesignConfig::bodies_only`]: a brain for any body, frozen
+    /// whole) every child is a body edit, `p_body` unused (the parent's body again when no
+    /// edit is possible).
     pub(crate) fn vary(&self, config: &CodesignConfig, rng: &mut impl Rng) -> Design {
+        if config.bodies_only() {
+            return Design {
+                body: self
+                    .edit_body(config, rng)
+                    .unwrap_or_else(|| self.body.clone()),
+                genes: self.genes.clone(),
+            };
+        }
         if rng.gen::<f64>() < config.p_body {
             if let Some(body) = self.edit_body(config, rng) {
                 return Design {
@@ -136,7 +147,8 @@ impl Design {
     }
 
     /// Whether the design fits `config`: a connected body within the voxel bounds in the
-    /// grid, as many genes as the layout needs, and (frozen) the module's block unchanged.
+    /// grid, as many genes as the layout needs, and the module's frozen genes unchanged (its
+    /// attention block, or a brain for any body frozen whole).
     pub(crate) fn check(&self, config: &CodesignConfig) -> Result<()> {
         let layout = GenomeLayout::of(config.controller);
         let cells = config.grid_width * config.grid_height;
@@ -164,14 +176,16 @@ impl Design {
                 config.min_voxels, config.max_voxels
             ));
         }
-        if config.brain == BrainMode::Frozen {
-            if let Some(module) = &config.module {
-                let k = config.frozen_shared();
-                if self.genes[..k] != module.genome[..k] {
-                    return bad(
-                        "a design's attention block differs from the frozen module's".into(),
-                    );
-                }
+        let k = config.frozen_shared();
+        if let (true, Some(module)) = (k > 0, &config.module) {
+            if self.genes[..k] != module.genome[..k] {
+                return bad(if config.bodies_only() {
+                    "a design's genes differ from the frozen module's (a brain for any body, \
+                     kept whole)"
+                        .into()
+                } else {
+                    "a design's attention block differs from the frozen module's".into()
+                });
             }
         }
         self.shape().map(|_| ())
@@ -181,6 +195,7 @@ impl Design {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::experiment::codesign::BrainMode;
     use crate::experiment::config::SourceRun;
     use crate::random::rng_from;
 
@@ -268,5 +283,77 @@ mod tests {
             without.controller_genome(config.controller).len(),
             ControllerKind::Mlp.param_count(8)
         );
+    }
+
+    fn any_body_module() -> SourceRun {
+        let kind = ControllerKind::AttentionAny;
+        SourceRun {
+            genome: (0..kind.param_count(0))
+                .map(|g| g as f32 / 50.0 - 0.5)
+                .collect(),
+            shape: Shape::parse("biped-4x3").unwrap(),
+            controller: kind,
+            seed: 1,
+            budget_evals: 100,
+            fitness: 1.0,
+        }
+    }
+
+    #[test]
+    fn a_brain_for_any_body_frozen_changes_only_bodies_and_fine_tuned_keeps_its_attention() {
+        let m = any_body_module();
+        let frozen = CodesignConfig::with_module(
+            BrainMode::Frozen,
+            Some(m.clone()),
+            ControllerKind::Mlp,
+            Some("box-3x3"),
+            100,
+            2,
+        )
+        .unwrap();
+        assert_eq!(
+            frozen.controller,
+            ControllerKind::AttentionAny,
+            "the module's family"
+        );
+        assert!(frozen.bodies_only());
+        assert_eq!(frozen.frozen_shared(), m.genome.len());
+        let mut rng = rng_from(5);
+        let parent = Design::start(&frozen, &mut rng).unwrap();
+        assert_eq!(parent.genes, m.genome, "the whole genome, no gene per cell");
+        let mut bodies = std::collections::BTreeSet::new();
+        for _ in 0..200 {
+            let child = parent.vary(&frozen, &mut rng);
+            child.check(&frozen).unwrap();
+            assert_eq!(child.genes, m.genome);
+            assert_eq!(child.controller_genome(frozen.controller), m.genome);
+            assert_ne!(child.body, parent.body, "every child is a body edit");
+            bodies.insert(child.shape().unwrap().to_rows());
+        }
+        assert!(bodies.len() > 5, "{bodies:?}");
+
+        let finetune = CodesignConfig {
+            brain: BrainMode::Finetune,
+            ..frozen.clone()
+        };
+        assert!(!finetune.bodies_only());
+        assert_eq!(finetune.frozen_shared(), 32);
+        let child = parent.mutate(&finetune, &mut rng);
+        child.check(&finetune).unwrap();
+        assert_eq!(
+            child.genes[..32],
+            m.genome[..32],
+            "the attention block held"
+        );
+        assert!(child.genes[32..]
+            .iter()
+            .zip(&m.genome[32..])
+            .all(|(a, b)| a != b));
+        let mut moved = child.clone();
+        moved.genes[3] += 1.0;
+        let err = moved.check(&finetune).unwrap_err().to_string();
+        assert!(err.contains("attention block differs"), "{err}");
+        let err = moved.check(&frozen).unwrap_err().to_string();
+        assert!(err.contains("kept whole"), "{err}");
     }
 }

@@ -1,8 +1,9 @@
 //! Body search (co-design): bodies searched around a brain, the paper's thesis ("a brain that
 //! needs no messages can be reassembled into other bodies") made a tool. A body-and-brain
 //! genome ([`Design`]: a body in a grid, genes per grid cell), two body edits ([`BodyGrid`]),
-//! three ways to get the brain ([`BrainMode`]: a pretrained attention module frozen or
-//! fine-tuned, or any controller from scratch), a MAP-Elites archive over size and feet
+//! three ways to get the brain ([`BrainMode`]: a pretrained attention module or a brain for
+//! any body, frozen or fine-tuned, or any controller from scratch; a brain for any body frozen
+//! whole leaves only the body to evolve), a MAP-Elites archive over size and feet
 //! ([`Archive`]), the ask/tell search ([`Codesign`]) and its run file ([`CodesignRun`]).
 //! `genetics/` is not involved: its GA evolves one genome length for one body.
 
