@@ -25,11 +25,14 @@ const PRESETS: [&str; 5] = [
     "comb-14x2",
     "worm-6x1",
 ];
-/// Controllers the page evolves.
-pub const PAGE_CONTROLLERS: [ControllerKind; 3] = [
+/// Controllers the page evolves: the paper's three, then their brains for any body.
+pub const PAGE_CONTROLLERS: [ControllerKind; 6] = [
     ControllerKind::Attention,
     ControllerKind::Mlp,
     ControllerKind::MlpComm,
+    ControllerKind::AttentionAny,
+    ControllerKind::MlpAny,
+    ControllerKind::MlpCommAny,
 ];
 /// The page's quick run: progress within a minute or two on two cores.
 const QUICK: RunPreset = RunPreset {

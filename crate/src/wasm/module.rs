@@ -23,6 +23,12 @@ struct ModuleInfo {
     seconds: f64,
     terrain: String,
     found_by_search: bool,
+    /// One genome for every body (`attention-any`, `mlp-any`, `mlp-comm-any`).
+    any_body: bool,
+    /// The body set it was trained on (its file name), or null: trained on `shape` alone.
+    body_set: Option<String>,
+    /// How many bodies it was trained on (1 when on `shape` alone).
+    bodies: usize,
 }
 
 /// Reads a run file (its JSON) and describes its best individual: `{shape (rows),
@@ -30,7 +36,10 @@ struct ModuleInfo {
 /// fitness, genes, finetunedFrom (source rows or null), seconds
 /// (its training episodes' length), terrain (its training terrain: a family such as
 /// hilly-1-10, or a name), foundBySearch (a co-design run file: its best body, found by a
-/// body search)}`. A malformed file throws an `Error` that says what is wrong.
+/// body search), anyBody (one genome drives every body), bodySet (the body-set file it was
+/// trained on, or null) and bodies (how many bodies it was trained on: 1, or the set's)}`.
+/// For a brain trained on many bodies, `shape` is its set's first body. A malformed file
+/// throws an `Error` that says what is wrong.
 #[wasm_bindgen(js_name = describeRun)]
 pub fn describe_run(run_file: &str) -> Result<JsValue, JsError> {
     if is_codesign(run_file) {
@@ -52,6 +61,9 @@ pub fn describe_run(run_file: &str) -> Result<JsValue, JsError> {
         seconds: run.config.seconds,
         terrain: run.config.terrain.clone().into(),
         found_by_search: false,
+        any_body: run.best.controller.is_body_independent(),
+        body_set: run.config.bodies.as_ref().map(|b| b.set.name.clone()),
+        bodies: run.config.bodies.as_ref().map_or(1, |b| b.set.bodies.len()),
     })
 }
 
@@ -70,6 +82,9 @@ fn describe_codesign(run: &CodesignRun) -> ModuleInfo {
         seconds: run.config.seconds,
         terrain: run.config.terrain.clone().into(),
         found_by_search: true,
+        any_body: run.best.controller.is_body_independent(),
+        body_set: None,
+        bodies: 1,
     }
 }
 
