@@ -50,13 +50,7 @@ pub fn run(args: Args) -> Result<()> {
         return on_bodies(&args, &best, path, seconds);
     }
     let validation = validate_on(&best, args.set, seconds)?;
-    if let Some(out) = &args.out {
-        crate::atomic::write_json(out, &validation, "validation file")?;
-    }
-    if args.json {
-        let body = serde_json::to_string(&validation)
-            .map_err(|e| Error::Io(format!("cannot print JSON: {e}")))?;
-        say!("{body}");
+    if written(&args, &validation)? {
         return Ok(());
     }
     for t in &validation.terrains {
@@ -65,6 +59,20 @@ pub fn run(args: Args) -> Result<()> {
     say!("{:<16} {:>8.3} m/s", "median", validation.median);
     say!("{:<16} {:>8.3} m/s", "mean", validation.mean);
     Ok(())
+}
+
+/// Writes `validation` to `--out` when asked, and prints it as JSON with `--json` (then
+/// true: nothing more to print).
+fn written(args: &Args, validation: &impl serde::Serialize) -> Result<bool> {
+    if let Some(out) = &args.out {
+        crate::atomic::write_json(out, validation, "validation file")?;
+    }
+    if args.json {
+        let body = serde_json::to_string(validation)
+            .map_err(|e| Error::Io(format!("cannot print JSON: {e}")))?;
+        say!("{body}");
+    }
+    Ok(args.json)
 }
 
 /// `--bodies`: every body of the set, spread over threads (the result never depends on them).
@@ -84,13 +92,7 @@ fn on_bodies(args: &Args, best: &Best, path: &std::path::Path, seconds: f64) -> 
             .collect::<Result<Vec<_>>>()
     })?;
     let validation = BodiesValidation::new(&bodies, args.set, seconds, per_body);
-    if let Some(out) = &args.out {
-        crate::atomic::write_json(out, &validation, "validation file")?;
-    }
-    if args.json {
-        let body = serde_json::to_string(&validation)
-            .map_err(|e| Error::Io(format!("cannot print JSON: {e}")))?;
-        say!("{body}");
+    if written(&args, &validation)? {
         return Ok(());
     }
     for b in &validation.per_body {

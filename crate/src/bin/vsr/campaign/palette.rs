@@ -24,6 +24,11 @@ const BLUISH_GREEN: RGBColor = RGBColor(0, 158, 115);
 const REDDISH_PURPLE: RGBColor = RGBColor(204, 121, 167);
 const ORANGE: RGBColor = RGBColor(230, 159, 0);
 const BLACK: RGBColor = RGBColor(0, 0, 0);
+/// The brains for any body: a darker shade of their classic family's colour (the palette has
+/// no more hues that are not taken).
+const DARK_BLUE: RGBColor = RGBColor(0, 68, 106);
+const DARK_VERMILLION: RGBColor = RGBColor(128, 56, 0);
+const DARK_BLUISH_GREEN: RGBColor = RGBColor(0, 95, 69);
 
 /// The greys of series that are no brain, in the order they come in a figure.
 const GREYS: [RGBColor; 2] = [RGBColor(80, 80, 80), RGBColor(150, 150, 150)];
@@ -38,10 +43,9 @@ pub fn look(role: Role, other: usize) -> Look {
             ControllerKind::Mlp => VERMILLION,
             ControllerKind::MlpComm => BLUISH_GREEN,
             ControllerKind::MlpCommLatched => REDDISH_PURPLE,
-            // The body-independent families: the same colour as their classic family.
-            ControllerKind::AttentionAny => BLUE,
-            ControllerKind::MlpAny => VERMILLION,
-            ControllerKind::MlpCommAny => BLUISH_GREEN,
+            ControllerKind::AttentionAny => DARK_BLUE,
+            ControllerKind::MlpAny => DARK_VERMILLION,
+            ControllerKind::MlpCommAny => DARK_BLUISH_GREEN,
         },
         Role::Frozen(_) => BLACK,
         Role::FineTuned => ORANGE,
