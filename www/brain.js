@@ -8,6 +8,7 @@
  */
 import { describeRun, ready, remapGenome, runGenome, transplant } from './core.js';
 import { decimal } from './format.js';
+import { familyName, hasAttention, isAnyBody } from './families.js';
 
 /**
  * @typedef {object} Brain
@@ -48,7 +49,7 @@ import { decimal } from './format.js';
 export function foundBody(entry, settings, what, walks) {
   return {
     controller: entry.controller, genome: new Float32Array(entry.genome), rows: entry.shape, origin: { left: 0, bottom: 0 },
-    module: null, source: entry.controller === 'attention' ? { text: entry.source, entry: entry.index } : null,
+    module: null, source: hasAttention(entry.controller) ? { text: entry.source, entry: entry.index } : null,
     seconds: settings?.seconds ?? null,
     trained: Number.isFinite(entry.fitness) && settings ? { speed: entry.fitness, terrain: settings.terrain, walks } : null,
     label: `a body found by the body search (${what}): ${Number.isFinite(entry.fitness) ? `${decimal(entry.fitness)} m/s in training` : 'no speed'}`,
@@ -57,19 +58,21 @@ export function foundBody(entry, settings, what, walks) {
 
 /**
  * A module put on the body `rows`: the core's transplant (rejects with a readable Error when
- * the module cannot go on this body).
+ * the module cannot go on this body). A brain for any body crosses whole: every gene as trained.
  * @param {import('./modules.js').Module} module @param {string} rows @param {Origin} origin @param {number} seed
  * @returns {Promise<Brain>}
  */
 export async function transplanted(module, rows, origin, seed) {
   const [info, genome, { presets }] = await Promise.all([describeRun(module.text), transplant(module.text, rows, seed), ready]);
-  const own = info.shape === rows;
-  const from = presets.find((p) => p.rows === info.shape)?.name ?? info.shape;
+  const own = info.shape === rows && info.bodies <= 1; // a brain trained on many bodies has no body of its own
+  const from = info.bodies > 1 ? `${info.bodies} bodies` : presets.find((p) => p.rows === info.shape)?.name ?? info.shape;
+  const label = isAnyBody(info.controller)
+    ? `a brain for any body (${familyName(info.controller)}) trained on ${from}, on your drawing with all its ${genome.length} genes as trained`
+    : `a module transplanted from ${from}: its attention as evolved there, the rest of its brain new for this body, drawn with seed ${seed}`;
   return {
     controller: info.controller, genome, rows, origin, module: pretrainedKey(module), source: attentionSource(info, module.text),
     seconds: info.seconds, trained: own ? { speed: info.fitness, terrain: info.terrain } : null, oneShot: !own,
-    label: own ? `${module.label}, on its own body`
-      : `a module transplanted from ${from}: its attention as evolved there, the rest of its brain new for this body, drawn with seed ${seed}`,
+    label: own ? `${module.label}, on its own body` : label,
   };
 }
 
@@ -80,10 +83,13 @@ export async function transplanted(module, rows, origin, seed) {
  */
 export async function ownBody(module, origin) {
   const [info, genome] = await Promise.all([describeRun(module.text), runGenome(module.text)]);
+  // A brain trained on many bodies has none of its own: it opens on the first of them, its training speed not this body's.
+  const many = info.bodies > 1;
   return {
     controller: info.controller, genome, rows: info.shape, origin, module: pretrainedKey(module),
-    source: attentionSource(info, module.text), label: `${module.label}, on its own body`,
-    seconds: info.seconds, trained: { speed: info.fitness, terrain: info.terrain }, oneShot: false,
+    source: attentionSource(info, module.text),
+    label: many ? `${module.label}, on the first of the ${info.bodies} bodies it was trained on` : `${module.label}, on its own body`,
+    seconds: info.seconds, trained: many ? null : { speed: info.fitness, terrain: info.terrain }, oneShot: false,
   };
 }
 
@@ -96,7 +102,9 @@ export async function followEdit(brain, rows, origin, seed, edit) {
   const genome = await remapGenome(brain.controller, brain.genome, brain.rows, rows,
     origin.left - brain.origin.left, origin.bottom - brain.origin.bottom, seed, edit);
   const label = brain.label.replace(/ · edited.*$/, '');
-  return { ...brain, genome, rows, origin, trained: null, label: `${label} · edited${/m\/s/.test(label) ? ' since that speed was measured' : ''}` };
+  // A brain for any body keeps every gene through an edit (the core's remap gives it back unchanged): said, not drawn anew.
+  const same = isAnyBody(brain.controller) ? ' (the same genes drive the new body)' : '';
+  return { ...brain, genome, rows, origin, trained: null, label: `${label} · edited${same}${/m\/s/.test(label) ? ' since that speed was measured' : ''}` };
 }
 
 /**
@@ -123,7 +131,7 @@ export function bestSoFar(genome, fitness, settings, kind, finetuning, source, o
 export function runResult(best, runFile, settings, origin, label) {
   return {
     controller: best.controller, genome: new Float32Array(best.genome), rows: settings.shape, origin, module: null,
-    source: best.controller === 'attention' ? { text: runFile, entry: null } : null, label,
+    source: hasAttention(best.controller) ? { text: runFile, entry: null } : null, label,
     seconds: settings.seconds, trained: { speed: best.fitness, terrain: settings.terrain }, run: true,
   };
 }
@@ -132,6 +140,18 @@ export function runResult(best, runFile, settings, origin, label) {
 export const FINETUNE_WORDS = 'Fine-tune the attention brain on your robot (a module loaded onto it, a run’s result, a body the body search found): '
   + 'its attention stays as it is and the rest of its brain is evolved anew for this body, as the paper fine-tunes a transplanted module '
   + '(that rest starts again from random, so at first it walks worse than now)';
+
+/** What Fine-tune does to a brain for any body, on its button. */
+const FINETUNE_ANY_WORDS = 'Fine-tune the brain for any body on your robot: it starts from all its genes as they are, its attention '
+  + 'kept, and evolves the others (shared by every voxel) for this body';
+
+/**
+ * What Fine-tune does to the robot's brain, on its button. @param {Brain | null} brain
+ * @returns {string}
+ */
+export function finetuneWords(brain) {
+  return brain && isAnyBody(brain.controller) ? FINETUNE_ANY_WORDS : FINETUNE_WORDS;
+}
 
 /**
  * Why Fine-tune is off for the robot's brain (its button's title). @param {Brain | null} brain
@@ -142,8 +162,8 @@ export function whyNoFinetune(brain) {
     return 'Fine-tune trains an attention brain on your robot, and none drives it yet: choose a module under “Transplant a module” '
       + 'and press “Load onto my robot” (Evolve starts a new brain, from scratch)';
   }
-  if (brain.controller !== 'attention') {
-    return `The brain driving your robot is ${brain.controller}: it has no attention to keep, so it cannot be fine-tuned (Evolve trains a new brain for this body, from scratch)`;
+  if (!hasAttention(brain.controller)) {
+    return `The brain driving your robot is ${familyName(brain.controller)}: it has no attention to keep, so it cannot be fine-tuned (Evolve trains a new brain for this body, from scratch)`;
   }
   return 'The file this brain’s attention came from is not in the page (a link or a reload does not bring it back): to fine-tune, '
     + 'choose a module under “Transplant a module” and press “Load onto my robot”, or Evolve a new brain, from scratch';
@@ -164,5 +184,5 @@ function pretrainedKey(module) {
 
 /** @param {{controller: string}} info @param {string} text @returns {Source | null} */
 function attentionSource(info, text) {
-  return info.controller === 'attention' ? { text, entry: null } : null;
+  return hasAttention(info.controller) ? { text, entry: null } : null;
 }

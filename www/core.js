@@ -51,8 +51,9 @@ export function checkShape(rows) { return ask('checkShape', rows); }
  * @param {string} runFile a run file's JSON text
  * @returns {Promise<{shape: string, controller: string, seed: number, budget: number, evaluations: number, fitness: number,
  *   genes: number, finetunedFrom: string | null, seconds: number, terrain: string,
- *   foundBySearch: boolean}>} rejects with a
- *   readable Error when malformed
+ *   foundBySearch: boolean, anyBody: boolean, bodySet: string | null, bodies: number}>} rejects with a
+ *   readable Error when malformed (anyBody: one genome drives every body; bodySet, bodies: what it was trained on,
+ *   its first body `shape` when many)
  */
 export function describeRun(runFile) { return ask('describeRun', runFile); }
 

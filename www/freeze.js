@@ -9,6 +9,7 @@
  */
 import { byId } from './dom.js';
 import { decimal, NONE } from './format.js';
+import { hasAttention } from './families.js';
 /** Seconds of walking before the freeze that its "before" speed is measured over. */
 export const BEFORE_WINDOW_S = 5;
 
@@ -40,7 +41,7 @@ export class FreezeControl {
     this.recent = [];
     this.mark = null;
     this.setFrozen(false);
-    const can = controller === 'attention';
+    const can = hasAttention(controller);
     this.button.disabled = !can;
     this.button.title = can
       ? 'Freeze every voxel\'s attention matrix as it is now (as the paper\'s ablation does), and watch the speed'

@@ -7,7 +7,7 @@
  * and shared as a link (keeper.js), and set up by the guided tour and the study panel; bodies
  * are searched around a brain by the body-search panel (codesign/).
  */
-import { lostInLink, whyNoFinetune } from './brain.js';
+import { finetuneWords, lostInLink, whyNoFinetune } from './brain.js';
 import { ready } from './core.js';
 import { rowsField, wireDrawControls } from './draw-controls.js';
 import { byId, whenNear } from './dom.js';
@@ -23,8 +23,8 @@ import { Lab } from './classroom/lab.js';
 import { simplify, wireWords } from './classroom/simple-words.js';
 import { CodesignPanel } from './codesign/panel.js';
 import { SearchEstimate } from './codesign/estimate.js';
-import { BOX } from './codesign/plan.js';
-import { ModuleList } from './modules.js';
+import { BOX, searchWords } from './codesign/plan.js';
+import { ModuleList, NOT_YET } from './modules.js';
 import { Race } from './race.js';
 import { Robot } from './robot.js';
 import { pageState } from './robot-state.js';
@@ -37,6 +37,7 @@ import { StudyPanel } from './tour/study.js';
 import { Tour } from './tour/tour.js';
 import { Viewer } from './viewer.js';
 import { editWalking } from './walking-edit.js';
+import { familyName, hasAttention, isAnyBody } from './families.js';
 
 const messages = new MessageBox(byId(document, 'message'), byId(document, 'shape-message'));
 const defaults = await ready.catch((error) => {
@@ -86,13 +87,16 @@ const modules = new ModuleList(document, {
   loadOnto: (module) => robot.loadModule(module),
   openOwn: (module) => robot.openModule(module),
   message: showMessage,
+  described: (info) => bodySearch?.moduleKind(info?.controller ?? ''), // the body search words its brains for the module
 }, defaults.attentionGenes, defaults.presets);
 const race = new Race(document, { module: () => modules.selected(), terrain: () => viewer.terrain.value.trim(), message: showMessage });
 const runs = new RunPanel(document, defaults, {
   body: () => ({ rows: drawing.rows(), ok: robot?.check.ok ?? false }), // the panel asks before the robot is made
   controller: () => controllerSelect.value,
-  source: () => (robot?.brain && robot.brain.controller === 'attention' ? robot.brain.source : null),
+  source: () => (robot?.brain && hasAttention(robot.brain.controller) ? robot.brain.source : null),
+  sourceKind: () => robot?.brain?.controller ?? 'attention',
   whyNoFinetune: () => whyNoFinetune(robot?.brain ?? null),
+  finetuneWords: () => finetuneWords(robot?.brain ?? null),
   best: (genome, fitness, settings, kind) => follower.best(genome, fitness, settings, kind),
   finished: (run) => follower.finished(run),
   generation: (top, generation, settings, kind, mode) => race.keepGeneration(top, generation, settings, kind, mode),
@@ -110,7 +114,7 @@ const estimate = new RunEstimate(byId(document, 'run-estimate'), runs.form, () =
 runs.compare.addEventListener('change', () => estimate.refresh());
 const rows = rowsField(document, drawing, editor, messages, () => robot.bodyChanged());
 robot = new Robot(document, { defaults, drawing, editor, viewer, messages, speedNote, runs, rows,
-  keep: () => { keeper.schedule(); challenge?.watch(drawing.rows()); } });
+  keep: () => { keeper.schedule(); challenge?.watch(drawing.rows()); }, familyShown: showAnyBodyNote });
 follower = new RunFollower(robot, modules, () => runs.mode === 'finetune');
 messages.place('codesign', byId(document, 'codesign-message')); // the body search's problems, under its buttons
 messages.place('watch', byId(document, 'watch-message')); // what a click in the gallery did, above the robot it brought
@@ -124,9 +128,11 @@ const bodySearch = new CodesignPanel(document, {
     await robot.openBrain(() => brain);
     const replaced = drawn !== brain.rows && drawing.rows() === brain.rows;
     if (replaced) {
+      const finetune = isAnyBody(brain.controller)
+        ? ' Fine-tune, under “Run”, can train it further for this body or one you draw (from all its genes, its attention kept).'
+        : ' Fine-tune, under “Run”, can train its attention for this body or one you draw (the rest of its brain starts again).';
       messages.show('The body you clicked, with its brain, now stands in “1 · Draw” in place of your drawing: Undo there brings '
-        + 'the shape of your drawing back, driven by this brain.'
-        + (brain.source ? ' Fine-tune, under “Run”, can train its attention for this body or one you draw (the rest of its brain starts again).' : ''),
+        + 'the shape of your drawing back, driven by this brain.' + (brain.source ? finetune : ''),
       'note', 'watch');
     }
     // The robot in view, with the note just above it (on a phone the top of the page is far away).
@@ -143,14 +149,18 @@ const bodySearch = new CodesignPanel(document, {
 /** The body search's brain, in words, before it starts. */
 function searchBrain() {
   const kind = byId(document, 'codesign-brain', HTMLSelectElement).value;
-  if (kind === 'scratch') return `a new ${controllerSelect.value} brain, evolved from scratch with the body`;
+  if (kind === 'scratch') return `a new ${familyName(controllerSelect.value)} brain, evolved from scratch with the body`;
   const option = modules.select.selectedOptions[0];
   if (!option?.value) return 'no module chosen yet (under “3 · Give it a brain”)';
   const name = `the module “${option.text.replace(/ · .*$/, '')}”`;
-  // Said before the search refuses it (the core's rule: only an attention module drives other bodies).
-  const other = modules.info && modules.info.controller !== 'attention' ? modules.info.controller : '';
-  return other ? `${name} is ${other}: only an attention module can drive other bodies; choose one, or “a new brain, from scratch”`
-    : `${name}, ${kind === 'frozen' ? 'its attention kept' : 'every gene evolving from it'}`;
+  // Said before the search refuses it (the core's rule: only an attention module or a brain for any body drives other bodies).
+  const family = modules.info?.controller ?? '';
+  if (family && family !== 'attention' && !isAnyBody(family)) {
+    return `${name} is ${familyName(family)}: only an attention module or a brain for any body can drive other bodies; choose one, or “a new brain, from scratch”`;
+  }
+  if (!isAnyBody(family)) return `${name}, ${kind === 'frozen' ? 'its attention kept' : 'every gene evolving from it'}`;
+  const named = name.includes(familyName(family)) ? name : `${name} (${familyName(family)})`; // an imported file's name does not say
+  return `${named}, ${searchWords(/** @type {'frozen' | 'finetune'} */ (kind), family).short}`;
 }
 // The body search's estimate: its start body (the module's own once it is described; else the drawing stands for it).
 const startRows = () => ({ box: BOX, module: modules.info?.shape ?? drawing.rows() })[byId(document, 'codesign-from', HTMLSelectElement).value] ?? drawing.rows();
@@ -158,6 +168,21 @@ new SearchEstimate(byId(document, 'codesign-estimate'), () => ({ evaluations: Nu
   seconds: Number(byId(document, 'codesign-seconds', HTMLInputElement).value),
   rows: startRows(), workers: Number(runs.inputs.workers.value) || 1, running: bodySearch.running,
   brain: searchBrain() }), () => estimate.currentPace());
+
+/**
+ * Under the family menu, while it shows a brain for any body: where the study's is (or that it
+ * is not ready yet), and what a person can do meanwhile. @param {string} kind the family shown
+ */
+function showAnyBodyNote(kind) {
+  const note = byId(document, 'any-body-note');
+  note.hidden = !isAnyBody(kind);
+  if (note.hidden) return;
+  const study = modules.studyAnyBody
+    ? 'The study\'s brain for any body (attention, trained on many bodies) is in the module list, under “one brain for any body”: '
+      + 'choose it and press “Load onto my robot”, and it walks on your drawing at once, with no evolution.'
+    : `The study's brain for any body (attention, trained on many bodies): ${NOT_YET}.`;
+  note.textContent = `${study} Evolve trains one on your drawing; then add or remove voxels and it keeps walking, with the same genes.`;
+}
 
 /** The viewer's terrain changed: the speed is measured on it, and it is kept. */
 function terrainChanged() {
@@ -170,7 +195,7 @@ function wire() {
     changed: () => robot.bodyChanged(),
     running: () => robot.running,
   });
-  for (const c of defaults.controllers) controllerSelect.append(new Option(c));
+  for (const c of defaults.controllers) controllerSelect.append(new Option(familyName(c), c));
   controllerSelect.addEventListener('change', () => robot.controllerChosen());
   byId(document, 'share').addEventListener('click', () => keeper.share());
   byId(document, 'glossary-open').addEventListener('click', () => {
@@ -198,7 +223,10 @@ async function start() {
     editor.draw();
     return robot.bodyChanged();
   });
-  modules.listPretrained().then(() => { if (robot.brain?.module) modules.choose(robot.brain.module); });
+  modules.listPretrained().then(() => {
+    if (robot.brain?.module) modules.choose(robot.brain.module);
+    showAnyBodyNote(controllerSelect.value); // the study's brain for any body is listed, or not yet
+  });
   // How long a run will take, before the first: this computer's speed on the quick settings' episodes, for the drawn body.
   // (Three seconds after the page opened: its own start-up, wasm compiled in every worker, is done by then and does not
   // slow the measure, and the measure's two seconds of the cores do not slow the page's first moments.)

@@ -13,9 +13,16 @@ import { keepModules, loadKeptModules } from './storage.js';
 import { SPEED_MARK, bodyWords, brainWords, shortLabel, unseenWords } from './module-names.js';
 import { lineageNote } from './tour/lineage.js';
 import { count, decimal } from './format.js';
+import { familyName, isAnyBody } from './families.js';
 
 /** Where the served pretrained run files are (scripts/serve.mjs mounts pretrained/). */
 const PRETRAINED_DIR = 'pretrained/';
+/** The list's group of brains for any body (one genome drives every body). */
+export const ANY_BODY_GROUP = 'one brain for any body';
+/** The study's brain for any body, while pretrained/ has none: said in the list and under the family menu. */
+export const NOT_YET = 'not yet: the study is still training it';
+/** The list's stand-in for the study's brain for any body until its manifest lists one (never chosen: disabled). */
+const PENDING = 'pending:attention-any';
 /** What the list and its details say in place of speeds while {@link ModuleList.quiet}. */
 const HUSHED = 'Speeds are kept back until you reveal your answer to the tour\'s question';
 
@@ -29,6 +36,7 @@ const HUSHED = 'Speeds are kept back until you reveal your answer to the tour\'s
  * @property {(module: Module) => void} loadOnto  put the module on the drawn robot
  * @property {(module: Module) => void} openOwn   replace the drawing by the module's body
  * @property {(text: string, source?: string) => void} message  shows an error (about `source`: '' takes it away)
+ * @property {(info: {controller: string} | null) => void} [described]  the chosen module is described (null: none)
  */
 
 export class ModuleList {
@@ -62,6 +70,8 @@ export class ModuleList {
     this.studyRuns = /** @type {import('./tour/study.js').StudyRun[]} */ ([]);
     /** Whether the page said that storage could not keep its modules (said once). */
     this.keepWarned = false;
+    /** The study's brain for any body (attention) in pretrained/, once listed: its key ('' while the study trains it). */
+    this.studyAnyBody = '';
     /** Resolves once the pretrained modules are listed (or could not be). */
     this.listed = new Promise((resolve) => { this.doneListing = resolve; });
     byId(doc, 'module-load', HTMLButtonElement).addEventListener('click', () => this.withSelected(hooks.loadOnto));
@@ -75,6 +85,7 @@ export class ModuleList {
     try {
       const manifest = await fetchOk(`${PRETRAINED_DIR}manifest.json`).then((r) => r.json());
       for (const m of manifest.modules ?? []) {
+        if (isAnyBody(m.controller)) { this.listAnyBody(m); continue; }
         // Manifest written by `vsr campaign export`: the mean over the unseen validation set, the
         // figure the study panel and its box plots show for the same run.
         const mean = Number(m.validation?.unseen?.mean);
@@ -98,6 +109,7 @@ export class ModuleList {
         const short = shortLabel(`${b.voxels} voxels, ${b.controller} ${how.short}`, mean);
         this.list(PRETRAINED_DIR + b.file, label, short, 'found by a body search', mean);
       }
+      if (!this.studyAnyBody) this.listPending();
       this.describe();
     } catch (error) {
       this.hooks.message(`could not list the pretrained modules: ${messageOf(error)}`);
@@ -105,6 +117,31 @@ export class ModuleList {
     // The modules made here on earlier visits, after the pretrained ones (a damaged one is left out).
     for (const module of loadKeptModules()) await this.add(module, false, false).catch(() => {});
     this.doneListing?.(undefined);
+  }
+
+  /**
+   * Lists a brain for any body of the manifest (`vsr campaign export` of an `[[any_body]]` group,
+   * an entry of `modules` whose controller is a family for any body; `shape` names what it was
+   * trained on, `bodies` how many when given), in its own group, named for a newcomer.
+   * @param {any} m the manifest's entry
+   */
+  listAnyBody(m) {
+    const mean = Number(m.validation?.unseen?.mean);
+    const speed = Number.isFinite(mean) ? `, ${unseenWords(mean)}` : '';
+    const on = Number.isInteger(m.bodies) ? `${m.bodies} bodies at once` : `the bodies of ${m.shape}`;
+    const name = familyName(m.controller);
+    const label = `a brain for any body (${name}), trained on ${on} (evolved with a budget of ${count(m.budget ?? m.evaluations)} evaluations${speed})`;
+    const key = PRETRAINED_DIR + m.file;
+    this.list(key, label, shortLabel(`${name}, trained on ${Number.isInteger(m.bodies) ? `${m.bodies} bodies` : m.shape}`, mean), ANY_BODY_GROUP, mean);
+    if (m.controller === 'attention-any' && !this.studyAnyBody) this.studyAnyBody = key;
+  }
+
+  /** The study's brain for any body is not in pretrained/ yet: the list says so, in its place (it cannot be chosen). */
+  listPending() {
+    this.list(PENDING, `The study's brain for any body (attention, trained on many bodies): ${NOT_YET}`,
+      `attention, any body: ${NOT_YET}`, ANY_BODY_GROUP);
+    const option = [...this.select.options].find((o) => o.value === PENDING);
+    if (option) option.disabled = true;
   }
 
   /** Keeps the modules made on the page (runs, imported files) for the next visit; a problem is said once. */
@@ -218,26 +255,32 @@ export class ModuleList {
       const info = module ? await describeRun(module.text) : null;
       if (ticket !== this.described) return; // another module was chosen meanwhile
       this.info = info;
+      this.hooks.described?.(info);
       if (!info) { this.details.textContent = ''; return; }
       const body = (/** @type {string} */ rows) => bodyWords(rows, this.presets);
+      const onBodies = info.bodies > 1 ? `on ${count(info.bodies)} bodies at once${info.bodySet ? ` (the body set ${info.bodySet.split(/[\\/]/).pop()})` : ''}` : `on ${body(info.shape)}`;
       const rows = info.foundBySearch ? `drives ${body(info.shape)} found by a body search`
-        : `was ${info.finetunedFrom ? 'fine-tuned' : 'evolved'} on ${body(info.shape)}`
-          + `${info.finetunedFrom ? ` from the attention of a brain trained on ${body(info.finetunedFrom)},` : ''}`;
+        : `was ${info.finetunedFrom ? 'fine-tuned' : 'evolved'} ${onBodies}`
+          + `${info.finetunedFrom ? ` from ${info.anyBody ? 'all the genes' : 'the attention'} of a brain trained on ${body(info.finetunedFrom)},` : ''}`;
       const took = info.evaluations > info.budget
         ? ` (it took ${count(info.evaluations)}: a ${info.foundBySearch ? 'search finishes its last round' : 'run finishes its last generation'})` : '';
-      this.details.textContent = `This ${info.controller} brain of ${count(info.genes)} genes ${rows} with seed ${info.seed} and a budget of `
+      const what = info.anyBody ? `brain for any body (${familyName(info.controller)}), ${count(info.genes)} genes for every body,` : `${info.controller} brain of ${count(info.genes)} genes`;
+      const walked = info.bodies > 1 ? ' (the mean over the bodies one evaluation walks)' : '';
+      this.details.textContent = `This ${what} ${rows} with seed ${info.seed} and a budget of `
         + `${count(info.budget)} evaluations${took}, in ${info.seconds}-s episodes on ${info.terrain}`
-        + (this.hushed ? `. ${HUSHED}.` : `; in training it walked ${decimal(info.fitness)} m/s.`);
+        + (this.hushed ? `. ${HUSHED}.` : `; in training it walked ${decimal(info.fitness)} m/s${walked}.`);
       const lineage = lineageNote(this.studyRuns, this.studyRunOf.get(module?.key ?? '') ?? '');
       const unseen = this.unseen.get(module?.key ?? '');
       const where = unseen === undefined ? '' : ` On ten terrains it never trained on, it averages ${decimal(unseen)} m/s, the speed beside it in the list.`;
       if (!this.hushed) this.details.textContent += lineage ? ` ${lineage}` : where;
-      this.loadButton.title = info.controller === 'attention'
-        ? `Put it on your robot: it keeps its ${this.attentionGenes} attention genes (the block every voxel shares); `
-          + 'the rest of its brain (each voxel position\'s output weights) is drawn new for your body'
-        : `An ${info.controller} module's genes belong to the voxels of its own body: it goes only onto that same body`;
+      this.loadButton.title = info.anyBody
+        ? 'Put it on your robot: all its genes, as trained (a brain for any body: every voxel works out its own weights from its place in the body)'
+        : info.controller === 'attention'
+          ? `Put it on your robot: it keeps its ${this.attentionGenes} attention genes (the block every voxel shares); `
+            + 'the rest of its brain (each voxel position\'s output weights) is drawn new for your body'
+          : `An ${info.controller} module's genes belong to the voxels of its own body: it goes only onto that same body`;
     } catch (error) {
-      if (ticket === this.described) this.details.textContent = '';
+      if (ticket === this.described) { this.details.textContent = ''; this.hooks.described?.(null); }
     }
   }
 

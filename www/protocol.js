@@ -50,7 +50,7 @@
  *                 centre y, angle (rad), in order SW, SE, NE, NW
  *   attention 16n or 0   voxel i at 16i: its attention matrix, 4 rows of 4 (row-major),
  *                 rows (queries) and columns (keys) in SENSOR_NAMES order, values -1 .. 1;
- *                 empty when the controller has no attention (phase gait, MLP, MLP-Comm)
+ *                 empty when the controller has no attention (phase gait, MLP, MLP-Comm, and theirs for any body)
  * Terrain (sent once per episode, Float64Array): polyline xs, ys in m, y up, walls included.
  */
 
@@ -154,7 +154,7 @@ export const SENSOR_NAMES = Object.freeze(['area', 'vx', 'vy', 'touch']);
 
 /**
  * @typedef {object} Brain
- * @property {string} controller  'attention' | 'mlp' | 'mlp-comm'
+ * @property {string} controller  'attention' | 'mlp' | 'mlp-comm', or one for any body: 'attention-any' | 'mlp-any' | 'mlp-comm-any'
  * @property {Float32Array} genome its parameters, for this body
  */
 
@@ -357,7 +357,7 @@ export const EvaluatorMessage = Object.freeze({
 /**
  * @typedef {object} EvolveSettings  a run's settings, the options of `vsr evolve` / `vsr finetune`
  * @property {string} shape       rows
- * @property {string} controller  'attention' | 'mlp' | 'mlp-comm' (a fine-tuning run uses its source's)
+ * @property {string} controller  'attention' | 'mlp' | 'mlp-comm' | 'attention-any' | 'mlp-any' | 'mlp-comm-any' (a fine-tuning run: its source's)
  * @property {number} seed        run seed, integer 0 .. 2^53 - 1
  * @property {number} seconds     simulated seconds per evaluation
  * @property {string} terrain     training terrain family (`hilly-1-10`) or name (`flat`)

@@ -14,6 +14,7 @@ import { downloadCsv } from './export.js';
 import { messageOf } from './kit.js';
 import { Lane, standings, walkedAt } from './race-lane.js';
 import { decimal } from './format.js';
+import { familyName } from './families.js';
 
 /** Most robots in one race. */
 export const MAX_RACERS = 4;
@@ -176,7 +177,7 @@ export class Race {
   keepGeneration(top, generation, settings, kind, mode) {
     if (generation === 0) {
       const what = { evolve: 'evolved', finetune: 'fine-tuned', scratch: 'from scratch' }[mode] ?? mode;
-      this.run = { bests: [], shape: settings.shape, controller: kind, what: `${what} ${kind} (seed ${settings.seed})`, mode };
+      this.run = { bests: [], shape: settings.shape, controller: kind, what: `${what} ${familyName(kind)} (seed ${settings.seed})`, mode };
       this.generation.replaceChildren();
     }
     if (!top || !Number.isFinite(top.fitness)) return;

@@ -6,6 +6,7 @@
  * robot.js only decides when to say them.
  */
 import { plain } from './message.js';
+import { familyName } from './families.js';
 
 /** @typedef {import('./brain.js').Brain} Brain */
 
@@ -59,7 +60,7 @@ export function showWithSpeeds(el, text) {
  * is the last whole one. @param {Brain | null} brain @param {import('./core.js').ShapeCheck} check @param {string} walkingRows
  */
 export function driverWords(brain, check, walkingRows) {
-  const drives = brain ? `Driven by: ${brain.label} (${brain.controller}, ${brain.genome.length} genes).`
+  const drives = brain ? `Driven by: ${brain.label} (${familyName(brain.controller)}, ${brain.genome.length} genes).`
     : 'Driven by: the phase gait (no brain yet: evolve one, or load a module).';
   const yours = check.voxels > 0 ? `Your drawing (${check.voxels} voxels) is not a robot yet` : 'Your drawing is empty';
   const drawn = !check.ok && walkingRows ? ` ${yours}, so ${walkingWords(brain, walkingRows)}.` : '';

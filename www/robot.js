@@ -15,6 +15,7 @@ import { byId } from './dom.js';
 import { showGeneCount } from './gene-count.js';
 import { messageOf } from './kit.js';
 import { applyState } from './robot-state.js';
+import { familyName } from './families.js';
 import { checkWords, driverWords, showWithSpeeds, walkingWords } from './robot-words.js';
 
 /** @typedef {import('./brain.js').Brain} Brain */
@@ -33,6 +34,7 @@ const UNCHECKED = { ok: false, message: '', voxels: 0, pieces: [], params: [] };
  * @property {import('./speed-note.js').SpeedNote} speedNote
  * @property {import('./run-panel.js').RunPanel} runs
  * @property {() => void} keep  the state changed: keep it (and its link) soon
+ * @property {(kind: string) => void} [familyShown]  the family menu shows `kind` (chosen, or the brain's)
  */
 
 export class Robot {
@@ -114,6 +116,7 @@ export class Robot {
   updateParams() {
     showGeneCount(byId(this.doc, 'param-count'), this.check, this.controllerSelect.value, this.parts.defaults.attentionGenes,
       walkingWords(this.brain, this.walkingRows));
+    this.parts.familyShown?.(this.controllerSelect.value);
     showWithSpeeds(byId(this.doc, 'driver'), driverWords(this.brain, this.check, this.walkingRows));
   }
 
@@ -224,8 +227,9 @@ export class Robot {
       this.brain = null;
       this.showBrain();
       this.shelved = brain;
-      this.parts.messages.show(`The ${brain.controller} brain is set aside (choose ${brain.controller} again to get it back); `
-        + `the phase gait drives the robot until you evolve a ${kind} controller.`, 'note');
+      const [was, now] = [familyName(brain.controller), familyName(kind)];
+      this.parts.messages.show(`The ${was} brain is set aside (choose “${was}” again to get it back); `
+        + `the phase gait drives the robot until you evolve a ${now} controller.`, 'note');
     } else if (!brain && shelved && shelved.controller === kind && shelved.rows === this.parts.drawing.rows()) {
       this.brain = shelved;
       this.showBrain();

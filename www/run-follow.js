@@ -10,6 +10,7 @@ import { bestSoFar, runResult } from './brain.js';
 import { messageOf } from './kit.js';
 import { shortLabel } from './module-names.js';
 import { decimal } from './format.js';
+import { familyName } from './families.js';
 
 /** Least wall time between two switches of the viewer to a newer best (ms). */
 const FOLLOW_INTERVAL_MS = 3000;
@@ -80,9 +81,10 @@ export class RunFollower {
       return;
     }
     const what = { evolve: 'evolved', finetune: 'fine-tuned', scratch: 'from scratch' }[run.mode];
-    const label = `${what} ${best.controller}, seed ${run.settings.seed}: ${decimal(best.fitness)} m/s in training`;
+    const family = familyName(best.controller);
+    const label = `${what} ${family}, seed ${run.settings.seed}: ${decimal(best.fitness)} m/s in training`;
     const module = { key: `run:${run.mode}:${run.settings.seed}:${best.controller}:${run.settings.shape}`, label: `${label} (this page)`, text: run.runFile,
-      short: shortLabel(`${what} ${best.controller}, seed ${run.settings.seed}`, best.fitness, ' in training') }; // not the unseen terrains' mean of the study's modules
+      short: shortLabel(`${what} ${family}, seed ${run.settings.seed}`, best.fitness, ' in training') }; // not the unseen terrains' mean of the study's modules
     this.modules.add(module, run.mode !== 'scratch') // the comparison is listed; the fine-tuned module stays chosen
       .catch((error) => robot.error(`the finished run could not be listed: ${messageOf(error)}`));
     const peak = Number.isFinite(run.peak) ? `; its best single evaluation on the way: ${decimal(run.peak)} m/s` : '';

@@ -15,14 +15,15 @@ import { FromCoordinator, ToCoordinator } from './protocol.js';
 import { RunProgress, TABLE_HEADER } from './run-progress.js';
 import { voxelCount } from './run-estimate.js';
 import { RunSettings } from './run-settings.js';
-import { FINETUNE_WORDS } from './brain.js';
 
 /**
  * @typedef {object} RunHooks
  * @property {() => {rows: string, ok: boolean}} body   the drawing now
  * @property {() => string} controller                   the family chosen for Evolve
  * @property {() => import('./brain.js').Source | null} source  the run file of the module on the robot, if any
+ * @property {() => string} sourceKind                  the family of the brain on the robot (a fine-tune keeps it)
  * @property {() => string} whyNoFinetune               why Fine-tune is off when there is none
+ * @property {() => string} finetuneWords               what Fine-tune does to the brain on the robot
  * @property {(genome: Float32Array, fitness: number, settings: import('./protocol.js').EvolveSettings, kind: string) => void} best
  *   a new best seen during a run (with "walk the best so far")
  * @property {(run: FinishedRun) => void} finished     a run ended with a run file
@@ -82,6 +83,8 @@ export class RunPanel {
     this.started = false;
     /** Start a from-scratch run when this fine-tuning run finishes. */
     this.compareNext = false;
+    /** The family of the latest fine-tune (its source's): its from-scratch comparison evolves the same family. */
+    this.finetuneKind = 'attention';
     /** A download asked for while running, waiting for the coordinator's run file. */
     this.exportWanted = false;
     this.wire();
@@ -104,7 +107,7 @@ export class RunPanel {
     const first = this.progress.table[0];
     if (!first || !this.runSettings) return;
     const { controller, seed } = this.runSettings;
-    const name = first[0] === 'evolve' ? `evolved-${controller}-seed${seed}` : `finetuned-attention-seed${seed}`;
+    const name = first[0] === 'evolve' ? `evolved-${controller}-seed${seed}` : `finetuned-${controller}-seed${seed}`;
     downloadCsv(`${name}-generations.csv`, TABLE_HEADER, this.progress.table);
   }
 
@@ -149,12 +152,13 @@ export class RunPanel {
     if (this.coordinator || this.starting) return;
     const source = mode === 'finetune' ? this.hooks.source() : null;
     if (mode === 'finetune' && !source) { this.refuse('load an attention module onto your robot first (Load onto my robot)', 'run-start'); return; }
+    if (mode === 'finetune') this.finetuneKind = this.hooks.sourceKind(); // attention, or attention for any body (its whole genome the start)
     this.starting = true;
     this.update();
     let read;
     let plan;
     try {
-      read = await this.readSettings(mode === 'evolve' ? this.hooks.controller() : 'attention');
+      read = await this.readSettings(mode === 'evolve' ? this.hooks.controller() : this.finetuneKind);
       plan = 'error' in read ? null : await planWords(read.settings.population, read.settings.budget);
     } catch (error) {
       read = { error: `the settings could not be checked: ${messageOf(error)}` };
@@ -237,7 +241,7 @@ export class RunPanel {
 
   /** @param {import('./protocol.js').EvolveSettings} settings */
   kind(settings) {
-    return this.mode === 'evolve' ? settings.controller : 'attention';
+    return settings.controller; // a fine-tune's is its source's family, and so is its comparison's
   }
 
   /** @param {{stopped: boolean, runFile: string | null}} msg @param {import('./protocol.js').EvolveSettings} settings */
@@ -289,7 +293,7 @@ export class RunPanel {
     const off = running || this.starting || !body.ok || this.form.invalid;
     b.evolve.disabled = off;
     b.finetune.disabled = off || this.hooks.source() === null;
-    b.finetune.title = b.finetune.disabled && !running && this.hooks.source() === null ? this.hooks.whyNoFinetune() : FINETUNE_WORDS;
+    b.finetune.title = b.finetune.disabled && !running && this.hooks.source() === null ? this.hooks.whyNoFinetune() : this.hooks.finetuneWords();
     this.form.lock(running);
     b.pause.disabled = !running;
     b.step.disabled = !running || !this.paused;

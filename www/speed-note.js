@@ -9,6 +9,7 @@
 import { checkTerrain } from './core.js';
 import { messageOf } from './kit.js';
 import { decimal } from './format.js';
+import { hasAttention, isAnyBody } from './families.js';
 
 export class SpeedNote {
   /** @param {HTMLElement} el @param {import('./measure.js').Measurer} measurer */
@@ -58,6 +59,11 @@ export class SpeedNote {
   async words(brain, speed, terrain, seconds) {
     // Measured at once, on a walk of its own: a freeze or an edit of the walk on screen changes that walk's figures, not this.
     const here = `Speed here: ${decimal(speed)} m/s over a ${seconds}-s episode on ${terrain} (measured at once, on a walk with no freeze or edit).`;
+    if (brain.oneShot && isAnyBody(brain.controller)) {
+      return `${here} That is its speed on your body with no training for it: a brain for any body keeps all its genes on every body `
+        + '(each voxel works out its own weights from its place in the body, such as which neighbours it has), so nothing was drawn at random for yours. '
+        + (hasAttention(brain.controller) ? 'Fine-tune trains it further for this body, its attention kept.' : 'Evolve trains a new brain for this body.');
+    }
     if (brain.oneShot) {
       return `${here} That is its one-shot speed, before any training for this body. Its attention fits any body, but the `
         + 'weights that turn each voxel\'s readings into a squeeze were made for the old body\'s voxels, so your robot\'s are '

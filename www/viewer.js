@@ -12,6 +12,7 @@ import { AttentionPanel } from './attention.js';
 import { AttentionReader } from './attention-reader.js';
 import { checkTerrain } from './core.js';
 import { byId } from './dom.js';
+import { familyName } from './families.js';
 import { FreezeControl } from './freeze.js';
 import { spawn } from './kit.js';
 import { FromWorker, ToWorker, frameIsConsistent } from './protocol.js';
@@ -161,7 +162,7 @@ export class Viewer {
         this.reader.setEpisode(msg.voxels, msg.attentionTerms);
         this.freeze.loaded(msg.controller);
         this.readout.reset(msg.params, msg.carried);
-        this.status.textContent = `${msg.voxels} voxels, ${msg.controller}`;
+        this.status.textContent = `${msg.voxels} voxels, ${familyName(msg.controller)}`;
         for (const input of Object.values(this.gait)) input.disabled = msg.params.brain !== null;
         break;
       case FromWorker.FRAME:

@@ -8,6 +8,7 @@
 import init, { Episode, attentionTerms, defaults, start as installPanicHook } from './pkg/vsr.js';
 import { loadWasm, messageOf, typeText, workerScope } from './kit.js';
 import { FromWorker, ToWorker } from './protocol.js';
+import { hasAttention } from './families.js';
 
 /** Longest run of stepping before yielding to the message queue (ms). */
 const SLICE_BUDGET_MS = 8;
@@ -106,7 +107,7 @@ function load(asked) {
   const terrainXs = fresh.terrainXs();
   const terrainYs = fresh.terrainYs();
   const cells = fresh.voxelCells();
-  const terms = next.brain?.controller === 'attention' ? Array.from(attentionTerms(next.brain.genome)) : null;
+  const terms = next.brain && hasAttention(next.brain.controller) ? Array.from(attentionTerms(next.brain.genome)) : null;
   scope.postMessage({
     type: FromWorker.LOADED, params, carried, voxels: fresh.voxelCount, controller: fresh.controller,
     cells, terrainXs, terrainYs, attentionTerms: terms,

@@ -16,7 +16,8 @@ import { messageOf, spawn } from '../kit.js';
 import { plain } from '../message.js';
 import { FromCodesign, ToCodesign } from './protocol.js';
 import { Gallery, paintLegend } from './gallery.js';
-import { BOX_WORDS, BRAIN_WORDS, planSearch, QUICK } from './plan.js';
+import { BOX_WORDS, planSearch, QUICK, searchWords } from './plan.js';
+import { familyName } from '../families.js';
 import { count } from '../format.js';
 import { bestEntry, exportName, summaryWords } from './summary.js';
 import { voxelCount } from '../run-estimate.js';
@@ -45,7 +46,7 @@ export class CodesignPanel {
   constructor(doc, hooks) {
     this.hooks = hooks;
     this.brain = byId(doc, 'codesign-brain', HTMLSelectElement);
-    for (const option of this.brain.options) option.textContent = BRAIN_WORDS[/** @type {keyof typeof BRAIN_WORDS} */ (option.value)].menu;
+    this.moduleKind('');
     this.from = byId(doc, 'codesign-from', HTMLSelectElement);
     this.from.querySelector('option[value="box"]')?.replaceChildren(BOX_WORDS);
     for (const n of doc.querySelectorAll('.codesign-batch')) n.textContent = String(QUICK.batch); // the legend's round, as planned
@@ -95,6 +96,17 @@ export class CodesignPanel {
 
   setQuick() { [this.budget.value, this.seconds.value] = [String(QUICK.budget), String(QUICK.seconds)]; }
 
+  /**
+   * The module chosen under “3 · Give it a brain” is of the family `kind` ('' when none): the
+   * menu says what each brain keeps of it (a brain for any body kept whole: bodies only).
+   * @param {string} kind
+   */
+  moduleKind(kind) {
+    for (const option of this.brain.options) {
+      option.textContent = searchWords(/** @type {'frozen' | 'finetune' | 'scratch'} */ (option.value), kind).menu;
+    }
+  }
+
   wire() {
     const b = this.buttons;
     b.start.addEventListener('click', () => this.start());
@@ -138,11 +150,11 @@ export class CodesignPanel {
     this.runFile = null;
     this.chosen = null;
     this.bests = { firstCell: null, lastCell: null, first: null, last: null };
-    const { settings, module, workers } = plan;
+    const { settings, module, kind, workers } = plan;
     this.settings = settings;
     const from = { box: `from ${BOX_WORDS}`, drawing: 'from your drawing', module: 'from the module\'s own body' }[this.from.value] ?? '';
-    this.what = `${settings.brain === 'scratch' ? `${settings.controller} from scratch`
-      : `${module?.label.replace(/ \([^()]*\)$/, '')}, ${BRAIN_WORDS[settings.brain].short}`}, bodies ${from}`;
+    this.what = `${settings.brain === 'scratch' ? `${familyName(settings.controller ?? '')} from scratch`
+      : `${module?.label.replace(/ \([^()]*\)$/, '')}, ${searchWords(settings.brain, kind).short}`}, bodies ${from}`;
     const coordinator = spawn('codesign/coordinator.js', (msg) => this.onMessage(coordinator, msg),
       (text) => this.end(coordinator, `the body search stopped: ${text}`, 'failed'));
     this.coordinator = coordinator;

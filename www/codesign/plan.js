@@ -6,6 +6,7 @@
 import { describeRun } from '../core.js';
 import { plain } from '../message.js';
 import { size } from '../format.js';
+import { hasAttention, isAnyBody } from '../families.js';
 
 /** The quick body search: finishes in about a minute in Chromium on 2 workers (docs/playground.md). */
 export const QUICK = Object.freeze({ budget: 1000, seconds: 10, batch: 20 });
@@ -24,11 +25,27 @@ export const BRAIN_WORDS = Object.freeze({
 });
 
 /**
+ * The search's brains in words for a module of the family `kind` (the core's rule,
+ * `CodesignConfig::frozen_shared`): a brain for any body has no gene of its own per voxel, so
+ * kept it is kept whole and only the bodies evolve; as a start, the genes its voxels share
+ * evolve, its attention (if it has one) kept. Other modules: {@link BRAIN_WORDS}.
+ * @param {'frozen' | 'finetune' | 'scratch'} brain @param {string} kind the module's family ('' when none is known)
+ * @returns {{menu: string, short: string}}
+ */
+export function searchWords(brain, kind) {
+  if (brain === 'scratch' || !isAnyBody(kind)) return BRAIN_WORDS[brain];
+  if (brain === 'frozen') return { menu: 'the chosen module, kept whole: only the bodies evolve', short: 'kept whole (only the bodies evolve)' };
+  return hasAttention(kind)
+    ? { menu: 'the chosen module as a start, its attention kept, its other genes evolving', short: 'attention kept, its other genes evolving' }
+    : { menu: 'the chosen module as a start, every gene evolving', short: 'every gene evolving' };
+}
+
+/**
  * The search the panel's form describes, or what is wrong, in words.
  * @param {{brain: string, from: string, budget: string, seconds: string}} form  the panel's fields
  * @param {import('./panel.js').CodesignHooks} hooks
  * @returns {Promise<{settings: import('./protocol.js').CodesignSettings, module: import('../modules.js').Module | null,
- *   workers: number} | {error: string}>}
+ *   kind: string, workers: number} | {error: string}>} `kind`: the module's family ('' without one)
  */
 export async function planSearch(form, hooks) {
   const brain = /** @type {'frozen' | 'finetune' | 'scratch'} */ (form.brain);
@@ -54,11 +71,12 @@ export async function planSearch(form, hooks) {
   const chosen = brain !== 'scratch' || from === 'module' ? await hooks.module() : null;
   if (!chosen && brain !== 'scratch') return { error: 'choose a module first (Transplant a module, under 3 · Give it a brain): its brain is the one the bodies are searched for' };
   if (!chosen && from === 'module') return { error: 'choose a module first (Transplant a module, under 3 · Give it a brain): the search starts from its body' };
-  if (chosen && brain === 'scratch' && from === 'module') start = (await describeRun(chosen.text)).shape; // a new brain on the module's body
+  const info = chosen ? await describeRun(chosen.text) : null;
+  if (info && brain === 'scratch' && from === 'module') start = info.shape; // a new brain on the module's body
   const module = brain === 'scratch' ? null : chosen;
   /** @type {import('./protocol.js').CodesignSettings} */
   const settings = { brain, seed, seconds, terrain: run.terrain.trim(), budget, batch: QUICK.batch };
   if (brain === 'scratch') settings.controller = hooks.controller();
   if (start !== undefined) settings.start = start;
-  return { settings, module, workers: Number(run.workers) || 1 };
+  return { settings, module, kind: module && info ? info.controller : '', workers: Number(run.workers) || 1 };
 }
