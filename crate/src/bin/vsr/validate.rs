@@ -92,7 +92,7 @@ fn on_bodies(args: &Args, best: &Best, path: &std::path::Path, seconds: f64) -> 
             .collect::<Result<Vec<_>>>()
     })?;
     let validation = BodiesValidation::new(&bodies, args.set, seconds, per_body);
-    if written(&args, &validation)? {
+    if written(args, &validation)? {
         return Ok(());
     }
     for b in &validation.per_body {
