@@ -42,6 +42,8 @@ test('the 50-minute lesson: minute by minute in the page and in docs/teaching.md
     await qr.locator('svg path').waitFor(); // drawn once uqr is here (fetched when the teacher's box opens, not at start)
     assert.ok(await qr.locator('svg path').count() === 1);
     assert.match(String(await byTestId(page, 'worksheet-address-note').textContent()), /opens only on this computer/, 'served at 127.0.0.1: said');
+    assert.equal(await sheet.locator('.sheet-plan').count(), 0, 'one plan on the sheet: not the two lessons\' plan too');
+    assert.ok(!String(await sheet.textContent()).includes('if you want one'), 'one plan on the sheet');
     await byTestId(page, 'worksheet-address').fill('https://school.example/robots/');
     await page.waitForFunction(() => document.querySelector('[data-testid="lesson"] [data-testid="qr"]')?.getAttribute('data-link') === 'https://school.example/robots/');
     assert.equal(String(await byTestId(page, 'worksheet-address-note').textContent()), '', 'the class\'s address: nothing to warn of');

@@ -284,8 +284,7 @@ export class Classroom {
     thead.append(head);
     table.append(thead, body);
     sheet.append(table, make(doc, 'p', 'sheet-how', 'Chapters 8 to 10 (a transplanted brain, a search for bodies, your own robot) are for another lesson or for home: '
-      + 'the worksheet has every chapter\'s link. '), make(doc, 'p', 'sheet-plan'));
-    sheet.lastElementChild?.append(...lessonPlanNodes(doc));
+      + 'the worksheet has every chapter\'s link.'));
     sheet.scrollIntoView({ block: 'start' });
     return sheet;
   }
