@@ -44,6 +44,9 @@ test('the 50-minute lesson: minute by minute in the page and in docs/teaching.md
     assert.match(String(await byTestId(page, 'worksheet-address-note').textContent()), /opens only on this computer/, 'served at 127.0.0.1: said');
     assert.equal(await sheet.locator('.sheet-plan').count(), 0, 'one plan on the sheet: not the two lessons\' plan too');
     assert.ok(!String(await sheet.textContent()).includes('if you want one'), 'one plan on the sheet');
+    await qr.locator('[data-testid="qr-large"]').click();
+    assert.match(String(await byTestId(page, 'qr-large-note').textContent()), /^This address opens only on this computer/, 'the large view says it too');
+    await page.keyboard.press('Escape');
     await byTestId(page, 'worksheet-address').fill('https://school.example/robots/');
     await page.waitForFunction(() => document.querySelector('[data-testid="lesson"] [data-testid="qr"]')?.getAttribute('data-link') === 'https://school.example/robots/');
     assert.equal(String(await byTestId(page, 'worksheet-address-note').textContent()), '', 'the class\'s address: nothing to warn of');
@@ -67,6 +70,7 @@ test('a challenge link: its QR code large for the projector, a warning on this c
   assert.equal(await qr.getAttribute('data-link'), link);
   await qr.locator('[data-testid="qr-large"]').click();
   const large = byTestId(page, 'qr-large-view');
+  assert.match(String(await byTestId(page, 'qr-large-note').textContent()), /opens only on this computer/, 'the large view warns as the small one');
   const box = await large.locator('svg').boundingBox();
   assert.ok(box && box.width >= 500, `large on a projector: ${box?.width} px`);
   await page.screenshot({ path: path.join(SCREENSHOTS, 'challenge-qr-large.png') });

@@ -8,6 +8,8 @@
  * teacher's boxes show one: {@link loadQr} when one opens), not with the page's first screen.
  */
 
+import { ONLY_HERE, onlyHere } from './sheet-address.js';
+
 const SVG = 'http://www.w3.org/2000/svg';
 
 /** @typedef {typeof import('../vendor/uqr.js').encode} Encode */
@@ -73,7 +75,10 @@ export function qrBox(doc, link, what) {
   return box;
 }
 
-/** The QR code over the whole screen, the link in words under it. @param {Document} doc @param {string} link @param {string} what */
+/**
+ * The QR code over the whole screen, the link in words under it, and a warning when the link
+ * opens only on this computer (as the small view's note says it). @param {Document} doc @param {string} link @param {string} what
+ */
 function showLarge(doc, link, what) {
   doc.querySelector('.qr-large')?.remove();
   const view = doc.createElement('div');
@@ -90,7 +95,15 @@ function showLarge(doc, link, what) {
   close.type = 'button';
   close.textContent = 'Close';
   const side = Math.max(160, Math.min(innerWidth, innerHeight) - 220);
-  view.append(title, qrSvg(doc, link, side), words, close);
+  view.append(title, qrSvg(doc, link, side), words);
+  if (onlyHere(link)) {
+    const note = doc.createElement('p');
+    note.className = 'qr-large-note';
+    note.dataset.testid = 'qr-large-note';
+    note.textContent = `${ONLY_HERE}: your students cannot open it.`;
+    view.append(note);
+  }
+  view.append(close);
   const end = () => { view.remove(); doc.removeEventListener('keydown', onKey); };
   const onKey = (/** @type {KeyboardEvent} */ e) => { if (e.key === 'Escape') end(); };
   close.addEventListener('click', end);

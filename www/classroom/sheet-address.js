@@ -29,6 +29,9 @@ export function onlyHere(href) {
   return url.protocol === 'file:' || /^(localhost|127(\.\d+){3}|\[::1\]|0\.0\.0\.0)$/.test(url.hostname);
 }
 
+/** What a note says of an address {@link onlyHere}: the sheet's field, the large QR code (qr.js). */
+export const ONLY_HERE = 'This address opens only on this computer';
+
 /**
  * The field and its note, for the sheet's bar: `changed` gets every valid address typed (an
  * address that is not one is said under the field, and the links stay as they were).
@@ -52,7 +55,7 @@ export function addressField(doc, base, changed) {
   note.dataset.testid = 'worksheet-address-note';
   const say = (/** @type {string} */ href) => {
     note.textContent = onlyHere(href)
-      ? 'This address opens only on this computer: type the address your students open, then Print.'
+      ? `${ONLY_HERE}: type the address your students open, then Print.`
       : '';
   };
   input.addEventListener('input', () => {
