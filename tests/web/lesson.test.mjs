@@ -44,6 +44,9 @@ test('the 50-minute lesson: minute by minute in the page and in docs/teaching.md
     assert.match(String(await byTestId(page, 'worksheet-address-note').textContent()), /opens only on this computer/, 'served at 127.0.0.1: said');
     assert.equal(await sheet.locator('.sheet-plan').count(), 0, 'one plan on the sheet: not the two lessons\' plan too');
     assert.ok(!String(await sheet.textContent()).includes('if you want one'), 'one plan on the sheet');
+    const edges = await page.evaluate(() => [...document.querySelectorAll('[data-testid="lesson"] .sheet-address, [data-testid="lesson"] .sheet-address *')]
+      .map((e) => { const b = e.getBoundingClientRect(); return [b.left, b.right]; }));
+    assert.ok(edges.length > 0 && edges.every(([l, r]) => l >= 0 && r <= width), `the address, its field and note are not clipped at ${width} px: ${JSON.stringify(edges)}`);
     await qr.locator('[data-testid="qr-large"]').click();
     assert.match(String(await byTestId(page, 'qr-large-note').textContent()), /^This address opens only on this computer/, 'the large view says it too');
     await page.keyboard.press('Escape');
