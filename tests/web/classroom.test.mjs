@@ -282,6 +282,8 @@ test('simple words: formulas and statistics hidden, kept after a reload; the new
   for (const expert of ['#engine-rate', '#run-workers']) assert.equal(await page.locator(expert).isVisible(), false, `${expert} hidden in simple words`);
   // What the page writes as it goes: a drawing's code gone (the status, the module's details), a terrain's name and a glossary word explained where they stand.
   await page.waitForFunction(() => /rows 1111-1111-1001/.test(document.getElementById('module-details')?.textContent ?? ''));
+  // The module's training terrain is written (and marked) once its run file has loaded: wait for it, on a busy machine too.
+  await page.waitForFunction(() => [...document.querySelectorAll('#robot-speed [data-explain], #speed-note [data-explain]')].some((e) => e.textContent === 'hilly-1-10'));
   const marked = await page.evaluate(() => ({
     hidden: [...document.querySelectorAll('#shape-status .simpler.expert, #module-details .simpler.expert')].map((e) => [e.textContent, getComputedStyle(e).display]),
     explained: [...document.querySelectorAll('#robot-speed [data-explain], #speed-note [data-explain], #param-count a.term[data-explain]')]
