@@ -96,7 +96,8 @@ test('once every run of the claim\'s test is in, the page gives its answer on ea
   await page.route('**/report-noninferiority/intervals-noninferiority-unseen.svg', (route) => route.fulfill({
     body: '<svg xmlns="http://www.w3.org/2000/svg" width="80" height="50"><text y="20">intervals</text></svg>', contentType: 'image/svg+xml' }));
   await page.reload();
-  await byTestId(page, 'results-plain').scrollIntoViewIfNeeded(); // the findings read the claim's file once in sight
+  // The findings read the claim's file once it is in sight: scroll to the claim itself (the list above it may still be growing).
+  await byTestId(page, 'claim').scrollIntoViewIfNeeded();
   await page.waitForFunction(() => /On the comb/.test(document.querySelector('[data-testid="claim"]')?.textContent ?? ''));
   const said = String(await page.locator('[data-testid="claim"]').textContent());
   assert.match(said, /On the biped \(biped-4x3\), attention is not slower than mlp-comm by 0\.5 m\/s or more, and is faster \(median speeds 3\.90 against 3\.40 m\/s, the middle ones of this test's own runs; the runs allow a difference between −0\.12 and \+1\.03 m\/s, with 95% confidence\)\./);
