@@ -300,7 +300,13 @@ test('simple words: formulas and statistics hidden, kept after a reload; the new
     assert.ok(expert.some((l) => l.text === words), `the expert's “${words}”`);
   }
   assert.equal(await page.locator('#shape-status').innerText(), '10 voxels · 1111-1111-1001', 'the code back');
-  assert.equal(await page.locator('#robot-speed [data-explain]').first().evaluate((e) => getComputedStyle(e, '::after').content), 'none', 'no explanation for the expert');
+  // The speed line is written again every moment: find it and read its style in one turn of the page (a located span may be gone by the time it is read).
+  const explained = () => page.evaluate(() => {
+    const e = document.querySelector('#robot-speed [data-explain]');
+    return e ? getComputedStyle(e, '::after').content : 'no explained word';
+  });
+  await page.waitForFunction(() => document.querySelector('#robot-speed [data-explain]') !== null);
+  assert.equal(await explained(), 'none', 'no explanation for the expert');
   await byTestId(page, 'simple-words').check();
 
   // The glossary explains the issue's words, and a word in the page links to its entry.
