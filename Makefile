@@ -109,9 +109,11 @@ test-slurm:
 test-wasm:
 	wasm-pack test --node
 
-## The page in headless Chromium (needs `make wasm`).
+## The page in headless Chromium (needs `make wasm`). A test still going after 10 minutes fails
+## (none needs half of that on this machine), and the runner ends once every file has reported,
+## so a stray server or browser never holds CI until its time runs out.
 test-web:
-	node --test tests/web/
+	node --test --test-timeout=600000 --test-force-exit tests/web/
 
 ## Opt-in, not part of `make test`: the page in Debian firefox-esr (puppeteer-core) and
 ## WebKitGTK (WebKitWebDriver, MiniBrowser under xvfb-run) walks, evolves as `vsr evolve` and

@@ -28,12 +28,36 @@ export const CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--
  */
 export async function start() {
   const served = await serve({ port: 0 });
-  const browser = await chromium.launch({ executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium', args: CHROMIUM_ARGS });
+  let browser;
+  try {
+    browser = await launchChromium();
+  } catch (error) {
+    served.server.close(); // an open server would keep this test file's process alive forever
+    throw error;
+  }
   return {
     url: served.url,
     browser,
     close: async () => { await browser.close(); served.server.close(); },
   };
+}
+
+/**
+ * Headless Debian Chromium. A launch that crashes before the browser answers (seen once on a
+ * fresh CI machine: SIGSEGV at start, before any page) is tried again, up to three times, and
+ * said on stderr; a browser that never starts still fails the test.
+ * @returns {Promise<import('playwright-core').Browser>}
+ */
+export async function launchChromium() {
+  for (let attempt = 1; ; attempt++) {
+    try {
+      return await chromium.launch({ executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium', args: CHROMIUM_ARGS });
+    } catch (error) {
+      if (attempt >= 3) throw error;
+      const first = String(error instanceof Error ? error.message : error).split('\n')[0];
+      process.stderr.write(`harness: Chromium did not start (attempt ${attempt} of 3: ${first}); trying again\n`);
+    }
+  }
 }
 
 /**

@@ -25,9 +25,8 @@ import { mkdtemp, readFile, rm } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { chromium } from 'playwright-core';
 import { buildSite } from '../../scripts/site.mjs';
-import { CHROMIUM_ARGS, ROOT, byTestId, clickCells, figure, openBare, screenshot, waitForFigure, waitForText } from './harness.mjs';
+import { ROOT, byTestId, launchChromium, clickCells, figure, openBare, screenshot, waitForFigure, waitForText } from './harness.mjs';
 
 /** axe-core's script, injected into the page (an npm dev dependency). */
 const AXE = readFileSync(path.join(ROOT, 'node_modules', 'axe-core', 'axe.min.js'), 'utf8');
@@ -61,7 +60,7 @@ before(async () => {
   const served = /** @type {{child: import('node:child_process').ChildProcess, url: string}} */ (await pythonServer(folder));
   server = served.child;
   site = `${served.url}site/`;
-  browser = await chromium.launch({ executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium', args: CHROMIUM_ARGS });
+  browser = await launchChromium();
 });
 
 after(async () => {
