@@ -21,12 +21,12 @@ const ROOT = path.resolve(HERE, '..');
 const WWW = path.join(ROOT, 'www');
 /** The element, the one entry point besides the wasm core's JS API. */
 const ELEMENT = 'embed/vsr-robot.js';
-/** Relative imports, and workers started by name through kit.js's `spawn('worker.js', ...)`. */
+/** Relative imports, and workers started by their path in www/ through workers/kit.js's `spawn('workers/simulation-worker.js', ...)`. */
 const IMPORT = /(?:from|import)\s*\(?\s*'(\.{1,2}\/[^']+)'|spawn\(\s*'([^']+)'/g;
 
 /**
  * The www/ files `entry` needs: itself and, transitively, what it imports or starts as a
- * worker (kit.js starts workers next to itself). The wasm core (pkg/) is listed separately.
+ * worker (kit.js names a worker by its path in www/). The wasm core (pkg/) is listed separately.
  * @param {string} entry a path relative to www/
  * @returns {Promise<string[]>} paths relative to www/, sorted
  */

@@ -1,43 +1,43 @@
 // @ts-check
 /**
- * Page wiring: makes the page's parts and connects them. The robot (robot.js: the drawn body
+ * Page wiring: makes the page's parts and connects them. The robot (robot/robot.js: the drawn body
  * and the brain that drives it) is shown by the viewer, edited by the editor and its controls
- * (draw-controls.js), evolved or fine-tuned by the run panel (whose bests it follows,
- * run-follow.js), given modules by the module list, raced side by side, kept across reloads
- * and shared as a link (keeper.js), and set up by the guided tour and the study panel; bodies
+ * (robot/draw-controls.js), evolved or fine-tuned by the run panel (whose bests it follows,
+ * robot/run-follow.js), given modules by the module list, raced side by side, kept across reloads
+ * and shared as a link (keep/keeper.js), and set up by the guided tour and the study panel; bodies
  * are searched around a brain by the body-search panel (codesign/).
  */
-import { finetuneWords, lostInLink, whyNoFinetune } from './brain.js';
-import { ready } from './core.js';
-import { rowsField, wireDrawControls } from './draw-controls.js';
-import { byId, whenNear } from './dom.js';
-import { Drawing } from './drawing.js';
-import { Editor } from './editor.js';
-import { Keeper } from './keeper.js';
-import { messageOf } from './kit.js';
-import { Measurer } from './measure.js';
-import { MessageBox } from './message.js';
+import { finetuneWords, lostInLink, whyNoFinetune } from './robot/brain.js';
+import { ready } from './workers/core.js';
+import { rowsField, wireDrawControls } from './robot/draw-controls.js';
+import { byId, whenNear } from './shared/dom.js';
+import { Drawing } from './robot/drawing.js';
+import { Editor } from './robot/editor.js';
+import { Keeper } from './keep/keeper.js';
+import { messageOf } from './workers/kit.js';
+import { Measurer } from './robot/measure.js';
+import { MessageBox } from './shared/message.js';
 import { Challenge } from './classroom/challenge.js';
 import { Classroom } from './classroom/classroom.js';
 import { Lab } from './classroom/lab.js';
-import { simplify, wireWords } from './classroom/simple-words.js';
+import { simplify, wireWords } from './shared/simple-words.js';
 import { CodesignPanel } from './codesign/panel.js';
 import { SearchEstimate } from './codesign/estimate.js';
 import { BOX, searchWords } from './codesign/plan.js';
-import { ModuleList, NOT_YET } from './modules.js';
-import { Race } from './race.js';
-import { Robot } from './robot.js';
-import { pageState } from './robot-state.js';
-import { RunFollower } from './run-follow.js';
-import { RunEstimate, estimateSeconds, voxelCount } from './run-estimate.js';
-import { RunPanel } from './run-panel.js';
-import { SpeedNote } from './speed-note.js';
+import { ModuleList, NOT_YET } from './modules/modules.js';
+import { Race } from './viewer/race.js';
+import { Robot } from './robot/robot.js';
+import { pageState } from './robot/state.js';
+import { RunFollower } from './robot/run-follow.js';
+import { RunEstimate, estimateSeconds, voxelCount } from './runs/estimate.js';
+import { RunPanel } from './runs/panel.js';
+import { SpeedNote } from './robot/speed-note.js';
 import { fillResults } from './tour/results.js';
 import { StudyPanel } from './tour/study.js';
 import { Tour } from './tour/tour.js';
-import { Viewer } from './viewer.js';
-import { editWalking } from './walking-edit.js';
-import { familyName, hasAttention, isAnyBody } from './families.js';
+import { Viewer } from './viewer/viewer.js';
+import { editWalking } from './robot/walking-edit.js';
+import { familyName, hasAttention, isAnyBody } from './shared/families.js';
 
 const messages = new MessageBox(byId(document, 'message'), byId(document, 'shape-message'));
 const defaults = await ready.catch((error) => {

@@ -11,7 +11,7 @@
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
 import { byTestId, figure, openPage, screenshot, start, waitForFigure, waitForText } from './harness.mjs';
-import { verdict } from '../../www/freeze.js';
+import { verdict } from '../../www/viewer/freeze.js';
 
 const ATTENTION = 'pretrained/biped-4x3-attention.json';
 const NAMES = ['area', 'vx', 'vy', 'touch'];

@@ -46,7 +46,7 @@ after(async () => {
  * text, whether evaluation worker 2 crashes at the start (a new one must re-run its job)
  */
 async function searchInPage([settings, workers, module, crash]) {
-  const { FromCodesign, ToCodesign } = await import(new URL('codesign/protocol.js', location.href).href);
+  const { FromCodesign, ToCodesign } = await import(new URL('workers/codesign-protocol.js', location.href).href);
   const coordinator = new Worker(new URL('codesign/coordinator.js', location.href), { type: 'module' });
   /** @type {number[]} */
   const filled = [];

@@ -19,8 +19,8 @@ export const TINY = Object.freeze({ shape: '1111-1111-1001', controller: 'attent
  * @returns {Promise<{run: any, recovered: string[]}>}
  */
 export async function evolveInPage([settings, workers, crash]) {
-  const { FromCoordinator, ToCoordinator } = await import(new URL('protocol.js', location.href).href);
-  const coordinator = new Worker(new URL('coordinator.js', location.href), { type: 'module' });
+  const { FromCoordinator, ToCoordinator } = await import(new URL('workers/protocol.js', location.href).href);
+  const coordinator = new Worker(new URL('runs/coordinator.js', location.href), { type: 'module' });
   /** @type {string[]} */
   const recovered = [];
   const text = await new Promise((resolve, reject) => {

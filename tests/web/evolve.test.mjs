@@ -22,8 +22,8 @@ import { mkdtemp, readFile, rm } from 'node:fs/promises';
 import os from 'node:os';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { RunEstimate } from '../../www/run-estimate.js';
-import { timeLeft } from '../../www/run-progress.js';
+import { RunEstimate } from '../../www/runs/estimate.js';
+import { timeLeft } from '../../www/runs/progress.js';
 import { TINY, evolveInPage, evolveNative, statistics } from './evolution.mjs';
 import { BIN, byTestId, figure, openPage, screenshot, start, waitForFigure, waitForText } from './harness.mjs';
 

@@ -17,7 +17,7 @@ import { test } from 'node:test';
 import { fileURLToPath } from 'node:url';
 import { EVOLVE_FIRST, RUN_GOING, TASKS } from '../../www/classroom/exercises.js';
 import { GUIDE, lessonPlan, lessonPlanNodes } from '../../www/classroom/lesson-plan.js';
-import { SENSOR_NAMES } from '../../www/protocol.js';
+import { SENSOR_NAMES } from '../../www/workers/protocol.js';
 import { CHAPTERS, RUN_TIME } from '../../www/tour/chapters.js';
 import { FIGURES, figure } from '../../www/tour/figures.js';
 

@@ -70,7 +70,7 @@ test('the page\'s main thread loads no wasm: drawing, a transplant and a link ar
   }
   console.log(`# vsr_bg.wasm fetched: main thread 0, workers ${JSON.stringify(wasmFetches)}`);
   assert.equal(wasmFetches['core-worker.js'], 1, 'the core worker loads the wasm once');
-  assert.ok(wasmFetches['worker.js'] >= 1, 'the simulation worker loads its own');
+  assert.ok(wasmFetches['simulation-worker.js'] >= 1, 'the simulation worker loads its own');
 
   // The count is real: the same hook sees a wasm module instantiated on the main thread.
   await page.evaluate(() => WebAssembly.instantiate(new Uint8Array([0, 97, 115, 109, 1, 0, 0, 0])));

@@ -47,7 +47,7 @@ test('a failed request and a crashed worker keep their messages until closed; a 
   await clickCells(page, [[6, 0]]);
   await waitForText(page, 'message', /the drawing could not be checked: the core worker stopped \(.*fails on purpose.*\); try again/);
   const failed = Date.now();
-  const simulation = worker('worker.js');
+  const simulation = worker('simulation-worker.js');
   assert.ok(simulation, 'a simulation worker runs');
   await simulation.evaluate(() => { setTimeout(() => { throw new Error('the simulation worker fails on purpose'); }); });
   await waitForText(page, 'message', /The simulation worker crashed; a new one took over/);

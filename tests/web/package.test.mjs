@@ -35,7 +35,7 @@ test('the package names its files, its types and its version (Cargo.toml\'s)', a
   assert.equal(manifest.version, /^version = "([^"]+)"/m.exec(cargo)?.[1]);
   assert.deepEqual(manifest.files, pkg.files);
   for (const file of [...manifest.files, 'README.md']) assert.ok(existsSync(path.join(out, file)), `${file} is in the package`);
-  for (const file of ['pkg/vsr.js', 'pkg/vsr_bg.wasm', 'pkg/vsr.d.ts', 'embed/vsr-robot.js', 'worker.js', 'renderer.js']) {
+  for (const file of ['pkg/vsr.js', 'pkg/vsr_bg.wasm', 'pkg/vsr.d.ts', 'embed/vsr-robot.js', 'workers/simulation-worker.js', 'viewer/renderer.js']) {
     assert.ok(manifest.files.includes(file), `files lists ${file}`);
   }
   assert.equal(manifest.types, 'pkg/vsr.d.ts');

@@ -12,7 +12,7 @@ import { execFileSync } from 'node:child_process';
 import { existsSync } from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { standings } from '../../www/race-lane.js';
+import { standings } from '../../www/viewer/race-lane.js';
 import { BIN, ROOT, SCREENSHOTS, byTestId, openPage, robotPixels, screenshot, start, waitForFigure, waitForText } from './harness.mjs';
 
 const BRAINS = ['attention', 'mlp-comm', 'mlp'];
@@ -62,7 +62,7 @@ test('three pretrained brains race on biped-4x3: vsr evaluate\'s speeds, in the 
     }, 20);
   }));
   await page.waitForFunction(() => [...document.querySelectorAll('[data-testid="race-speed"]')].every((o) => Number(/** @type {HTMLElement} */ (o).dataset.time) > 3));
-  const laneWorkers = page.workers().filter((w) => w.url().endsWith('/worker.js')).slice(-BRAINS.length);
+  const laneWorkers = page.workers().filter((w) => w.url().endsWith('/simulation-worker.js')).slice(-BRAINS.length);
   await laneWorkers[1].evaluate(() => { const end = performance.now() + 1500; while (performance.now() < end); });
   await page.locator('#race-panel[data-state="finished"]').waitFor({ timeout: 90_000 });
   console.log(`# one lane's worker stalled 1.5 s: the lanes' clocks at most ${Number(await gap).toFixed(2)} s apart`);

@@ -92,9 +92,9 @@ test('Fine-tune runs live, keeps the 32 attention genes, and the from-scratch li
 test('the page\'s fine-tuning equals vsr finetune bit for bit', async () => {
   const settings = { shape: '11111-11111-10101', seed: 4, seconds: 2, terrain: 'flat', population: 6, budget: 18 };
   const text = await page.evaluate(async ([settings, url]) => {
-    const { FromCoordinator, ToCoordinator } = await import('./protocol.js');
+    const { FromCoordinator, ToCoordinator } = await import('./workers/protocol.js');
     const source = await fetch(url).then((r) => r.text());
-    const coordinator = new Worker('./coordinator.js', { type: 'module' });
+    const coordinator = new Worker('./runs/coordinator.js', { type: 'module' });
     const runFile = await new Promise((resolve, reject) => {
       coordinator.onmessage = ({ data }) => {
         if (data.type === FromCoordinator.DONE) resolve(data.runFile);

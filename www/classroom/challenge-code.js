@@ -13,9 +13,9 @@
  * in groups of four: 2 bits for the brain family, the body's width - 1 (5 bits) and height - 1
  * (4 bits), its cells row by row from the top, the check (10 bits).
  */
-import { runGenome } from '../core.js';
-import { spawn } from '../kit.js';
-import { FromCoordinator, MAX_EVALUATORS, ToCoordinator } from '../protocol.js';
+import { runGenome } from '../workers/core.js';
+import { spawn } from '../workers/kit.js';
+import { FromCoordinator, MAX_EVALUATORS, ToCoordinator } from '../workers/protocol.js';
 
 const ALPHABET = '0123456789ABCDEFGHJKMNPQRSTVWXYZ';
 /** The brain families a code can name, by number. */
@@ -87,13 +87,13 @@ export function readCode(text) {
 /**
  * Evolves a robot again with a challenge's run, as the student's page did (the page's GA
  * coordinator, all this computer's cores: the same bits for any number of workers), and gives
- * its best genome. @param {import('../protocol.js').EvolveSettings} settings
+ * its best genome. @param {import('../workers/protocol.js').EvolveSettings} settings
  * @returns {Promise<Float32Array>}
  */
 export function evolveAgain(settings) {
   const workers = Math.max(1, Math.min(MAX_EVALUATORS, navigator.hardwareConcurrency || 1));
   return new Promise((resolve, reject) => {
-    const worker = spawn('coordinator.js', (msg) => {
+    const worker = spawn('runs/coordinator.js', (msg) => {
       if (msg.type === FromCoordinator.ERROR) { worker.terminate(); reject(new Error(msg.message)); }
       if (msg.type === FromCoordinator.DONE) {
         worker.terminate();

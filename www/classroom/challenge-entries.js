@@ -1,7 +1,7 @@
 // @ts-check
 /**
  * The class's entries: every line of the teacher's compare box read with the page's own link
- * reader (share.js), or as a short code (challenge-code.js: the robot evolved again here with the
+ * reader (keep/share.js), or as a short code (challenge-code.js: the robot evolved again here with the
  * challenge's run, its check compared), checked against the challenge's rules
  * (challenge-rules.js), its robot measured again by the page on the challenge's terrain for its
  * episode (lab.js: the speed the link claims is never trusted), then put in order.
@@ -16,8 +16,8 @@
  *   first), a link made at another address of the page, and the same robot (body and genome,
  *   or body and clock) under two names (it races once).
  */
-import { messageOf } from '../kit.js';
-import { decodeState } from '../share.js';
+import { messageOf } from '../workers/kit.js';
+import { decodeState } from '../keep/share.js';
 import { genomeCheck, looksLikeCode, readCode } from './challenge-code.js';
 import { bodyProblem, budgetProblem, runSettings } from './challenge-rules.js';
 
@@ -34,8 +34,8 @@ import { bodyProblem, budgetProblem, runSettings } from './challenge-rules.js';
 /**
  * What an entry needs of the page: evolve (a short code's robot evolved again with the
  * challenge's run: its best genome) and say (what the ranking does now, for the teacher).
- * @typedef {{lab: import('./lab.js').Lab, defaults: import('../core.js').Defaults,
- *   evolve?: (settings: import('../protocol.js').EvolveSettings) => Promise<Float32Array>, say?: (text: string) => void}} Tools
+ * @typedef {{lab: import('./lab.js').Lab, defaults: import('../workers/core.js').Defaults,
+ *   evolve?: (settings: import('../workers/protocol.js').EvolveSettings) => Promise<Float32Array>, say?: (text: string) => void}} Tools
  */
 
 /**

@@ -9,7 +9,7 @@
  * back from it, and are the one check of a body and of a budget, for the student's drawing and
  * for the teacher's ranking alike.
  */
-import { count } from '../format.js';
+import { count } from '../shared/format.js';
 
 /** The challenge link's query parameters. */
 const KEYS = Object.freeze(['terrain', 'seconds', 'voxels', 'body', 'budget', 'seed', 'population', 'train']);
@@ -45,7 +45,7 @@ export function runOf(r) {
 
 /**
  * The run a challenge's robot of `rows` was evolved with (what a short code stands for).
- * @param {Rules} r @param {string} rows @param {string} controller @returns {import('../protocol.js').EvolveSettings}
+ * @param {Rules} r @param {string} rows @param {string} controller @returns {import('../workers/protocol.js').EvolveSettings}
  */
 export function runSettings(r, rows, controller) {
   return { shape: rows, controller, seed: Number(r.seed), seconds: r.seconds, terrain: r.train, population: r.population, budget: Number(r.budget) };

@@ -3,7 +3,7 @@
  * Keeps the teacher's challenge across reloads in the browser's localStorage: the rules of the
  * challenge link they made (null before they make one) and the class's links as pasted. Storage
  * can be full or switched off: then nothing is kept, and the caller says so instead of failing
- * (as storage.js does for the page's state).
+ * (as keep/storage.js does for the page's state).
  */
 import { rulesFrom } from './challenge-rules.js';
 

@@ -3,7 +3,7 @@
  * The teacher's ranking table: the placed entries, fastest first, then the entries without a
  * place, each with why in its note (challenge-entries.js decides which is which).
  */
-import { decimal } from '../format.js';
+import { decimal } from '../shared/format.js';
 
 const HEAD = Object.freeze(['place', 'name', 'body', 'brain', 'speed', 'note']);
 

@@ -9,16 +9,16 @@
  * made and the links pasted are kept for the teacher's next visit (challenge-store.js). The best
  * four with a brain race side by side.
  */
-import { checkTerrain, runGenome } from '../core.js';
-import { byId } from '../dom.js';
-import { messageOf } from '../kit.js';
-import { terrainRefused } from '../terrain-words.js';
+import { checkTerrain, runGenome } from '../workers/core.js';
+import { byId } from '../shared/dom.js';
+import { messageOf } from '../workers/kit.js';
+import { terrainRefused } from '../viewer/terrain-words.js';
 import { linesOf, rankEntries } from './challenge-entries.js';
 import { evolveAgain, looksLikeCode, readCode, robotCode } from './challenge-code.js';
 import { bodyProblem, challengeLink, rankingWords, rulesFrom, rulesOf, rulesWords, runOf, runSettings, sameRules } from './challenge-rules.js';
 import { loadQr, qrBox } from './qr.js';
 import { onlyHere } from './sheet-address.js';
-import { durationWords } from '../run-progress.js';
+import { durationWords } from '../runs/progress.js';
 import { keepChallenge, loadChallenge } from './challenge-store.js';
 import { showRanking } from './challenge-table.js';
 
@@ -28,11 +28,11 @@ import { showRanking } from './challenge-table.js';
 export class Challenge {
   /**
    * @param {Document} doc @param {import('./lab.js').Lab} lab
-   * @param {{defaults: import('../core.js').Defaults, rows: () => string, setView: (terrain: string) => void,
+   * @param {{defaults: import('../workers/core.js').Defaults, rows: () => string, setView: (terrain: string) => void,
    *   fixRun: (values: Record<string, string>) => void, setBody: (rows: string) => Promise<void>,
-   *   race: import('../race.js').Race, message: (text: string) => void, pin: (text: string) => void,
-   *   runSeconds: (settings: import('../protocol.js').EvolveSettings) => number,
-   *   lastRun: () => {runFile: string | null, settings: import('../protocol.js').EvolveSettings | null, mode: string}}} page
+   *   race: import('../viewer/race.js').Race, message: (text: string) => void, pin: (text: string) => void,
+   *   runSeconds: (settings: import('../workers/protocol.js').EvolveSettings) => number,
+   *   lastRun: () => {runFile: string | null, settings: import('../workers/protocol.js').EvolveSettings | null, mode: string}}} page
    *   fixRun: the run settings every student's run uses, locked; runSeconds: how long a run takes here (NaN: not known);
    *   lastRun: the page's latest finished run (its run file), its settings and mode
    */
@@ -185,7 +185,7 @@ export class Challenge {
    * After Share in a challenge: the robot's short code under the link, when the robot is the
    * challenge's run of its body (the page's latest run, from scratch with the challenge's
    * settings, finished, its best the brain shared); else why it has none (the link still counts).
-   * @param {import('../share.js').PageState} state what the link holds
+   * @param {import('../keep/share.js').PageState} state what the link holds
    */
   async shared(state) {
     const r = this.opened;

@@ -7,14 +7,14 @@
  * page: every chapter's task, room to write, the chapter's link as text; printed alone by
  * classroom.css) and “Answer keys” (every key, computed as a student's reveal computes it).
  */
-import { messageOf } from '../kit.js';
+import { messageOf } from '../workers/kit.js';
 import { CHAPTERS } from '../tour/chapters.js';
 import { exerciseOf } from './exercises.js';
 import { keepGuess } from './guess-lock.js';
 import { LESSON, lessonPlanNodes, lessonStepWords, lessonTimes } from './lesson-plan.js';
 import { loadQr, qrBox } from './qr.js';
 import { addressField, chapterLink, onlyHere, pageAddress } from './sheet-address.js';
-import { withTerms } from './simple-words.js';
+import { withTerms } from '../shared/simple-words.js';
 
 /**
  * @param {Document} doc @param {string} tag @param {string} [className] @param {string} [text]

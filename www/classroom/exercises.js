@@ -8,7 +8,7 @@
  * every key (classroom.js).
  */
 import { CHAPTERS } from '../tour/chapters.js';
-import { count, decimal, plainNumber, size } from '../format.js';
+import { count, decimal, plainNumber, size } from '../shared/format.js';
 
 /** A value of an attention matrix beyond ±this counts as "at +1 or −1". */
 export const SATURATED = 0.9;
@@ -137,7 +137,7 @@ export const TASKS = [
       const rows = /** @type {string} */ (setup(BRAIN).rows);
       const bigger = rows.replace(/0(?=[01]*$)/, '1'); // one more voxel in the bottom row, next to a leg
       const [a, b] = await Promise.all([lab.check(rows), lab.check(bigger)]);
-      const genes = (/** @type {import('../core.js').ShapeCheck} */ c) => c.params.find(([k]) => k === 'attention')?.[1] ?? NaN;
+      const genes = (/** @type {import('../workers/core.js').ShapeCheck} */ c) => c.params.find(([k]) => k === 'attention')?.[1] ?? NaN;
       const gain = genes(b) - genes(a);
       return { answer: gain, shown: `${gain} genes`,
         why: `The page counts ${genes(a)} genes for ${a.voxels} voxels and ${genes(b)} for ${b.voxels}. The new voxel runs the same network as `
@@ -261,7 +261,7 @@ export const TASKS = [
       const box = '111-111-111'; // the search's start, a 3 × 3 box
       const biped = /** @type {string} */ (setup(GAIT).rows);
       const [a, b] = await Promise.all([lab.check(box), lab.check(biped)]);
-      const genes = (/** @type {import('../core.js').ShapeCheck} */ c) => c.params.find(([k]) => k === 'attention')?.[1] ?? NaN;
+      const genes = (/** @type {import('../workers/core.js').ShapeCheck} */ c) => c.params.find(([k]) => k === 'attention')?.[1] ?? NaN;
       const shared = lab.defaults.attentionGenes;
       return { answer: shared, shown: `${shared} genes`,
         why: `The page counts ${genes(a)} genes for the ${size(3, 3)} box (${a.voxels} voxels) and ${genes(b)} for the biped (${b.voxels} voxels). `

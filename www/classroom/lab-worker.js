@@ -7,7 +7,7 @@
  * and how the attention matrices sit during the walk.
  */
 import init, * as wasm from '../pkg/vsr.js';
-import { answerRequests, loadWasm } from '../kit.js';
+import { answerRequests, loadWasm } from '../workers/kit.js';
 
 /** Steps of the brain's one decision (the core's ACTUATION_HOLD_STEPS): attention is sampled once per decision. */
 const SAMPLE_STEPS = 20;

@@ -2,22 +2,22 @@
 /**
  * What a task's answer key may compute (exercises.js), each number run by the page or read
  * from a committed file at the moment it is asked: walks in the lab worker (lab-worker.js: the
- * core's own episode), the core's checks and transplant (core.js), the committed run files
+ * core's own episode), the core's checks and transplant (workers/core.js), the committed run files
  * (pretrained/, study/), and the page's latest run (its best of every generation, kept by the
  * race).
  */
-import { checkShape, describeRun, runGenome, transplant } from '../core.js';
-import { fetchOk, requester } from '../kit.js';
+import { checkShape, describeRun, runGenome, transplant } from '../workers/core.js';
+import { fetchOk, requester } from '../workers/kit.js';
 
 const ask = requester('classroom/lab-worker.js', 'the classroom\'s measuring worker');
 
 /** @typedef {import('./lab-worker.js').Walk} Walk */
 /** @typedef {{generation: number, fitness: number, evaluations?: number}} GenerationBest */
-/** @typedef {{bests: GenerationBest[], shape: string, controller: string, mode: string, running: boolean}} LatestRun  the page's latest run (race.js keeps it) and whether it is still going */
+/** @typedef {{bests: GenerationBest[], shape: string, controller: string, mode: string, running: boolean}} LatestRun  the page's latest run (viewer/race.js keeps it) and whether it is still going */
 
 export class Lab {
   /**
-   * @param {{defaults: import('../core.js').Defaults, latestRun: () => LatestRun, raceSeconds: () => number}} page
+   * @param {{defaults: import('../workers/core.js').Defaults, latestRun: () => LatestRun, raceSeconds: () => number}} page
    */
   constructor(page) {
     this.page = page;

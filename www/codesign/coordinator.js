@@ -1,19 +1,19 @@
 // @ts-check
 /**
  * The body-search coordinator (a module worker; the page starts one per search). It owns the
- * wasm `Codesign` (ask/tell, as `vsr codesign`) and a pool of evaluation workers (pool.js).
+ * wasm `Codesign` (ask/tell, as `vsr codesign`) and a pool of evaluation workers (runs/pool.js).
  * Each iteration it asks for the jobs (new bodies and the archive's bodies measured again,
  * each job with its own shape), the pool evaluates them in any order on any worker, and the
  * fitness values are told in job order: the archive is the same for any number of workers, and
  * a dying worker is replaced and its job run again. After each iteration the page gets the
  * record and the gallery (every archive cell's best body); once the search ends, its archive
- * stays here to answer for any entry until the page ends this worker. Messages: protocol.js here (ToCodesign,
- * FromCodesign).
+ * stays here to answer for any entry until the page ends this worker. Messages:
+ * workers/codesign-protocol.js (ToCodesign, FromCodesign).
  */
 import init, { Codesign, start as installPanicHook } from '../pkg/vsr.js';
-import { loadWasm, messageOf, onReadyMessage, typeText, workerScope } from '../kit.js';
-import { EvaluatorPool, workerCount } from '../pool.js';
-import { FromCodesign, ToCodesign } from './protocol.js';
+import { loadWasm, messageOf, onReadyMessage, typeText, workerScope } from '../workers/kit.js';
+import { EvaluatorPool, workerCount } from '../runs/pool.js';
+import { FromCodesign, ToCodesign } from '../workers/codesign-protocol.js';
 
 const ready = loadWasm(init, installPanicHook);
 const scope = workerScope('codesign/coordinator.js');
@@ -38,7 +38,7 @@ onReadyMessage(scope, ready, fail, (msg) => {
 
 /**
  * Starts the search; bad settings or a wrong module answer 'error' before any worker starts.
- * @param {import('./protocol.js').CodesignSettings} settings @param {number} workers
+ * @param {import('../workers/codesign-protocol.js').CodesignSettings} settings @param {number} workers
  * @param {string | null} module the module's run file (frozen, finetune)
  */
 function start(settings, workers, module) {

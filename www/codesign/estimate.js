@@ -1,13 +1,13 @@
 // @ts-check
 /**
  * The body search in the panel's form, said before it starts (under its buttons): its brain in
- * words, and how long it would take here, as the run form's estimate says (run-estimate.js): its evaluations at this
+ * words, and how long it would take here, as the run form's estimate says (runs/estimate.js): its evaluations at this
  * computer's pace, in simulated voxel-seconds per second per worker, with the start body's
  * voxels. The bodies change size as the search goes, so the figure is a rough guide; while a
  * search runs its progress says how far it is, and the estimate is hidden.
  */
-import { estimateSeconds, voxelCount } from '../run-estimate.js';
-import { durationWords } from '../run-progress.js';
+import { estimateSeconds, voxelCount } from '../runs/estimate.js';
+import { durationWords } from '../runs/progress.js';
 
 /** How often the estimate follows the form (ms). */
 const REFRESH_MS = 1000;

@@ -6,10 +6,10 @@
  * the legend's strip is painted from the same scale), the bodies found in the latest iteration
  * outlined. A click on a body hands its cell to the page, which loads it.
  */
-import { decimal } from '../format.js';
+import { decimal } from '../shared/format.js';
 
-/** @typedef {import('./protocol.js').GalleryEntry} GalleryEntry */
-/** @typedef {import('./protocol.js').Layout} Layout */
+/** @typedef {import('../workers/codesign-protocol.js').GalleryEntry} GalleryEntry */
+/** @typedef {import('../workers/codesign-protocol.js').Layout} Layout */
 
 /** Canvas size of one body (CSS pixels). */
 const BODY_W = 72;

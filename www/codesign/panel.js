@@ -9,18 +9,18 @@
  * drawing); the first and the last best race side by side.
  * Problems (a wrong module, a drawing that is no body) are said in words that stay.
  */
-import { foundBody } from '../brain.js';
-import { byId } from '../dom.js';
-import { download } from '../export.js';
-import { messageOf, spawn } from '../kit.js';
-import { plain } from '../message.js';
-import { FromCodesign, ToCodesign } from './protocol.js';
+import { foundBody } from '../robot/brain.js';
+import { byId } from '../shared/dom.js';
+import { download } from '../shared/export.js';
+import { messageOf, spawn } from '../workers/kit.js';
+import { plain } from '../shared/message.js';
+import { FromCodesign, ToCodesign } from '../workers/codesign-protocol.js';
 import { Gallery, paintLegend } from './gallery.js';
 import { BOX_WORDS, planSearch, QUICK, searchWords } from './plan.js';
-import { familyName } from '../families.js';
-import { count } from '../format.js';
+import { familyName } from '../shared/families.js';
+import { count } from '../shared/format.js';
 import { bestEntry, exportName, summaryWords } from './summary.js';
-import { voxelCount } from '../run-estimate.js';
+import { voxelCount } from '../runs/estimate.js';
 
 /** Where the panel's problems are said (under its buttons, main.js places them), and a refused search's status. */
 const SOURCE = 'codesign';
@@ -29,17 +29,17 @@ const NOT_STARTED = 'The search did not start: the message under the buttons say
 /**
  * @typedef {object} CodesignHooks
  * @property {() => {rows: string, ok: boolean, message: string}} body   the drawing now, and its check
- * @property {() => Promise<import('../modules.js').Module | null>} module  the module chosen in "3 · Give it a brain"
+ * @property {() => Promise<import('../modules/modules.js').Module | null>} module  the module chosen in "3 · Give it a brain"
  * @property {() => string} controller     the family chosen there (for a brain from scratch)
  * @property {() => {seed: string, terrain: string, workers: string}} run  the run settings' seed, terrain, workers
- * @property {(brain: import('../brain.js').Brain) => Promise<void>} open  loads a body with its brain into the editor
- * @property {(racers: import('../race-lane.js').Racer[]) => void} race  races these robots (the race emptied first)
+ * @property {(brain: import('../robot/brain.js').Brain) => Promise<void>} open  loads a body with its brain into the editor
+ * @property {(racers: import('../viewer/race-lane.js').Racer[]) => void} race  races these robots (the race emptied first)
  * @property {() => void} share             shares the robot on the page as a link
  * @property {(text: string, source?: string) => void} message  an error, in words that stay until closed ('' with a source: its error goes)
  */
 
-/** @typedef {import('./protocol.js').Entry} Entry  a body with its brain, entry `index` of the search's file `source` */
-/** @typedef {import('../kit.js').WorkerOf<'codesign/coordinator.js'>} Coordinator */
+/** @typedef {import('../workers/codesign-protocol.js').Entry} Entry  a body with its brain, entry `index` of the search's file `source` */
+/** @typedef {import('../workers/kit.js').WorkerOf<'codesign/coordinator.js'>} Coordinator */
 
 export class CodesignPanel {
   /** @param {Document} doc @param {CodesignHooks} hooks */
@@ -68,13 +68,13 @@ export class CodesignPanel {
     this.coordinator = null;
     this.running = false;
     this.starting = false;
-    /** The latest search's settings. @type {import('./protocol.js').CodesignSettings | null} */
+    /** The latest search's settings. @type {import('../workers/codesign-protocol.js').CodesignSettings | null} */
     this.settings = null;
     /** The coordinator said the search started (errors before that: 'did not start'). */
     this.started = false;
     /**
      * The latest search's last round (its summary says how long it took once it ends).
-     * @type {Extract<import('./protocol.js').FromCodesignMessage, {type: 'iteration'}> | null}
+     * @type {Extract<import('../workers/codesign-protocol.js').FromCodesignMessage, {type: 'iteration'}> | null}
      */
     this.lastRound = null;
     /** The latest search's run file (when it ended). @type {string | null} */
@@ -177,7 +177,7 @@ export class CodesignPanel {
     this.update();
   }
 
-  /** @param {Coordinator} from @param {import('./protocol.js').FromCodesignMessage} msg */
+  /** @param {Coordinator} from @param {import('../workers/codesign-protocol.js').FromCodesignMessage} msg */
   onMessage(from, msg) {
     if (from !== this.coordinator) return;
     switch (msg.type) {
@@ -204,7 +204,7 @@ export class CodesignPanel {
     }
   }
 
-  /** @param {Extract<import('./protocol.js').FromCodesignMessage, {type: 'iteration'}>} msg */
+  /** @param {Extract<import('../workers/codesign-protocol.js').FromCodesignMessage, {type: 'iteration'}>} msg */
   onIteration(msg) {
     const t0 = performance.now();
     const { record, gallery } = msg;

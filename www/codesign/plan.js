@@ -3,26 +3,17 @@
  * The body search the panel's form describes (as `vsr codesign`'s options), or what is wrong
  * with it, in words that name the fix.
  */
-import { describeRun } from '../core.js';
-import { plain } from '../message.js';
-import { size } from '../format.js';
-import { hasAttention, isAnyBody } from '../families.js';
+import { describeRun } from '../workers/core.js';
+import { plain } from '../shared/message.js';
+import { size } from '../shared/format.js';
+import { hasAttention, isAnyBody } from '../shared/families.js';
+import { BRAIN_WORDS } from '../modules/names.js';
 
 /** The quick body search: finishes in about a minute in Chromium on 2 workers (docs/playground.md). */
 export const QUICK = Object.freeze({ budget: 1000, seconds: 10, batch: 20 });
 /** The seed body, a box of 3 × 3 voxels, and its name in words. */
 export const BOX = '111-111-111';
 export const BOX_WORDS = `a ${size(3, 3)} box`;
-/**
- * The search's brains in words (the menu's, the estimate's and the gallery's): `frozen` keeps the
- * module's attention as the Fine-tune button does; `finetune` starts from the module and lets
- * every gene change (`vsr codesign --brain`'s names).
- */
-export const BRAIN_WORDS = Object.freeze({
-  frozen: { menu: 'the chosen module, its attention kept', short: 'attention kept' },
-  finetune: { menu: 'the chosen module as a start, every gene evolving, its attention too', short: 'every gene evolving' },
-  scratch: { menu: 'a new brain, from scratch', short: 'from scratch' },
-});
 
 /**
  * The search's brains in words for a module of the family `kind` (the core's rule,
@@ -44,7 +35,7 @@ export function searchWords(brain, kind) {
  * The search the panel's form describes, or what is wrong, in words.
  * @param {{brain: string, from: string, budget: string, seconds: string}} form  the panel's fields
  * @param {import('./panel.js').CodesignHooks} hooks
- * @returns {Promise<{settings: import('./protocol.js').CodesignSettings, module: import('../modules.js').Module | null,
+ * @returns {Promise<{settings: import('../workers/codesign-protocol.js').CodesignSettings, module: import('../modules/modules.js').Module | null,
  *   kind: string, workers: number} | {error: string}>} `kind`: the module's family ('' without one)
  */
 export async function planSearch(form, hooks) {
@@ -74,7 +65,7 @@ export async function planSearch(form, hooks) {
   const info = chosen ? await describeRun(chosen.text) : null;
   if (info && brain === 'scratch' && from === 'module') start = info.shape; // a new brain on the module's body
   const module = brain === 'scratch' ? null : chosen;
-  /** @type {import('./protocol.js').CodesignSettings} */
+  /** @type {import('../workers/codesign-protocol.js').CodesignSettings} */
   const settings = { brain, seed, seconds, terrain: run.terrain.trim(), budget, batch: QUICK.batch };
   if (brain === 'scratch') settings.controller = hooks.controller();
   if (start !== undefined) settings.start = start;

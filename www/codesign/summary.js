@@ -3,9 +3,9 @@
  * The body search in words: its summary line (its brain, the kinds of body found, the fastest,
  * and how long it has searched, or once it ended how long it took) and its exported file's name.
  */
-import { decimal } from '../format.js';
+import { decimal } from '../shared/format.js';
 
-/** The fastest entry of a gallery, or null. @param {import('./protocol.js').GalleryEntry[]} gallery */
+/** The fastest entry of a gallery, or null. @param {import('../workers/codesign-protocol.js').GalleryEntry[]} gallery */
 export function bestEntry(gallery) {
   let best = null;
   for (const e of gallery) if (e.fitness !== null && (best === null || e.fitness > /** @type {number} */ (best.fitness))) best = e;
@@ -15,7 +15,7 @@ export function bestEntry(gallery) {
 /**
  * The summary after the round `round` of a search of `what` (its brain and bodies, in words).
  * @param {string} what
- * @param {{record: {iteration: number}, evaluations: number, gallery: import('./protocol.js').GalleryEntry[], seconds: number}} round
+ * @param {{record: {iteration: number}, evaluations: number, gallery: import('../workers/codesign-protocol.js').GalleryEntry[], seconds: number}} round
  * @param {boolean} ended whether the search has ended (it says how long it took)
  */
 export function summaryWords(what, { record, evaluations, gallery, seconds }, ended) {

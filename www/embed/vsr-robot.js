@@ -10,16 +10,16 @@
  * (`biped-4x3`); `module` a run file's URL, relative to the page (its best individual drives its
  * own body; without a module the phase gait drives `shape`); `terrain` (`flat`,
  * `hilly-1-10-0`; none: the playground's viewer terrain). The simulation runs in the
- * playground's own worker (../worker.js), one per element, and is drawn by the playground's
- * Renderer on the element's own canvas, sized by CSS (block, 2:1 by default). A click (or
- * Enter / Space) holds the robot and plays it again; a robot out of sight is paused. A wrong
- * attribute shows the core's message in place of the robot until it is fixed. For scripts:
- * `x` (the centre's x, m), `distance` (m walked since the start), `time` (s), `velocity` (m/s,
+ * playground's own simulation worker (workers/simulation-worker.js), one per element, and is
+ * drawn by the playground's Renderer on the element's own canvas, sized by CSS (block, 2:1 by
+ * default). A click (or Enter / Space) holds the robot and plays it again; a robot out of sight
+ * is paused. A wrong attribute shows the core's message in place of the robot until it is
+ * fixed. For scripts: `x` (the centre's x, m), `distance` (m walked since the start), `time` (s), `velocity` (m/s,
  * as fitness defines it), `running` and `error` ('' or the message shown). docs/embed.md.
  */
-import { messageOf, spawn } from '../kit.js';
-import { FromWorker, ToWorker, frameIsConsistent } from '../protocol.js';
-import { Renderer } from '../renderer.js';
+import { messageOf, spawn } from '../workers/kit.js';
+import { FromWorker, ToWorker, frameIsConsistent } from '../workers/protocol.js';
+import { Renderer } from '../viewer/renderer.js';
 
 /** The attributes that say which robot walks. */
 const ATTRIBUTES = ['shape', 'module', 'terrain'];
@@ -59,7 +59,7 @@ export class VsrRobot extends HTMLElement {
     this.errorBox.hidden = true;
     root.append(style, this.canvas, this.badge, this.errorBox);
     this.renderer = new Renderer(this.canvas);
-    /** @type {import('../kit.js').WorkerOf<'worker.js'> | null} */
+    /** @type {import('../workers/kit.js').WorkerOf<'workers/simulation-worker.js'> | null} */
     this.worker = null;
     /** Which load the answers belong to: a newer attribute change makes older fetches moot. */
     this.generation = 0;
@@ -125,7 +125,7 @@ export class VsrRobot extends HTMLElement {
       this.fail('no robot: give a shape (rows, top first, such as shape="1111-1111-1001", or a preset such as shape="biped-4x3") or a module file (module="...json")');
       return;
     }
-    /** @type {import('../protocol.js').EpisodeParams} */
+    /** @type {import('../workers/protocol.js').EpisodeParams} */
     const params = { shape, brain: null };
     if (terrain !== null) params.terrain = terrain.trim();
     if (module) {
@@ -140,17 +140,17 @@ export class VsrRobot extends HTMLElement {
     this.ensureWorker().postMessage({ type: ToWorker.LOAD, params });
   }
 
-  /** @returns {import('../kit.js').WorkerOf<'worker.js'>} this element's simulation worker, started if needed */
+  /** @returns {import('../workers/kit.js').WorkerOf<'workers/simulation-worker.js'>} this element's simulation worker, started if needed */
   ensureWorker() {
     if (this.worker) return this.worker;
-    const worker = spawn('worker.js', (msg) => { if (this.worker === worker) this.onMessage(msg); },
+    const worker = spawn('workers/simulation-worker.js', (msg) => { if (this.worker === worker) this.onMessage(msg); },
       (text) => { if (this.worker === worker) this.crashed(text); });
     this.worker = worker;
     this.loaded = false;
     return worker;
   }
 
-  /** @param {import('../protocol.js').FromWorkerMessage} msg a message from the simulation worker */
+  /** @param {import('../workers/protocol.js').FromWorkerMessage} msg a message from the simulation worker */
   onMessage(msg) {
     switch (msg.type) {
       case FromWorker.READY: this.renderer.setPhysics(msg.physics); break;

@@ -15,8 +15,8 @@
  *
  * Pure data with no page in it: the browser tests read it to check each chapter's set-up.
  */
-import { count, plainNumber, size } from '../format.js';
-import { RUN_TIME } from '../run-time.js';
+import { count, plainNumber, size } from '../shared/format.js';
+import { RUN_TIME } from '../runs/time.js';
 
 const BIPED = '1111-1111-1001';
 const BIPED_LARGE = '111111-111111-100011-100011';

@@ -7,8 +7,8 @@
  * holds only how many have finished, and the page says so; the answer appears once the test
  * is complete.
  */
-import { count, decimal, signed } from '../format.js';
-import { fetchOk, messageOf } from '../kit.js';
+import { count, decimal, signed } from '../shared/format.js';
+import { fetchOk, messageOf } from '../workers/kit.js';
 import { STUDY_DIR } from './figures.js';
 
 /** Where the page reads the test's state. */

@@ -8,7 +8,7 @@
  * the section's content.
  */
 
-import { whenNear } from '../dom.js';
+import { whenNear } from '../shared/dom.js';
 import { fillClaim } from './claim.js';
 import { figure } from './figures.js';
 

@@ -5,27 +5,27 @@
  * draws): stops a run under way, sets the terrain, the phase gait, the run settings, the body
  * and its brain, the race and the body search's brain; then waits until the viewer walks exactly that robot.
  */
-import { messageOf } from '../kit.js';
+import { messageOf } from '../workers/kit.js';
 
 /** Longest wait for the viewer to walk the chapter's robot (ms). */
 const WALK_TIMEOUT_MS = 10_000;
 
 /**
  * @typedef {object} Playground  the page's functions the tour uses (main.js)
- * @property {import('../core.js').Defaults} defaults
+ * @property {import('../workers/core.js').Defaults} defaults
  * @property {() => boolean} running                 a run uses the robot
  * @property {() => Promise<void>} stopRun            stops it; resolves once stopped
  * @property {(rows: string) => Promise<void>} setBody  draws rows, driven by the phase gait
- * @property {(key: string, label?: string, short?: string) => Promise<import('../modules.js').Module>} module  reads and
- *   chooses a module (one not listed yet is added under `label`, shown as `short`: modules.js, read)
- * @property {(module: import('../modules.js').Module) => Promise<void>} openModule   on its own body
- * @property {(module: import('../modules.js').Module) => Promise<void>} loadModule   onto the drawn body
+ * @property {(key: string, label?: string, short?: string) => Promise<import('../modules/modules.js').Module>} module  reads and
+ *   chooses a module (one not listed yet is added under `label`, shown as `short`: modules/modules.js, read)
+ * @property {(module: import('../modules/modules.js').Module) => Promise<void>} openModule   on its own body
+ * @property {(module: import('../modules/modules.js').Module) => Promise<void>} loadModule   onto the drawn body
  * @property {(terrain: string, gait: {frequency: number, phase: number}) => void} setView
  * @property {(values: Record<string, string>, compare: boolean) => void} setRun
  * @property {(kind: string) => Promise<unknown>} setController
- * @property {() => import('../protocol.js').EpisodeParams | null} wanted  the episode the page asked the viewer for last
- * @property {() => import('../protocol.js').EpisodeParams | null} walking  the episode the viewer walks now
- * @property {import('../race.js').Race} race
+ * @property {() => import('../workers/protocol.js').EpisodeParams | null} wanted  the episode the page asked the viewer for last
+ * @property {() => import('../workers/protocol.js').EpisodeParams | null} walking  the episode the viewer walks now
+ * @property {import('../viewer/race.js').Race} race
  * @property {(settings: {brain: string, from: string}) => void} setCodesign  the body search's brain and start body
  * @property {(on: boolean) => void} quietModules  whether the module list keeps its speeds back (a question waits)
  * @property {(on: boolean) => void} holdAtEpisodeEnd  whether the walk holds when its episode ends (the tour: what is

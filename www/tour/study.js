@@ -8,15 +8,15 @@
  * figure are fetched when needed, not at start (issue 46): when the panel comes near the screen,
  * a figure is asked for (the tour, the findings) or the module list needs the runs ({@link StudyPanel#load}).
  */
-import { withStats } from '../classroom/simple-words.js';
-import { byId, whenNear } from '../dom.js';
-import { fetchOk, messageOf } from '../kit.js';
-import { shortLabel, unseenWords } from '../module-names.js';
+import { withStats } from '../shared/simple-words.js';
+import { byId, whenNear } from '../shared/dom.js';
+import { fetchOk, messageOf } from '../workers/kit.js';
+import { shortLabel, unseenWords } from '../modules/names.js';
 import { CLAIM_TABLE, FIGURES, STUDY_DIR, TABLES, figureSrc } from './figures.js';
 import { parseCampaign, runsOf } from './study-runs.js';
 import { fillClaim, loadClaim } from './claim.js';
-import { lineageNote } from './lineage.js';
-import { count } from '../format.js';
+import { lineageNote } from '../modules/lineage.js';
+import { count } from '../shared/format.js';
 
 /** @typedef {import('./study-runs.js').StudyRun} StudyRun  a row of the campaign table */
 
@@ -38,8 +38,8 @@ export function describe(r) {
 export class StudyPanel {
   /**
    * @param {Document} doc
-   * @param {{module: (key: string, label?: string, short?: string) => Promise<import('../modules.js').Module>,
-   *   openModule: (module: import('../modules.js').Module) => void, message: (text: string) => void}} page
+   * @param {{module: (key: string, label?: string, short?: string) => Promise<import('../modules/modules.js').Module>,
+   *   openModule: (module: import('../modules/modules.js').Module) => void, message: (text: string) => void}} page
    */
   constructor(doc, page) {
     this.page = page;

@@ -7,9 +7,9 @@
  * share link's `#...` and both can be in one address. Leaving the tour leaves the playground
  * as the chapter set it.
  */
-import { withStats } from '../classroom/simple-words.js';
-import { byId } from '../dom.js';
-import { messageOf } from '../kit.js';
+import { withStats } from '../shared/simple-words.js';
+import { byId } from '../shared/dom.js';
+import { messageOf } from '../workers/kit.js';
 import { CHAPTERS } from './chapters.js';
 import { FIGURES, figureSrc } from './figures.js';
 import { stage } from './stage.js';

@@ -1,0 +1,58 @@
+// @ts-check
+/**
+ * A module's names, as the module list and the study panel write them: its body in words, how
+ * a body search's brain was evolved, and its short name with its speed.
+ */
+import { decimal } from '../shared/format.js';
+
+/**
+ * The search's brains in words (the menu's, the estimate's and the gallery's): `frozen` keeps the
+ * module's attention as the Fine-tune button does; `finetune` starts from the module and lets
+ * every gene change (`vsr codesign --brain`'s names).
+ */
+export const BRAIN_WORDS = Object.freeze({
+  frozen: { menu: 'the chosen module, its attention kept', short: 'attention kept' },
+  finetune: { menu: 'the chosen module as a start, every gene evolving, its attention too', short: 'every gene evolving' },
+  scratch: { menu: 'a new brain, from scratch', short: 'from scratch' },
+});
+
+/** What separates a module's name from its speed in the list (see {@link shortLabel}). */
+export const SPEED_MARK = ' · ';
+
+/**
+ * A body in words: its preset's name with its rows (as “Rows” in “1 · Draw” writes them), else
+ * its voxels and rows.
+ * @param {string} rows @param {{name: string, rows: string}[]} presets
+ */
+export function bodyWords(rows, presets) {
+  const name = presets.find((p) => p.rows === rows)?.name;
+  return name ? `${name} (rows ${rows})` : `a body of ${rows.split('').filter((c) => c === '1').length} voxels (rows ${rows})`;
+}
+
+/**
+ * A module's name as the list shows it, short enough for a phone's width: what it is, then its
+ * mean speed on the unseen terrains (the list's title and the details say what that speed is).
+ * @param {string} what @param {number} mean m/s (NaN: not known) @param {string} [after] words after the speed
+ */
+export function shortLabel(what, mean, after = '') {
+  return Number.isFinite(mean) ? `${what}${SPEED_MARK}${decimal(mean)} m/s${after}` : what;
+}
+
+/**
+ * A best robot's speed on the study's unseen terrains, in the words every list of the page uses.
+ * @param {number} mean m/s, the mean over the ten terrains
+ */
+export function unseenWords(mean) {
+  return `on average ${decimal(mean)} m/s on ten terrains it never trained on`;
+}
+
+/**
+ * How a body search's brain was evolved, in words (long, and short for the list), from its
+ * condition in the campaign (`frozen`, `finetune`, `scratch-CONTROLLER`). @param {string} condition
+ */
+export function brainWords(condition) {
+  const kind = condition.startsWith('scratch-') ? 'scratch' : condition;
+  if (!(kind in BRAIN_WORDS)) return { long: `brain (${condition})`, short: condition };
+  const { short } = BRAIN_WORDS[/** @type {keyof typeof BRAIN_WORDS} */ (kind)];
+  return kind === 'scratch' ? { long: 'brain from scratch', short } : { long: `module, ${short}`, short: `module, ${short}` };
+}
