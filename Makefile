@@ -16,7 +16,7 @@
 SHELL := /bin/bash
 export PATH := $(HOME)/.cargo/bin:$(PATH)
 PORT ?= 8080
-WASM_PACK_BUILD := wasm-pack build --release --target web --out-dir www/pkg --out-name vsr
+WASM_PACK_BUILD := wasm-pack build crate/wasm --release --target web --out-dir ../../www/pkg --out-name vsr
 
 # The steps depend on each other's results (setup before builds, wasm before typecheck and test-web).
 # A target runs once per make: the wasm package that lint's typecheck built is the one test-web loads.
@@ -53,7 +53,7 @@ lint-rust:
 	cargo fmt --all --check
 	cargo clippy --all-targets -- -D warnings
 	cargo clippy -p vsr-python --all-targets -- -D warnings
-	cargo clippy --lib --tests --target wasm32-unknown-unknown -- -D warnings
+	cargo clippy -p vsr-wasm --lib --tests --target wasm32-unknown-unknown -- -D warnings
 
 ## The page's types: TypeScript (an npm dev dependency) checks every file of www/, JavaScript
 ## with JSDoc types, strict (tsconfig.json), and its calls into the wasm package against the
@@ -105,9 +105,9 @@ test-parallel:
 test-slurm:
 	bash tests/cluster/slurm.sh
 
-## The wasm boundary under Node (tests/wasm.rs).
+## The wasm boundary under Node (crate/wasm/tests/wasm.rs).
 test-wasm:
-	wasm-pack test --node
+	wasm-pack test --node crate/wasm
 
 ## The page in headless Chromium (needs `make wasm`). A test still going after 10 minutes fails
 ## (none needs half of that on this machine), and the runner ends once every file has reported,

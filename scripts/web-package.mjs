@@ -3,8 +3,9 @@
  * The npm-ready web package: the wasm core as `wasm-pack build --target web` wrote it into
  * www/pkg (`make wasm`), plus `<vsr-robot>` (www/embed/vsr-robot.js) and the playground
  * modules it imports, laid out as in www/ so that every relative import holds. The
- * package.json extends the one wasm-pack wrote (name, version, description and licence come
- * from Cargo.toml); the README is docs/embed.md. Prints the package's size.
+ * package.json extends the one wasm-pack wrote (version and licence come from the workspace's
+ * Cargo.toml; the name is the product's, `vsr-playground`, not the wasm crate's); the README is
+ * docs/embed.md. Prints the package's size.
  *
  *   node scripts/web-package.mjs [OUT]    # default target/web-package; then `npm pack` there
  *
@@ -63,9 +64,9 @@ export async function assemble(out) {
   }
   await copyFile(path.join(ROOT, 'docs', 'embed.md'), path.join(out, 'README.md'));
   const manifest = {
-    name: generated.name,
+    name: 'vsr-playground',
     version: generated.version,
-    description: `${generated.description}; <vsr-robot>, a walking robot for any web page`,
+    description: 'Voxel-based soft robots with local self-attention, simulated in WebAssembly; <vsr-robot>, a walking robot for any web page',
     license: generated.license,
     type: 'module',
     files,

@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! Brains for any body trained on many bodies: the run is the same bits whatever the order
 //! the evaluations are made in (threads, workers) and when continued from a checkpoint; the
 //! run file replays alone (its bodies inside); a body-dependent brain, a bad body count or a

@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! An `[[any_body]]` campaign end to end with `vsr`: its runs and validations on body sets,
 //! `campaign status`, and `vsr report`'s fourth-question section, which prints no test while a
 //! planned run's primary validation is missing (no interim result is read) and both families'

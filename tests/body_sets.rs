@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! The study's body sets (campaigns/bodies/) are exactly what the seeded generator makes
 //! (`vsr bodies --seed 2026`), every file reads back as a body set, and one genome of a brain
 //! for any body walks every one of their bodies.

@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! `vsr campaign plan | run | merge` and `vsr report` end to end on campaigns/smoke.toml in a
 //! scratch directory: the plan lists complete commands in dependency order, a run makes
 //! every output, a second run does nothing, a missing output is the only pending job and is

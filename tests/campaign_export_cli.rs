@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! `vsr campaign export` end to end on campaigns/smoke.toml in a scratch directory: it
 //! chooses each category's module by the paper set, replaces what is no longer chosen,
 //! never removes a file outside the folder, and refuses to export over a malformed manifest.

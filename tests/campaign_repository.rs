@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! The repository's own campaign files: every one plans, and the paper study's plan names only
 //! outputs committed under `study/`.
 

@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! Checkpoints: a run stopped after any generation, written to JSON, read back and continued
 //! gives the uninterrupted run's file bit for bit; `vsr evolve` continues from OUT.checkpoint
 //! and deletes it; a checkpoint of another run or a damaged one is refused with a message.

@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! `vsr evolve --keep-checkpoint` and `--continue`: a longer run continues a shorter run's kept
 //! checkpoint and gives the run from generation 0 bit for bit; a missing checkpoint is a note
 //! and a checkpoint past the budget is refused, the file left as it is.

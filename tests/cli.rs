@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! The `vsr` binary's simulator commands: JSON outputs carry the documented fields, bad
 //! arguments exit with code 2 and a message that says what is wrong.
 

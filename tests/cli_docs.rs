@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! docs/cli.md's command summary (the indented block at its top) names every option that
 //! `vsr <command> --help` lists, so the summary cannot fall behind the binary.
 

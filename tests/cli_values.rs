@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! The `vsr` binary's arguments: a negative number after a flag is that flag's value, refused
 //! by the value's own check (exit code 2 and a message), never an unknown argument.
 

@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! `vsr report` and `vsr campaign export` on a body-search campaign (docs/ANALYSIS-PLAN.md,
 //! families 9 and 10). Seed 1 of each condition is a real, seconds-long `vsr codesign` run
 //! with its validations (made by the campaign); every other seed is a copy with its seed,

@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! Controllers: parameter-count formulas, the genome seam, the attention maths checked against
 //! naive f64 code, and the slow / frozen attention variants (MLP-Comm's messages: mlp_comm.rs).
 

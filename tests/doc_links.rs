@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! Every relative link and image in README.md and docs/*.md resolves: the file exists, and a
 //! `#fragment` into a Markdown file names one of its headings (GitHub's anchors).
 

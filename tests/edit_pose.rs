@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! An edited robot keeps its posture and motion (`World::carry_pose`, the playground's edit of
 //! a walking robot): the voxels that stay are where they were and move as they moved; an added
 //! voxel sits against its neighbours and moves with them; the edited robot simulates on.

@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! Evolutionary runs: thread-count independence, real improvement on a small budget, the run
 //! file's round trip and every load error, and fine-tuning's frozen attention block.
 

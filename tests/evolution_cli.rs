@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! The experiment commands of `vsr`: a tiny run end to end (the same file on 1 and 2 threads),
 //! and exit code 2 with a readable message on every kind of bad input, without writing output.
 

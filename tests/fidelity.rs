@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! Fidelity against numbers measured on the reference simulator (fixtures copied from
 //! shared/reference): placement, a voxel's area-ratio response, and the distribution
 //! of gait velocities (biped-4x3, and comb-7x2 against the reference with and without its
@@ -8,7 +7,7 @@
 use serde_json::Value;
 use vsr::experiment::{GaitEpisode, PhaseGait};
 use vsr::simulation::{Shape, Terrain, World};
-use vsr::study::fidelity::{measure, Agreement, Fidelity, Reference};
+use vsr_study::fidelity::{measure, Agreement, Fidelity, Reference};
 
 fn fixture(name: &str) -> Value {
     let path = format!("{}/tests/fixtures/{name}", env!("CARGO_MANIFEST_DIR"));

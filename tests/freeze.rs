@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! Freezing the attention of a walking robot (experiment::freeze): until frozen, the
 //! freezable brain walks exactly as `vsr evaluate`'s; frozen mid-walk, the pretrained
 //! biped's attention stops changing and its speed falls by more than two thirds (the

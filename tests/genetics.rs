@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! Genetics: operator statistics, selection pressure, survival, budget arithmetic,
 //! determinism, a small optimisation, and the frozen prefix used by fine-tuning.
 

@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! MLP-Comm's messages: a message crosses one neighbour per call, in the direction it was
 //! sent, reset clears them; and its two paces (every step, latched) differ only through them.
 

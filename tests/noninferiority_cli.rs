@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! `vsr report` on a campaign whose evolve group plans a non-inferiority test (the
 //! `noninferiority` key; docs/ANALYSIS-PLAN.md, family 8). The key adds no job: the plan is
 //! the same with and without it. Seed 1's runs and validations are made by the campaign

@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! Outputs that explain themselves, read as a log or a pipe reads them (the test captures
 //! stdout, so it is not a terminal): `vsr evolve` prints one line per generation with the
 //! evaluations done of the whole-generation total; `vsr ablate` says what "frozen at s" means

@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! Physics invariants of the simulator (issue 2, items 7 and 9). Each test states what
 //! it protects; tolerances are in the assertion messages.
 

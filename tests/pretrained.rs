@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! Every module in pretrained/ replays: the manifest (written by `vsr campaign export`)
 //! lists every run file of the folder, each loads, matches what its entry records, and its
 //! best individual re-validates on both validation sets to exactly the velocities recorded
@@ -7,7 +6,7 @@
 
 use vsr::experiment::run::{Best, RunFile};
 use vsr::experiment::validation::validate_on;
-use vsr::study::campaign::export::{Manifest, Provenance, FORMAT, VERSION};
+use vsr_study::campaign::export::{Manifest, Provenance, FORMAT, VERSION};
 
 fn pretrained(path: &str) -> String {
     let full = format!("{}/pretrained/{path}", env!("CARGO_MANIFEST_DIR"));

@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! Self-collision (SPEC 3, issue 10 part 1): corner squares of different voxels that
 //! are not welded together collide. Penetration is measured here independently of the
 //! simulator's collider: a separating-axis test on the squares' poses, over the pairs

@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! Sensor readings (SPEC 6) for poses whose values can be worked out by hand.
 
 use vsr::simulation::sensors::Sensors;

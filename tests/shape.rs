@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! Morphologies: presets, row notation (top row first), voxel numbering
 //! (bottom row first), neighbours, round trips and every error message.
 

@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! The spring law (SPEC 2): each spring is a soft constraint with f = 8 Hz and
 //! zeta = 0.3 on the effective mass of the corner squares it joins. At dt = 1/60 the
 //! soft constraint is an implicit-Euler spring-damper: these tests check that the

@@ -1,10 +1,9 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! The study's statistics against values computed independently in Python (scipy 1.x and
 //! statsmodels 0.14, commands in each test's comment) on fixed samples: Holm's correction,
 //! the Hodges-Lehmann shift and its exact interval, the signed-rank test, order-statistic
 //! intervals, and the resampled A12 interval and detectable effect.
 
-use vsr::study::statistics::{
+use vsr_study::statistics::{
     a12_interval, detectable_a12, hodges_lehmann, holm, mann_whitney, median_interval,
     wilcoxon_signed_rank,
 };

@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! The committed study keeps its promise that a run's draws do not depend on its budget: for
 //! every two runs from scratch in `study/runs/` with the same shape, controller and seed, the
 //! shorter run's generation records are the longer run's first records, bit for bit (all but

@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! Terrain names: exact replay of the reference polylines, the simple shapes,
 //! height queries, and error messages for bad names.
 

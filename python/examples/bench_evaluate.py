@@ -10,7 +10,7 @@ velocities (checked bit for bit):
   many at a time as there are threads.
 The rounds alternate the three and the best round of each is kept (the host is shared).
 
-    cargo build --release --bin vsr -p vsr-playground
+    cargo build --release --bin vsr
     cargo build --release -p vsr-python --example native_batch
     python python/examples/bench_evaluate.py [--batch 64] [--rounds 3] [--threads N]
 """

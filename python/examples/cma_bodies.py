@@ -4,7 +4,7 @@ The measurement behind the optimiser the fourth question's runs use (docs/ANALYS
 attention for any body (attention-any) trained on campaigns/bodies/train-32.txt,
 each evaluation the mean speed of 4 bodies drawn afresh on a fresh hilly-1-10 terrain, then
 the final best walked on every body of heldout-random.txt on the ten unseen terrains; the GA's
-figures come from the same setting in Rust (crate/src/experiment/body_set/measure.rs, the
+figures come from the same setting in Rust (crate/engine/src/experiment/body_set/measure.rs, the
 "neighbours+place" rows). Prints one line per seed. The plan's figures were measured when the
 family read all seven local inputs (61 genes, the measurement's "neighbours+place"); run now, it
 measures the family as it is (53 genes, the four neighbour flags).

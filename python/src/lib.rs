@@ -1,5 +1,5 @@
 //! The native half of the `vsr` Python package (`vsr._vsr`): a thin pyo3 layer over the
-//! engine, the way `crate/src/wasm` is for the page. Arrays cross as numpy arrays, read in
+//! engine, the way `crate/wasm/src` is for the page. Arrays cross as numpy arrays, read in
 //! place where their dtype and layout allow (the Python half, `python/vsr/`, makes them so);
 //! long computations run with the GIL released; every engine error becomes a Python
 //! exception carrying the engine's message (see `errors`).

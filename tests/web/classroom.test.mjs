@@ -314,7 +314,7 @@ test('simple words: formulas and statistics hidden, kept after a reload; the new
   for (const word of ['VSR', 'GECCO', 'MLP', 'network', 'weights', 'bias', 'tanh', 'softmax', 'dot product', 'saturate', 'a, b, c, d', 'Holm', 'IQR', 'JSON', '20000 + 10000']) {
     assert.ok(glossary.includes(word), `the glossary explains ${word}`);
   }
-  const side = Number(/VOXEL_SIDE: f64 = ([\d.]+);/.exec(readFileSync(path.join(ROOT, 'crate/src/simulation/constants.rs'), 'utf8'))?.[1]);
+  const side = Number(/VOXEL_SIDE: f64 = ([\d.]+);/.exec(readFileSync(path.join(ROOT, 'crate/engine/src/simulation/constants.rs'), 'utf8'))?.[1]);
   assert.match(glossary, new RegExp(`voxel[^.]*${side} m wide`), `a voxel's width is the core's (${side} m)`);
   await ready(page);
   await page.locator('#tour-close').click(); // the tour points at its controls no more

@@ -3,7 +3,7 @@
  * The brain families the page offers (the core's list: `defaults().controllers`), named for a
  * newcomer, and the two facts about a family the page acts on: whether it has the paper's
  * attention block (so it can be fine-tuned, frozen mid-walk, its a, b, c, d read), and whether
- * one genome drives every body (a brain for any body: `crate/src/controllers/any_body.rs`; it
+ * one genome drives every body (a brain for any body: `crate/engine/src/controllers/any_body.rs`; it
  * crosses to a new body whole, keeps its genes through every edit, and a body search with it
  * frozen evolves bodies only). No imports: the viewer's worker reads it too.
  */

@@ -1,7 +1,7 @@
 // @ts-check
 /**
  * A terrain the core refused, said in a student's words: what the usual terrains are, with
- * examples. The rule itself is the core's (crate/src/simulation/terrain.rs, through the wasm
+ * examples. The rule itself is the core's (crate/engine/src/simulation/terrain.rs, through the wasm
  * core's checkTerrain), whose exact words come with it, folded, for those who want them.
  * What the examples mean, as terrain.rs builds them: hilly-H-W-SEED is a random walk, a corner
  * about every W m, each one higher or lower than the last by a random amount of typical size H m;

@@ -24,7 +24,7 @@
  * Worker -> page
  *   {type: 'ready', physics}             the wasm module is instantiated; physics: the
  *                                        core's constants the drawing needs, {@link Physics}
- *                                        (defaults().physics, crate/src/experiment/playground.rs),
+ *                                        (defaults().physics, crate/engine/src/experiment/playground.rs),
  *                                        sent here so that no copy of them lives in the page
  *   {type: 'loaded', params, carried, voxels, controller, cells, terrainXs, terrainYs, attentionTerms}
  *                                        a new episode replaced the previous one;
@@ -43,7 +43,7 @@
  *                                        must start a new worker)
  *
  * Frame buffers (all Float32Array, n = number of voxels, lengths in floats; the same
- * layouts are documented on the Rust getters in crate/src/wasm/episode.rs):
+ * layouts are documented on the Rust getters in crate/wasm/src/episode.rs):
  *   corners  8n   voxel i at 8i: outer corner points x, y in order SW, SE, NE, NW (m)
  *   areas     n   voxel i at i: area / rest area, physics.areaContracted .. areaExpanded
  *   bodies  12n   voxel i at 12i: four rigid corner squares (physics.cornerSide wide) as centre x,

@@ -200,7 +200,7 @@ function postFrame() {
   const now = performance.now();
   lastFramePosted = now;
   updateRates(episode, now);
-  // The core's part of the frame (crate/src/wasm/controlled.rs, `frame`); the rest is added here.
+  // The core's part of the frame (crate/wasm/src/controlled.rs, `frame`); the rest is added here.
   const frame = /** @type {Omit<import('./protocol.js').Frame, 'velocity' | 'frozen' | 'simPerWall' | 'simPerCompute'>} */ (episode.frame());
   scope.postMessage({
     type: FromWorker.FRAME, ...frame, velocity: episode.velocity, frozen: episode.attentionFrozen,
