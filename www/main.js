@@ -91,7 +91,10 @@ const modules = new ModuleList(document, {
 }, defaults.attentionGenes, defaults.presets);
 const race = new Race(document, { module: () => modules.selected(), terrain: () => viewer.terrain.value.trim(), message: showMessage });
 const runs = new RunPanel(document, defaults, {
-  body: () => ({ rows: drawing.rows(), ok: robot?.check.ok ?? false }), // the panel asks before the robot is made
+  body: () => { // the panel asks before the robot is made; a drawing that breaks a challenge's rules is not evolved
+    const why = challenge?.problem(drawing.rows()) ?? '';
+    return { rows: drawing.rows(), ok: (robot?.check.ok ?? false) && !why, why: why && `your robot breaks the challenge's rules (${why}): change the drawing to keep them` };
+  },
   controller: () => controllerSelect.value,
   source: () => (robot?.brain && hasAttention(robot.brain.controller) ? robot.brain.source : null),
   sourceKind: () => robot?.brain?.controller ?? 'attention',
@@ -298,3 +301,4 @@ challenge = new Challenge(document, lab, {
 });
 
 start().then(() => challenge.begin()).then(() => tour.begin());
+  refresh: () => robot.updateButtons(),

@@ -144,7 +144,7 @@ test('a class challenge: ranked by the link the teacher made, duplicates, the sa
   assert.match(String(await page.locator('#challenge-rules').textContent()), /^What your students will see: Challenge: the body 1111-1111-1001,/);
   assert.equal(await page.locator('#challenge-fixed').isChecked(), true);
   assert.equal(await byTestId(page, 'challenge-compare').inputValue(), pasted);
-  assert.match(String(await byTestId(page, 'challenge-status').textContent()), /^Back from your last visit: the challenge link you made and the class's 11 links\. Press “Rank the class”/);
+  assert.match(String(await byTestId(page, 'challenge-status').textContent()), /^Back from your last visit: the challenge link you made, the class's 11 links and codes\. Press “Rank the class” to rank them again, or “Clear the class's entries”/);
   await byTestId(page, 'challenge-compare').fill(`Ana ${links[0]}`);
   ({ rows, caption } = await rank(page));
   assert.match(caption, /^Ranked by the rules of the challenge link you made: the body 1111-1111-1001;/, 'ranked by the kept rules');
@@ -163,7 +163,7 @@ test('a class challenge: ranked by the link the teacher made, duplicates, the sa
   await student.page.context().close();
 });
 
-test('a challenge of at most 12 voxels: a student\'s drawing of 13 is told at once, in the words of the teacher\'s table', async () => {
+test('a challenge of at most 12 voxels: a student\'s drawing of 13 is told at once, in the words of the teacher\'s table, and Evolve is off until it keeps the rules', async () => {
   const small = await openPage(env.browser, `${env.url}?challenge=1&terrain=hilly-1-10-0&voxels=12`, { width: 1400, height: 900 });
   await waitForText(small.page, 'challenge-rules', /any body of at most 12 voxels/);
   await small.page.locator('#rows').fill('11111-11111-11100');
@@ -172,10 +172,19 @@ test('a challenge of at most 12 voxels: a student\'s drawing of 13 is told at on
   await waitForText(small.page, 'rule-warning', /breaks the challenge's rules: 13 voxels, more than the challenge's 12\. Your teacher's ranking will not count it/, 5_000);
   assert.deepEqual(await small.page.locator('#editor').boundingBox(), grid, 'the warning does not move the grid under the student\'s finger');
   assert.equal(await small.page.locator('#editor.breaks-rules').count(), 1, 'the grid itself is outlined (the line under it may be off a phone\'s screen)');
+  // Evolve is off while it does, said beside it (and the line stays: it is not a message that goes).
+  assert.equal(await byTestId(small.page, 'evolve').isDisabled(), true, 'Evolve is off');
+  await waitForText(small.page, 'run-blocked', /^Evolve is off: your robot breaks the challenge's rules \(13 voxels, more than the challenge's 12\)\. Change the drawing/, 5_000);
+  assert.match(String(await byTestId(small.page, 'evolve').getAttribute('title')), /^Evolve is off: your robot breaks the challenge's rules/);
+  await byTestId(small.page, 'evolve').scrollIntoViewIfNeeded();
+  await small.page.screenshot({ path: path.join(SCREENSHOTS, 'challenge-evolve-off-1400.png') });
+  assert.equal(await byTestId(small.page, 'run-blocked').isVisible(), true, 'still said');
   await small.page.locator('#rows').fill('11111-11111-11000');
   await small.page.locator('#rows').press('Enter');
   await byTestId(small.page, 'rule-warning').waitFor({ state: 'hidden', timeout: 5_000 }); // 12 voxels: within the rules again
   assert.equal(await small.page.locator('#editor.breaks-rules').count(), 0);
+  await small.page.waitForFunction(() => !(/** @type {HTMLButtonElement} */ (document.getElementById('run-evolve'))).disabled, undefined, { timeout: 5_000 });
+  assert.equal(await byTestId(small.page, 'run-blocked').isVisible(), false, 'within the rules: Evolve on, nothing said');
   assert.deepEqual(small.problems, []);
   await small.page.context().close();
 });

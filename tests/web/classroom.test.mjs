@@ -23,6 +23,7 @@ import path from 'node:path';
 import { after, before, test } from 'node:test';
 import { EVOLVE_FIRST, EXERCISES, TASKS, exerciseOf } from '../../www/classroom/exercises.js';
 import { GUIDE, LESSONS } from '../../www/classroom/lesson-plan.js';
+import { EXAMPLE_CODE } from '../../www/classroom/challenge-code.js';
 import { CHAPTERS, RUN_TIME } from '../../www/tour/chapters.js';
 import { ROOT, SCREENSHOTS, byTestId, figure, openPage, screenshot, start, waitForText } from './harness.mjs';
 
@@ -215,11 +216,19 @@ test('Print worksheet: every chapter\'s task, room to write and its link, printe
     assert.ok(text.includes(`https://class.example.org/vsr/?chapter=${i + 1}`) && !text.includes('#x'), `chapter ${i + 1}'s link at the class's address: ${text}`);
     assert.equal(await tasks.nth(i).locator('.sheet-write').count(), 1, 'room to write');
   }
+  // The class challenge's box: the short code a letter a box, in the code's groups of four, with the page's real example.
+  const box = byTestId(page, 'worksheet-challenge');
+  assert.match(String(await box.textContent()), new RegExp(`^Class challenge: my robotAfter “Share link”, my page shows my robot's short code \\(like ${EXAMPLE_CODE}\\)\\. I copy it here`));
+  assert.equal(await box.locator('.sheet-code-box').count(), 16, 'sixteen boxes, four groups of four');
+  const boxSize = await box.locator('.sheet-code-box').first().boundingBox();
+  assert.ok(boxSize && boxSize.width >= 20 && boxSize.height >= 24, `a box a hand can write a letter in: ${JSON.stringify(boxSize)}`);
   await page.emulateMedia({ media: 'print' });
   assert.equal(await page.locator('main').isVisible(), false, 'printed, the playground is away');
   assert.equal(await page.locator('#tour-box').isVisible(), false, 'and the tour');
   assert.equal(await sheet.isVisible(), true, 'the worksheet prints');
   await page.screenshot({ path: path.join(SCREENSHOTS, 'classroom-worksheet-print.png'), fullPage: true });
+  assert.equal(await box.isVisible(), true, 'the challenge box prints');
+  await box.screenshot({ path: path.join(SCREENSHOTS, 'worksheet-challenge-box.png') });
   const pdf = path.join(SCREENSHOTS, 'worksheet.pdf');
   await page.pdf({ path: pdf, format: 'A4', margin: { top: '15mm', bottom: '15mm', left: '15mm', right: '15mm' } });
   const bytes = readFileSync(pdf, 'latin1');

@@ -1,10 +1,15 @@
 // @ts-check
 /**
  * The class's entries: every line of the teacher's compare box read with the page's own link
- * reader (keep/share.js), or as a short code (challenge-code.js: the robot evolved again here with the
- * challenge's run, its check compared), checked against the challenge's rules
- * (challenge-rules.js), its robot measured again by the page on the challenge's terrain for its
- * episode (lab.js: the speed the link claims is never trusted), then put in order.
+ * reader (keep/share.js), or as a short code (challenge-code.js), checked against the challenge's
+ * rules (challenge-rules.js), a link's robot measured again by the page on the challenge's terrain
+ * for its episode (lab.js: the speed a link claims is never trusted), then put in order.
+ *
+ * A short code is ranked at once by the speed the student's page measured, which it holds: that
+ * speed is said as claimed, not checked. Checking it (checkCode) evolves the robot again here with
+ * the challenge's run (13 to 27 s on a school laptop), compares the genome's check and measures it
+ * again: from then on its speed is this page's own. A code checked once is not evolved again
+ * (the caller keeps its genome, challenge-store.js).
  *
  * What the table says of an entry, and whether it gets a place:
  * - a rule broken (another body, more voxels, a budget over the challenge's), or a link that
@@ -18,8 +23,9 @@
  */
 import { messageOf } from '../workers/kit.js';
 import { decodeState } from '../keep/share.js';
-import { genomeCheck, looksLikeCode, readCode } from './challenge-code.js';
+import { genomeCheck, looksLikeCode, normalCode, readCode } from './challenge-code.js';
 import { bodyProblem, budgetProblem, runSettings } from './challenge-rules.js';
+import { decimal } from '../shared/format.js';
 
 /**
  * @typedef {object} Entry  one line of the compare box, read and measured
@@ -29,13 +35,16 @@ import { bodyProblem, budgetProblem, runSettings } from './challenge-rules.js';
  * @property {string} robot  its body and genome, to find the same robot under another name ('' when unread)
  * @property {string} same  the name of the same robot raced in its place ('' when it races itself)
  * @property {{controller: string, genome: Float32Array} | null} genome
+ * @property {string} code  a short code's one spelling ('' for a link)
+ * @property {boolean} claimed  its speed is the one its code claims, not measured here (a code not checked yet)
+ * @property {number} check  a short code's genome check (to compare once evolved again)
  */
 
 /**
- * What an entry needs of the page: evolve (a short code's robot evolved again with the
- * challenge's run: its best genome) and say (what the ranking does now, for the teacher).
+ * What an entry needs of the page: the lab (walks), the page's defaults, and the genomes of the
+ * short codes checked before (by a code's one spelling; their robots are not evolved again).
  * @typedef {{lab: import('./lab.js').Lab, defaults: import('../workers/core.js').Defaults,
- *   evolve?: (settings: import('../workers/protocol.js').EvolveSettings) => Promise<Float32Array>, say?: (text: string) => void}} Tools
+ *   checked?: (code: string) => Float32Array | null}} Tools
  */
 
 /**
@@ -58,7 +67,7 @@ const pageOf = (path) => path.replace(/index\.html$/, '');
 
 /** @param {string} name @returns {Entry} an entry with nothing read yet */
 function blank(name) {
-  return { name, rows: '', brain: '', speed: NaN, problem: '', notes: [], robot: '', same: '', genome: null };
+  return { name, rows: '', brain: '', speed: NaN, problem: '', notes: [], robot: '', same: '', genome: null, code: '', claimed: false, check: 0 };
 }
 
 /**
@@ -73,7 +82,7 @@ export async function rankEntries(text, r, tools) {
   /** @type {Map<string, string>} a link's robot part → the name it was first pasted under */
   const pasted = new Map();
   for (const { name, link } of linesOf(text)) {
-    const key = link.includes('#') ? link.slice(link.indexOf('#')) : looksLikeCode(link) ? link.toUpperCase().replace(/O/g, '0').replace(/[IL]/g, '1') : link;
+    const key = link.includes('#') ? link.slice(link.indexOf('#')) : looksLikeCode(link) ? normalCode(link) : link;
     const first = pasted.get(key);
     if (first !== undefined) {
       entries.push({ ...blank(name), problem: `the same link as ${first}: counted once, in ${first}'s row` });
@@ -82,11 +91,69 @@ export async function rankEntries(text, r, tools) {
     pasted.set(key, name);
     entries.push(await readEntry(name, link, r, tools));
   }
+  return order(entries);
+}
+
+/**
+ * Entries in order: the placed ones fastest first (a claimed speed as it claims), then the
+ * others; the same robot under two names said (notes made afresh).
+ * @param {Entry[]} entries @returns {{placed: Entry[], others: Entry[]}}
+ */
+export function order(entries) {
+  for (const e of entries) { e.notes = e.notes.filter((n) => !SAME.test(n)); e.same = ''; }
   const placed = entries.filter((e) => !e.problem).sort((a, b) => b.speed - a.speed);
   const others = entries.filter((e) => e.problem);
   markSameRobots([...placed, ...others]);
   return { placed, others };
 }
+
+/** The notes markSameRobots writes (taken away before it writes them again). */
+const SAME = /^(the same robot as .* under another name|raced once, as .*)$/;
+
+/** Short codes in `placed` whose speed is claimed, not checked: the best first. @param {Entry[]} placed */
+export function unchecked(placed) {
+  return placed.filter((e) => e.claimed);
+}
+
+/**
+ * Checks a short code's claimed entry: its robot evolved again with the challenge's run (or its
+ * genome checked before), its check compared, then measured here. Gives the entry as it now is.
+ * @param {Entry} entry @param {import('./challenge-rules.js').Rules} r @param {Tools} tools
+ * @param {(settings: import('../workers/protocol.js').EvolveSettings) => Promise<Float32Array>} evolve
+ * @returns {Promise<Entry>}
+ */
+export async function checkCode(entry, r, { lab, defaults, checked }, evolve) {
+  const claim = entry.speed;
+  const base = { ...entry, claimed: false, notes: entry.notes.filter((n) => n !== CLAIMED) };
+  /** @type {Float32Array} */
+  let genome;
+  const kept = checked?.(entry.code) ?? null;
+  try {
+    genome = kept ?? await evolve(runSettings(r, entry.rows, entry.brain));
+  } catch (error) {
+    if (error instanceof Error && error.name === 'AbortError') throw error; // stopped by the teacher: the entry stays claimed
+    return { ...base, speed: NaN, problem: `could not be evolved again: ${messageOf(error)}` };
+  }
+  if (genomeCheck(genome) !== entry.check) {
+    return { ...base, speed: NaN, problem: 'its check letters do not match the robot its body makes with the challenge\'s run '
+      + `(a letter typed wrong, a run stopped early, or a robot made another way): ask ${entry.name} for the link` };
+  }
+  const brain = { controller: entry.brain, genome };
+  const measured = { ...base, genome: brain, robot: robotKey(entry.rows, brain, defaults.gait),
+    notes: [CHECKED, ...base.notes.filter((n) => n !== CHECKED)] };
+  try {
+    const walk = await lab.walk({ rows: entry.rows, terrain: r.terrain, seconds: r.seconds, brain });
+    const differs = Math.abs(walk.speed - claim) > 0.005;
+    return { ...measured, speed: walk.speed,
+      notes: differs ? [...measured.notes, `its code claimed ${decimal(claim)} m/s: the speed measured here counts`] : measured.notes };
+  } catch (error) {
+    return { ...measured, speed: NaN, problem: `could not be measured: ${messageOf(error)}` };
+  }
+}
+
+/** What the table says of a code's speed, claimed or checked. */
+export const CLAIMED = 'short code: its speed as the student\'s page measured it, claimed, not checked here yet';
+export const CHECKED = 'short code: checked (evolved again here with the challenge\'s run, the same robot to the bit, measured here)';
 
 /**
  * The same robot (body and genome) under two names: each says so; the first in order races, the rest do not.
@@ -158,39 +225,21 @@ async function readEntry(name, link, r, tools) {
 }
 
 /**
- * One line that is a short code: its robot evolved again with the challenge's run, its check
- * compared with the genome that makes, then measured as a link's robot is.
+ * One line that is a short code: read, its body checked against the rules, placed by the speed
+ * it claims (or, checked before, measured here at once).
  * @param {string} name @param {string} text @param {import('./challenge-rules.js').Rules} r @param {Tools} tools
  * @returns {Promise<Entry>}
  */
-async function readCodeEntry(name, text, r, { lab, defaults, evolve, say }) {
+async function readCodeEntry(name, text, r, tools) {
   const entry = blank(name);
   const code = readCode(text);
   if ('error' in code) return { ...entry, problem: `not a short code (${code.error}): ask ${name} to type it again, or to send the link` };
-  const named = { ...entry, rows: code.rows, brain: code.controller, notes: ['handed in as a short code: evolved again here with the challenge\'s run'] };
+  const named = { ...entry, rows: code.rows, brain: code.controller, code: normalCode(text), check: code.check };
   const broken = bodyProblem(code.rows, r);
   if (broken) return { ...named, problem: broken };
-  if (!evolve) return { ...named, problem: 'a short code needs the page\'s evolution, which this ranking does not have' };
-  /** @type {Float32Array} */
-  let genome;
-  try {
-    say?.(`Evolving ${name}'s robot again from its short code, with the challenge's run…`);
-    genome = await evolve(runSettings(r, code.rows, code.controller));
-  } catch (error) {
-    return { ...named, problem: `could not be evolved again: ${messageOf(error)}` };
-  }
-  if (genomeCheck(genome) !== code.check) {
-    return { ...named, problem: 'its check letters do not match the robot its body makes with the challenge\'s run '
-      + `(a letter typed wrong, a run stopped early, or a robot made another way): ask ${name} for the link` };
-  }
-  const brain = { controller: code.controller, genome };
-  const measured = { ...named, genome: brain, robot: robotKey(code.rows, brain, defaults.gait) };
-  try {
-    const walk = await lab.walk({ rows: code.rows, terrain: r.terrain, seconds: r.seconds, brain });
-    return { ...measured, speed: walk.speed };
-  } catch (error) {
-    return { ...measured, problem: `could not be measured: ${messageOf(error)}` };
-  }
+  const claimed = { ...named, speed: code.speed, claimed: true, notes: [CLAIMED] };
+  if (tools.checked?.(claimed.code)) return checkCode(claimed, r, tools, () => Promise.reject(new Error('no evolution')));
+  return claimed;
 }
 
 /** A share link's phase gait, "F,PHI" (checked by the link reader). @param {string} text */

@@ -115,7 +115,7 @@ export function rulesWords(r) {
   return `Challenge: ${bodyWords(r)}, as fast as it can over ${r.seconds} s on ${r.terrain}. `
     + `1 · ${r.body ? 'Your body is drawn for you' : 'Draw your robot'}. `
     + `2 · Evolve its brain: the run is set for you (${budgetWords(r)}, seed ${r.seed}, ${r.seconds}-s walks), the same on every computer. `
-    + '3 · Press “Share link” and give your teacher the short code it shows (or the link), who makes and walks every robot again the same way. '
+    + '3 · Press “Share link” and give your teacher the short code it shows (or the link): their page ranks it and can check it by making your robot again the same way. '
     + `The speed under the robot is over its own walk: ${r.seconds} s for a robot you evolve here; a brain from the list of modules walks `
     + 'as long as it trained (its details, under “3 · Give it a brain”, say how long), so its speed is not one to compare with yours.';
 }

@@ -1,7 +1,8 @@
 // @ts-check
 /**
  * The teacher's ranking table: the placed entries, fastest first, then the entries without a
- * place, each with why in its note (challenge-entries.js decides which is which).
+ * place, each with why in its note (challenge-entries.js decides which is which). A speed a short
+ * code claims (not checked here yet) says “claimed” beside it; a measured one does not.
  */
 import { decimal } from '../shared/format.js';
 
@@ -30,9 +31,10 @@ export function showRanking(table, ranking, caption) {
     const row = body.insertRow();
     row.dataset.testid = 'challenge-entry';
     row.dataset.problem = String(e.problem !== '');
+    row.dataset.claimed = String(e.claimed);
     const measured = Number.isFinite(e.speed);
     const note = [e.problem, ...e.notes].filter((n) => n !== '').join('; ');
-    for (const c of [place, e.name, e.rows || '–', e.brain || '–', measured ? `${decimal(e.speed)} m/s` : '–', note]) row.insertCell().textContent = c;
+    for (const c of [place, e.name, e.rows || '–', e.brain || '–', measured ? `${decimal(e.speed)} m/s${e.claimed ? ' claimed' : ''}` : '–', note]) row.insertCell().textContent = c;
     // A body may break between its rows, after each "-", and nowhere else.
     row.cells[2].replaceChildren(...e.rows.split('-').flatMap((part, i) => (i ? ['-', doc.createElement('wbr'), part] : [part])));
     if (!e.rows) row.cells[2].textContent = '–';

@@ -5,25 +5,35 @@
  * ordinary share link. The teacher pastes the class's links (one a line, a name before each if
  * wanted) into the compare box, and the page ranks them (challenge-entries.js) by the rules of
  * the link the teacher made (or of the challenge link the page was opened from): never by the
- * form or the drawing as they are when Rank is pressed, which may have changed since. The rules
- * made and the links pasted are kept for the teacher's next visit (challenge-store.js). The best
- * four with a brain race side by side.
+ * form or the drawing as they are when Rank is pressed, which may have changed since. A student
+ * may hand in a short code instead (challenge-code.js): ranked at once by the speed it claims,
+ * said as claimed; Rank then checks the best four (each evolved again here, 13 to 27 s on a
+ * school laptop, said before it starts, its progress shown, stoppable), and “Check every code”
+ * the rest. The rules made, the links and codes pasted and the codes checked are kept for the
+ * teacher's next visit (challenge-store.js) until “Clear the class's entries”. The best four
+ * with a brain race side by side. A student's drawing that breaks the rules is said under the
+ * grid, and Evolve is off until it keeps them (problem, read by the run panel).
  */
 import { checkTerrain, runGenome } from '../workers/core.js';
 import { byId } from '../shared/dom.js';
 import { messageOf } from '../workers/kit.js';
 import { terrainRefused } from '../viewer/terrain-words.js';
-import { linesOf, rankEntries } from './challenge-entries.js';
-import { evolveAgain, looksLikeCode, readCode, robotCode } from './challenge-code.js';
+import { checkCode, linesOf, order, rankEntries, unchecked } from './challenge-entries.js';
+import { EXAMPLE_CODE, looksLikeCode, normalCode, readCode, robotCode } from './challenge-code.js';
+import { evolveAgain } from './challenge-evolve.js';
 import { bodyProblem, challengeLink, rankingWords, rulesFrom, rulesOf, rulesWords, runOf, runSettings, sameRules } from './challenge-rules.js';
 import { loadQr, qrBox } from './qr.js';
 import { onlyHere } from './sheet-address.js';
 import { durationWords } from '../runs/progress.js';
-import { keepChallenge, loadChallenge } from './challenge-store.js';
+import { decimal } from '../shared/format.js';
+import { checkKey, genomeOf, genomeText, keepChallenge, loadChallenge } from './challenge-store.js';
 import { showRanking } from './challenge-table.js';
 
 /** @typedef {import('./challenge-rules.js').Rules} Rules */
 /** @typedef {import('./challenge-entries.js').Entry} Entry */
+
+/** How many of the best Rank checks at once: the race's four. */
+const BEST = 4;
 
 export class Challenge {
   /**
@@ -31,9 +41,10 @@ export class Challenge {
    * @param {{defaults: import('../workers/core.js').Defaults, rows: () => string, setView: (terrain: string) => void,
    *   fixRun: (values: Record<string, string>) => void, setBody: (rows: string) => Promise<void>,
    *   race: import('../viewer/race.js').Race, message: (text: string) => void, pin: (text: string) => void,
-   *   runSeconds: (settings: import('../workers/protocol.js').EvolveSettings) => number,
+   *   runSeconds: (settings: import('../workers/protocol.js').EvolveSettings) => number, refresh: () => void,
    *   lastRun: () => {runFile: string | null, settings: import('../workers/protocol.js').EvolveSettings | null, mode: string}}} page
    *   fixRun: the run settings every student's run uses, locked; runSeconds: how long a run takes here (NaN: not known);
+   *   refresh: the page's buttons set again (Evolve is off while the drawing breaks the rules);
    *   lastRun: the page's latest finished run (its run file), its settings and mode
    */
   constructor(doc, lab, page) {
@@ -57,12 +68,27 @@ export class Challenge {
     this.table = byId(doc, 'challenge-table', HTMLTableElement);
     this.rankButton = byId(doc, 'challenge-rank', HTMLButtonElement);
     this.raceButton = byId(doc, 'challenge-race', HTMLButtonElement);
+    /** Checks every short code not checked yet; stops the checking; forgets the class's entries. */
+    this.checkButton = byId(doc, 'challenge-check', HTMLButtonElement);
+    this.stopButton = byId(doc, 'challenge-stop', HTMLButtonElement);
+    this.clearButton = byId(doc, 'challenge-clear', HTMLButtonElement);
+    /** How long ranking the box's lines will take, said as they are pasted. */
+    this.estimate = byId(doc, 'challenge-estimate');
+    /** What Evolve says while a student's drawing breaks the rules (beside the run's buttons). */
+    this.runBlocked = byId(doc, 'run-blocked');
+    this.box.placeholder = `Ana ${EXAMPLE_CODE}\nBen https://…#shape=…`; // a real code (challenge-code.js)
     /** The line under the grid that says which rule a student's drawing breaks, while it does. */
     this.warning = byId(doc, 'rule-warning');
     /** The grid, outlined while the drawing breaks the rules (the line under it may be off a phone's screen). */
     this.grid = byId(doc, 'editor');
     /** @type {Entry[]} the placed entries of the last ranking, fastest first */
     this.ranked = [];
+    /** @type {Entry[]} every entry of the last ranking, placed or not */
+    this.entries = [];
+    /** The last ranking's caption. */
+    this.caption = '';
+    /** @type {AbortController | null} the checking under way */
+    this.checking = null;
     /** @type {Rules | null} the rules of the last ranking */
     this.rankedBy = null;
     /** @type {Rules | null} the rules of the challenge link this page was opened from (a student's page) */
@@ -70,13 +96,24 @@ export class Challenge {
     const kept = loadChallenge();
     /** @type {Rules | null} the rules of the challenge link the teacher made, as they were when it was made */
     this.made = kept.rules;
+    /** @type {Record<string, string>} the genomes of the short codes checked here, by checkKey */
+    this.checked = kept.checked ?? {};
     /** Whether the last keep failed (said once, not at every key). */
     this.unkept = false;
+    /** @type {ReturnType<typeof setTimeout> | undefined} the estimate said again once this computer's pace is known */
+    this.estimateTimer = undefined;
+    /** How long a short code took to check here, on average (s; 0 before the first). */
+    this.tookPerCode = 0;
     byId(doc, 'challenge-make', HTMLButtonElement).addEventListener('click', () => { this.make().catch((error) => this.say(`The challenge link could not be made: ${messageOf(error)}`)); });
     this.rankButton.addEventListener('click', () => this.rank());
     this.raceButton.addEventListener('click', () => this.raceBest());
-    this.box.addEventListener('input', () => this.keep());
+    this.checkButton.addEventListener('click', () => this.checkAll());
+    this.stopButton.addEventListener('click', () => this.checking?.abort());
+    this.clearButton.addEventListener('click', () => this.clear());
+    this.box.addEventListener('input', () => { this.keep(); this.showEstimate(); });
     this.raceButton.disabled = true;
+    this.checkButton.disabled = true;
+    this.stopButton.hidden = true;
     this.restore(kept.links);
   }
 
@@ -102,6 +139,7 @@ export class Challenge {
   restore(links) {
     if (links) this.box.value = links;
     const made = this.made;
+    setTimeout(() => this.showEstimate(), 0); // the lines kept, counted (once the form holds the kept rules)
     if (made && !this.opened) {
       const f = this.form;
       f.terrain.value = made.terrain;
@@ -114,14 +152,16 @@ export class Challenge {
     }
     if (this.opened || (!made && !links)) return;
     const count = linesOf(links).length;
-    const back = [made ? 'the challenge link you made' : '', count ? `the class's ${count} link${count === 1 ? '' : 's'}` : ''].filter(Boolean).join(' and ');
-    this.say(`Back from your last visit: ${back}.${count ? ' Press “Rank the class” to measure and rank them again.' : ''}`);
+    const checks = Object.keys(this.checked).length;
+    const back = [made ? 'the challenge link you made' : '', count ? `the class's ${count} link${count === 1 ? '' : 's'} and code${count === 1 ? '' : 's'}` : '',
+      checks ? `${checks} short code${checks === 1 ? '' : 's'} already checked (not evolved again)` : ''].filter(Boolean).join(', ');
+    this.say(`Back from your last visit: ${back}.${count ? ' Press “Rank the class” to rank them again, or “Clear the class\'s entries” to start a new class.' : ''}`);
     this.teacher.open = true;
   }
 
   /** Keeps the made rules and the pasted links for the next visit; says once if it cannot. */
   keep() {
-    const why = keepChallenge({ rules: this.made, links: this.box.value });
+    const why = keepChallenge({ rules: this.made, links: this.box.value, checked: this.checked });
     if (why && !this.unkept) this.say(`Note: ${why}.`);
     this.unkept = why !== '';
   }
@@ -144,6 +184,8 @@ export class Challenge {
     this.page.setView(r.terrain);
     this.page.fixRun(runOf(r)); // everyone's run the same, trained over the walks it is measured on
     if (r.body) await this.page.setBody(r.body).catch((error) => this.page.message(`the challenge's body: ${messageOf(error)}`));
+    this.watch(this.page.rows()); // the drawing kept from an earlier visit may already break the rules
+    this.page.refresh();
   }
 
   /**
@@ -152,11 +194,23 @@ export class Challenge {
    */
   watch(rows) {
     if (!this.opened || this.section.dataset.mode !== 'student') return;
-    const problem = rows ? bodyProblem(rows, this.opened) : '';
+    const problem = this.problem(rows);
     // Under the grid, not above it: a line that appeared above would move the grid under the student's finger.
-    this.warning.textContent = problem ? `Your robot breaks the challenge's rules: ${problem}. Your teacher's ranking will not count it: change the drawing (Undo goes back a step).` : '';
+    this.warning.textContent = problem ? `Your robot breaks the challenge's rules: ${problem}. Your teacher's ranking will not count it, and Evolve is off until it keeps them: change the drawing (Undo goes back a step).` : '';
     this.warning.hidden = !problem;
     this.grid.classList.toggle('breaks-rules', problem !== '');
+    // Beside Evolve as well, for as long as the drawing breaks them (the run panel turns Evolve off: main.js).
+    this.runBlocked.textContent = problem ? `Evolve is off: your robot breaks the challenge's rules (${problem}). Change the drawing under “1 · Draw” to keep them.` : '';
+    this.runBlocked.hidden = !problem;
+  }
+
+  /**
+   * Why a student's drawing may not be evolved in the challenge this page was opened from ('' when
+   * it may, or when there is no challenge). @param {string} rows
+   */
+  problem(rows) {
+    if (!this.opened || this.section.dataset.mode !== 'student' || !rows) return '';
+    return bodyProblem(rows, this.opened);
   }
 
   /**
@@ -173,6 +227,8 @@ export class Challenge {
     this.opened = null; // a new challenge made here, not the one the page was opened from
     this.warning.hidden = true;
     this.grid.classList.remove('breaks-rules');
+    this.runBlocked.hidden = true;
+    this.page.refresh(); // Evolve free again: this page's drawing is the teacher's
     this.made = this.formRules();
     this.showMade(this.made);
     this.keep();
@@ -206,11 +262,16 @@ export class Challenge {
           : !last.runFile || last.mode !== 'evolve' || !sameRun ? 'its brain is not the challenge\'s run of the body drawn now (was the body changed after the run?)'
             : spent < want.budget ? 'the run was stopped before its end: press Evolve again and let it finish'
               : !same(await runGenome(last.runFile)) ? 'its brain is not the run\'s result (was it edited?)' : '';
-    const code = why || !brain ? null : robotCode(state.rows, brain.controller, brain.genome);
+    // The speed in the code: the robot walked as the teacher's page walks it (the challenge's terrain and walk).
+    const speed = why || !brain ? NaN
+      : await this.lab.walk({ rows: state.rows, terrain: r.terrain, seconds: r.seconds, brain: { controller: brain.controller, genome: brain.genome } })
+        .then((w) => w.speed, () => NaN);
+    const code = why || !brain ? null : robotCode(state.rows, brain.controller, brain.genome, speed);
     this.codeLine.dataset.code = code ?? '';
     this.codeLine.textContent = code
-      ? `Your short code: ${code}. Give your teacher this code (or the link): their page evolves your robot again from it, exactly.`
-      : `No short code for this robot (${why || 'a body too large for a code'}): send your teacher the link.`;
+      ? `Your short code: ${code} (your robot's speed over ${r.seconds} s on ${r.terrain}: ${decimal(speed)} m/s, in the code). `
+        + 'Give your teacher this code (or the link): their page ranks it by that speed and can check it by evolving your robot again, exactly.'
+      : `No short code for this robot (${why || (Number.isFinite(speed) ? 'a body too large for a code' : 'its speed could not be measured')}): send your teacher the link.`;
     this.codeLine.hidden = false;
   }
 
@@ -228,7 +289,59 @@ export class Challenge {
     this.rulesLine.hidden = false;
   }
 
-  /** Reads, measures and ranks every line of the compare box. */
+  /** The tools an entry needs, with the codes checked before under the rules `r`. @param {Rules} r */
+  tools(r) {
+    return { lab: this.lab, defaults: this.page.defaults, checked: (/** @type {string} */ code) => {
+      const text = this.checked[checkKey(r, code)];
+      return text ? genomeOf(text) : null;
+    } };
+  }
+
+  /**
+   * How long a short code takes to check here (s; NaN: not known yet): the challenge's run of its
+   * body, at this computer's pace (measured a few seconds after the page opens), or as the codes
+   * checked so far took. @param {Rules} r @param {string} rows @param {string} controller
+   */
+  codeSeconds(r, rows, controller) {
+    return this.tookPerCode > 0 ? this.tookPerCode : this.page.runSeconds(runSettings(r, rows, controller));
+  }
+
+  /**
+   * The box's lines counted, and how long ranking them takes, said under the box as they are
+   * pasted (before anything starts).
+   */
+  showEstimate() {
+    const lines = linesOf(this.box.value);
+    if (lines.length === 0) { this.estimate.hidden = true; return; }
+    const { rules } = this.rankingRules();
+    const codes = [...new Set(lines.map((l) => l.link).filter(looksLikeCode).map(normalCode))];
+    const links = lines.length - lines.filter((l) => looksLikeCode(l.link)).length;
+    /** @type {number[]} */
+    const toCheck = [];
+    let checkedBefore = 0;
+    for (const c of codes) {
+      const read = readCode(c);
+      if ('error' in read || bodyProblem(read.rows, rules)) continue;
+      if (this.checked[checkKey(rules, c)]) checkedBefore++;
+      else toCheck.push(this.codeSeconds(rules, read.rows, read.controller));
+    }
+    const best = toCheck.slice(0, BEST).reduce((a, b) => a + b, 0);
+    const all = toCheck.reduce((a, b) => a + b, 0);
+    const time = (/** @type {number} */ s) => (Number.isFinite(s) ? `about ${durationWords(s)}` : 'time not known yet (this computer\'s pace is measured a few seconds after the page opens)');
+    const parts = [`${lines.length} line${lines.length === 1 ? '' : 's'}: ${codes.length} short code${codes.length === 1 ? '' : 's'}`
+      + `${checkedBefore ? ` (${checkedBefore} checked before)` : ''}, ${links} link${links === 1 ? '' : 's'} or other line${links === 1 ? '' : 's'}.`,
+    `“Rank the class” takes seconds to measure the links and place the codes by the speeds their pages claim${toCheck.length
+      ? `, then checks the best ${Math.min(BEST, toCheck.length)} code${Math.min(BEST, toCheck.length) === 1 ? '' : 's'} by evolving ${Math.min(BEST, toCheck.length) === 1 ? 'its robot' : 'their robots'} again here: ${time(best)} (you can stop it).` : '.'}`,
+    toCheck.length > BEST ? `Checking every code (“Check every code”): ${time(all)} in all.` : ''];
+    this.estimate.textContent = parts.filter(Boolean).join(' ');
+    // This computer's pace is measured a few seconds after the page opens: the time said once it is known.
+    clearTimeout(this.estimateTimer);
+    if (toCheck.length && !Number.isFinite(all)) this.estimateTimer = setTimeout(() => this.showEstimate(), 1000);
+    this.estimate.dataset.seconds = String(best);
+    this.estimate.hidden = false;
+  }
+
+  /** Reads, measures and ranks every line of the compare box, then checks the best short codes. */
   async rank() {
     const { rules, source } = this.rankingRules();
     if (linesOf(this.box.value).length === 0) {
@@ -239,34 +352,126 @@ export class Challenge {
     const changed = this.made && !this.opened && !sameRules(this.formRules(), this.made)
       ? ' The form above (or the robot drawn now) differs from your link: it counts only once you make a new link.' : '';
     this.keep();
-    this.section.dataset.state = 'ranking';
-    this.rankButton.disabled = true;
-    // Short codes are evolved again here, one run each: how long that takes, said before it starts.
-    const codes = [...new Set(linesOf(this.box.value).map((l) => l.link).filter(looksLikeCode).map((c) => c.toUpperCase()))];
-    const seconds = codes.reduce((sum, c) => {
-      const read = readCode(c);
-      return 'error' in read ? sum : sum + this.page.runSeconds(runSettings(rules, read.rows, read.controller));
-    }, 0);
-    const evolving = codes.length === 0 ? ''
-      : ` ${codes.length} short code${codes.length === 1 ? '' : 's'}: each robot evolved again here with the challenge's run`
-        + `${Number.isFinite(seconds) && seconds > 0 ? `, about ${durationWords(seconds)} in all on this computer` : ''}.`;
-    this.say(`Measuring the class's robots over ${rules.seconds} s on ${rules.terrain}…${evolving}`);
+    this.busy(true);
+    this.say(`Measuring the class's robots over ${rules.seconds} s on ${rules.terrain}…`);
     try {
-      const ranking = await rankEntries(this.box.value, rules, { lab: this.lab, defaults: this.page.defaults, evolve: evolveAgain,
-        say: (text) => this.say(`${text}${evolving}`) });
-      this.ranked = ranking.placed;
+      const ranking = await rankEntries(this.box.value, rules, this.tools(rules));
+      this.entries = [...ranking.placed, ...ranking.others];
       this.rankedBy = rules;
-      showRanking(this.table, ranking, `${source}: ${rankingWords(rules)}.${changed}`);
-      // The race takes robots with a brain: when no placed robot has one, the button says why it is off.
-      this.say(ranking.placed.length && !this.racers(ranking.placed).length
-        ? 'No placed robot has a brain (the phase gait\'s clock drives them all), so there is nothing for “Race the best four” to race.' : '');
+      this.caption = `${source}: ${rankingWords(rules)}.${changed}`;
+      this.show();
+      await this.checkCodes(rules, BEST);
     } catch (error) {
       this.say(`The class could not be ranked: ${messageOf(error)}`);
     } finally {
-      this.rankButton.disabled = false;
-      this.raceButton.disabled = this.racers(this.ranked).length === 0;
-      this.section.dataset.state = 'ranked';
+      this.busy(false);
     }
+  }
+
+  /** Checks every short code not checked yet (the best first). */
+  async checkAll() {
+    const rules = this.rankedBy;
+    if (!rules) return;
+    this.busy(true);
+    try {
+      await this.checkCodes(rules, Infinity);
+    } catch (error) {
+      this.say(`The codes could not be checked: ${messageOf(error)}`);
+    } finally {
+      this.busy(false);
+    }
+  }
+
+  /** While the page ranks or checks: the buttons that would start another off, Stop on. @param {boolean} on */
+  busy(on) {
+    this.section.dataset.state = on ? 'ranking' : 'ranked';
+    this.rankButton.disabled = on;
+    this.clearButton.disabled = on;
+    this.raceButton.disabled = on || this.racers(this.ranked).length === 0;
+    this.checkButton.disabled = on || unchecked(this.ranked).length === 0;
+    if (!on) this.stopButton.hidden = true;
+  }
+
+  /**
+   * Checks the short codes claimed among the best `upTo` placed (Infinity: every one), the best
+   * first, each evolved again here: the table after each, the progress and time left said, Stop
+   * keeping the rest as claimed. @param {Rules} rules @param {number} upTo
+   */
+  async checkCodes(rules, upTo) {
+    const next = () => unchecked(this.ranked.slice(0, upTo))[0];
+    if (!next()) { this.sayRanked(''); return; }
+    const stopper = new AbortController();
+    this.checking = stopper;
+    this.stopButton.hidden = false;
+    this.stopButton.disabled = false;
+    let done = 0;
+    let stopped = false;
+    for (let entry = next(); entry; entry = next()) {
+      const waiting = unchecked(this.ranked.slice(0, upTo));
+      const left = waiting.length;
+      const total = waiting.reduce((sum, e) => sum + this.codeSeconds(rules, e.rows, e.brain), 0);
+      this.say(`Checking ${entry.name}'s short code: evolving the robot again here with the challenge's run (${done + 1} of ${done + left}`
+        + `${Number.isFinite(total) ? `, about ${durationWords(total)} left` : ''})… “Stop checking” keeps the rest as claimed.`);
+      const began = performance.now();
+      /** @type {Entry} */
+      let now;
+      try {
+        now = await checkCode(entry, rules, this.tools(rules), (settings) => evolveAgain(settings, stopper.signal));
+      } catch (error) {
+        if (error instanceof Error && error.name === 'AbortError') { stopped = true; break; }
+        throw error;
+      }
+      done++;
+      const took = (performance.now() - began) / 1000;
+      this.tookPerCode = this.tookPerCode > 0 ? (this.tookPerCode * (done - 1) + took) / done : took;
+      if (now.genome && !now.problem) this.checked[checkKey(rules, entry.code)] = genomeText(now.genome.genome);
+      this.entries = this.entries.map((e) => (e === entry ? now : e));
+      this.keep();
+      this.show();
+    }
+    this.checking = null;
+    this.sayRanked(stopped ? `Stopped after ${done} check${done === 1 ? '' : 's'}.` : `${done} short code${done === 1 ? '' : 's'} checked.`);
+  }
+
+  /** The last ranking in the table, in order. */
+  show() {
+    const ranking = order(this.entries);
+    this.ranked = ranking.placed;
+    const all = [...ranking.placed, ...ranking.others];
+    const claimed = all.filter((e) => e.claimed).length;
+    const measured = all.filter((e) => !e.claimed && Number.isFinite(e.speed)).length;
+    const speeds = ` Speeds: ${measured} measured by this page${claimed ? `, ${claimed} claimed by the student's page (a short code not checked yet: “claimed” beside its speed)` : ''}.`;
+    showRanking(this.table, ranking, `${this.caption}${speeds}`);
+  }
+
+  /** The line after a ranking: what was done, and what is left to check. @param {string} done */
+  sayRanked(done) {
+    const left = unchecked(this.ranked);
+    const rules = this.rankedBy;
+    const seconds = rules ? left.reduce((sum, e) => sum + this.codeSeconds(rules, e.rows, e.brain), 0) : NaN;
+    const claims = left.length ? ` ${left.length} speed${left.length === 1 ? ' is' : 's are'} claimed, not checked: “Check every code” checks `
+      + `${left.length === 1 ? 'it' : 'them'}${Number.isFinite(seconds) ? ` (about ${durationWords(seconds)})` : ''}.` : '';
+    // The race takes robots with a brain: when no placed robot has one, the button says why it is off.
+    const race = this.ranked.length && !this.racers(this.ranked).length && !left.length
+      ? ' No placed robot has a brain (the phase gait\'s clock drives them all), so there is nothing for “Race the best four” to race.' : '';
+    this.say(`${done}${claims}${race}`.trim());
+  }
+
+  /** Forgets the class's entries, the table and the codes checked (the challenge link stays), once the teacher confirms. */
+  clear() {
+    const count = linesOf(this.box.value).length;
+    const view = this.section.ownerDocument.defaultView;
+    if (count && !view?.confirm(`Forget the class's ${count} line${count === 1 ? '' : 's'} and every code checked? The challenge link stays.`)) return;
+    this.box.value = '';
+    this.checked = {};
+    this.entries = [];
+    this.ranked = [];
+    this.table.replaceChildren();
+    this.table.hidden = true;
+    this.keep();
+    this.showEstimate();
+    this.busy(false);
+    this.say(`Cleared: the class's ${count} line${count === 1 ? '' : 's'} and the codes checked are forgotten, here and for your next visit; the challenge link stays.`);
   }
 
   /** The best four of `placed` with a brain, each robot once. @param {Entry[]} placed */

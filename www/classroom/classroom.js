@@ -14,6 +14,7 @@ import { keepGuess } from './guess-lock.js';
 import { LESSON, lessonPlanNodes, lessonStepWords, lessonTimes } from './lesson-plan.js';
 import { loadQr, qrBox } from './qr.js';
 import { addressField, chapterLink, onlyHere, pageAddress } from './sheet-address.js';
+import { EXAMPLE_CODE } from './challenge-code.js';
 import { withTerms } from '../shared/simple-words.js';
 
 /**
@@ -250,6 +251,7 @@ export class Classroom {
     });
     sheet.scrollIntoView({ block: 'start' });
     if (print && !onlyHere(base)) setTimeout(() => doc.defaultView?.print(), 0);
+    sheet.append(challengeBox(doc));
     return sheet;
   }
 
@@ -323,4 +325,26 @@ export class Classroom {
     }
     sheet.dataset.state = 'done';
   }
+}
+
+/**
+ * The worksheet's box for the class challenge: the short code the student's page shows after
+ * “Share link” (a box a letter, in the code's groups of four: enough for a body of 8 × 5), its
+ * speed, and where to write that the link was sent instead. @param {Document} doc
+ */
+function challengeBox(doc) {
+  const part = make(doc, 'section', 'sheet-challenge');
+  part.dataset.testid = 'worksheet-challenge';
+  const code = make(doc, 'p', 'sheet-code');
+  code.setAttribute('aria-label', 'Boxes to write the short code in, a letter a box');
+  for (let group = 0; group < 4; group++) {
+    if (group) code.append(make(doc, 'span', 'sheet-code-dash', '–'));
+    for (let letter = 0; letter < 4; letter++) code.append(make(doc, 'span', 'sheet-code-box'));
+  }
+  part.append(make(doc, 'h2', '', 'Class challenge: my robot'),
+    make(doc, 'p', 'sheet-ask', `After “Share link”, my page shows my robot's short code (like ${EXAMPLE_CODE}). I copy it here, a letter a box, and give it to my teacher:`),
+    code,
+    make(doc, 'p', 'sheet-guess', 'Its speed, as my page says: ____________ m/s   My name on the class\'s list: ______________________'),
+    make(doc, 'p', 'sheet-how', 'No short code? My page says why: I send my teacher the link instead, and tick here ☐'));
+  return part;
 }

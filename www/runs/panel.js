@@ -18,7 +18,7 @@ import { RunSettings } from './settings.js';
 
 /**
  * @typedef {object} RunHooks
- * @property {() => {rows: string, ok: boolean}} body   the drawing now
+ * @property {() => {rows: string, ok: boolean, why?: string}} body   the drawing now (why: what keeps it from a run, if not its check)
  * @property {() => string} controller                   the family chosen for Evolve
  * @property {() => import('../workers/protocol.js').FinetuneSource | null} source  the run file of the module on the robot, if any
  * @property {() => string} sourceKind                  the family of the brain on the robot (a fine-tune keeps it)
@@ -139,7 +139,7 @@ export class RunPanel {
    */
   async readSettings(controller) {
     const body = this.hooks.body();
-    if (!body.ok) return { error: 'draw a valid robot first (see the message under the grid)' };
+    if (!body.ok) return { error: body.why || 'draw a valid robot first (see the message under the grid)' };
     return this.form.read(body.rows, controller);
   }
 
@@ -292,6 +292,7 @@ export class RunPanel {
     const body = this.hooks.body();
     const off = running || this.starting || !body.ok || this.form.invalid;
     b.evolve.disabled = off;
+    b.evolve.title = !running && body.why ? `Evolve is off: ${body.why}` : '';
     b.finetune.disabled = off || this.hooks.source() === null;
     b.finetune.title = b.finetune.disabled && !running && this.hooks.source() === null ? this.hooks.whyNoFinetune() : this.hooks.finetuneWords();
     this.form.lock(running);
