@@ -47,6 +47,12 @@ let anchor = { wall: 0, sim: 0 };
 let rate = { wall: 0, sim: 0, compute: 0, simPerWall: NaN, simPerCompute: NaN };
 let lastFramePosted = -Infinity;
 let tickScheduled = false;
+/**
+ * While a robot with attention is held before its first step (loaded, or edited, while Hold is
+ * on), each voxel's matrix as that step will work it out from what the voxel feels now: the maps
+ * show at once, not blank until Play. Null once the robot steps. @type {Float32Array | null}
+ */
+let preview = null;
 const yieldChannel = new MessageChannel();
 yieldChannel.port1.onmessage = () => tick();
 
@@ -94,11 +100,22 @@ function load(asked) {
   // the robot walking is the one that was edited (not after a restart or a refused load).
   const edit = next.keepPlace && episode ? next.keepPlace : null;
   const left = edit && episode ? episode.leftEdge() : NaN;
-  const fresh = next.runFile ? Episode.fromRunFile(next.runFile, next.terrain, next.shape)
+  const build = () => (next.runFile ? Episode.fromRunFile(next.runFile, next.terrain, next.shape)
     : next.brain ? Episode.fromGenome(next.shape, next.terrain, next.brain.controller, next.brain.genome, left)
-    : Episode.gaitAt(next.shape, next.terrain, next.frequency, next.phase, left);
+    : Episode.gaitAt(next.shape, next.terrain, next.frequency, next.phase, left));
+  const fresh = build();
   const carried = Boolean(edit && episode && edit.from === episode.shape && next.terrain === params?.terrain);
   if (carried && edit && episode) fresh.carryPose(episode, edit.dx, edit.dy);
+  preview = null;
+  if (!running && hasAttention(fresh.controller)) {
+    // Held: a copy takes the first step (this robot stays where it is) and lends its matrices.
+    const probe = build();
+    try {
+      if (carried && edit && episode) probe.carryPose(episode, edit.dx, edit.dy);
+      probe.step(1);
+      preview = probe.attention();
+    } catch { /* no preview: the maps fill in at the first step */ } finally { probe.free(); }
+  }
   if (next.seconds !== undefined && next.seconds > 0) fresh.measureOver(next.seconds); // the speed over the episode, taken when it ends
   episode?.free();
   episode = fresh;
@@ -166,6 +183,7 @@ function tick() {
 
 /** @param {Episode} ep */
 function stepSlice(ep) {
+  preview = null; // it steps: its own matrices from now on
   const begin = performance.now();
   let budget = speed > 0 ? targetSteps(ep, begin) : Infinity;
   if (params?.until) budget = Math.min(budget, ep.stepsLeft(params.until));
@@ -202,6 +220,7 @@ function postFrame() {
   updateRates(episode, now);
   // The core's part of the frame (crate/wasm/src/controlled.rs, `frame`); the rest is added here.
   const frame = /** @type {Omit<import('./protocol.js').Frame, 'velocity' | 'frozen' | 'simPerWall' | 'simPerCompute'>} */ (episode.frame());
+  if (preview && preview.length === frame.attention.length) frame.attention = preview.slice(); // (sent away: a copy each time)
   scope.postMessage({
     type: FromWorker.FRAME, ...frame, velocity: episode.velocity, frozen: episode.attentionFrozen,
     simPerWall: running ? rate.simPerWall : NaN, simPerCompute: rate.simPerCompute,
