@@ -88,7 +88,10 @@ const STYLE = `
   th { background: #f1f3f5; }
   img { max-width: 100%; height: auto; }
   blockquote { border-left: 4px solid #d5dbe1; margin-left: 0; padding-left: 1rem; color: #4a5561; }
-  @media print { header.doc-bar { display: none; } body { max-width: none; } }
+  @media print { header.doc-bar { display: none; } body { max-width: none; } table { display: table; font-size: .85em; } tr { break-inside: avoid; } }
+  /* A phone: tight cells, so that a table of a few columns (the teachers' guide's lesson) fits
+     without a sideways scroll; a wider one still scrolls in its own box. */
+  @media (max-width: 600px) { body { padding: 1rem .75rem 4rem; } table { font-size: .85em; } th, td { padding: .25rem .35rem; } }
 `;
 
 /**
