@@ -287,9 +287,14 @@ fillResults(byId(document, 'results-plain-body'), (id) => study.show(id));
 wireWords(document);
 // The lines the page writes as it goes, marked for simple words: a drawing's code and evaluations per second hidden, a terrain's name explained.
 for (const id of ['shape-status', 'module-details', 'driver', 'speed-note', 'robot-speed', 'run-rate', 'run-plan', 'study-run-note', 'freeze-report', 'challenge-rules',
-  'tour-box']) {
+  'tour-box', 'param-count', 'run-status', 'attention-hover', 'race-status']) {
   simplify(byId(document, id));
 }
+// The race's brains by their names: what each is, beside it.
+simplify(byId(document, 'race-lanes'), [
+  { pattern: /\bmlp-comm\b/g, explain: 'its voxels send messages' },
+  { pattern: /\bmlp\b(?!-)/g, explain: 'no attention, no messages' },
+]);
 challenge = new Challenge(document, lab, {
   defaults, rows: () => drawing.rows(), race, message: showMessage, pin: (text) => messages.show(text, 'pinned'),
   setView: (terrain) => { viewer.terrain.value = terrain; viewer.reload(); terrainChanged(); },

@@ -50,7 +50,7 @@ test('three pretrained brains race on biped-4x3: vsr evaluate\'s speeds, in the 
   const terrain = await page.locator('#terrain').inputValue();
   await page.locator('#race-speed-select').selectOption('4');
   for (const c of BRAINS) await addModule(page, file(c));
-  await waitForText(page, 'race-status', /^3 robots on .+, 30 s\.$/);
+  await waitForText(page, 'race-status', /^3 robots on .+, 30 s\. Speeds: this race only/);
   // The lanes keep in step: the widest gap between their clocks while all three are running,
   // with one lane's worker stalled for 1.5 s on the way (as a loaded machine stalls it).
   const gap = page.evaluate(() => new Promise((resolve) => {

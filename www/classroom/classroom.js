@@ -55,7 +55,9 @@ export class Classroom {
     const box = make(doc, 'section', 'exercise');
     box.dataset.testid = 'tour-exercise';
     box.dataset.chapter = String(index + 1);
-    box.append(make(doc, 'h3', 'exercise-title', 'Predict first'), make(doc, 'p', 'exercise-ask', ex.ask));
+    const ask = make(doc, 'p', 'exercise-ask', ex.simple ? '' : ex.ask);
+    if (ex.simple) ask.append(make(doc, 'span', 'expert', ex.ask), make(doc, 'span', 'simple-only', ex.simple)); // one shown (classroom.css)
+    box.append(make(doc, 'h3', 'exercise-title', 'Predict first'), ask);
     /** @type {() => string} */
     let given;
     const reveal = /** @type {HTMLButtonElement} */ (make(doc, 'button', 'primary', 'Reveal'));

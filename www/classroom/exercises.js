@@ -23,6 +23,7 @@ export const SATURATED = 0.9;
  * @typedef {object} Exercise
  * @property {string} chapter        its chapter's title
  * @property {string} ask            the question
+ * @property {string} [simple]       the question in simple words (shown instead while “Simple words” is on)
  * @property {string[]} [choices]    choices (else a number to guess)
  * @property {string} [unit]         the number's unit
  * @property {string} [try]          what to do after answering, to see it happen
@@ -147,6 +148,7 @@ export const TASKS = [
   {
     chapter: ATTENTION,
     ask: 'A voxel\'s attention matrix holds 16 values, each between −1 and +1. At any moment of this walk, how many of the 16 do you expect to sit at +1 or −1 (beyond ±0.9)?',
+    simple: 'A voxel\'s table has 16 squares. Each holds a number from −1 to +1. At any moment of this walk, how many of the 16 do you think are fully on (+1) or fully turned around (−1)?',
     unit: 'of 16',
     try: 'Click a voxel\'s map beside the robot and count the darkest squares.',
     async key(lab) {

@@ -18,6 +18,8 @@ export const BRAIN_WORDS = Object.freeze({
 
 /** What separates a module's name from its speed in the list (see {@link shortLabel}). */
 export const SPEED_MARK = ' · ';
+/** Which measurement the list's speed is, said after it: its mean over the study's ten unseen terrains. */
+export const LIST_SPEED = 'average over 10 new terrains';
 
 /**
  * A body in words: its preset's name with its rows (as “Rows” in “1 · Draw” writes them), else
@@ -31,10 +33,13 @@ export function bodyWords(rows, presets) {
 
 /**
  * A module's name as the list shows it, short enough for a phone's width: what it is, then its
- * mean speed on the unseen terrains (the list's title and the details say what that speed is).
- * @param {string} what @param {number} mean m/s (NaN: not known) @param {string} [after] words after the speed
+ * mean speed on the unseen terrains, said in a few words beside it (the speed under the robot,
+ * a race's and training's are other measurements of the same brain; the list's title and the
+ * details say more).
+ * @param {string} what @param {number} mean m/s (NaN: not known)
+ * @param {string} [after] words after the speed, which measurement it is (by default the unseen terrains' mean)
  */
-export function shortLabel(what, mean, after = '') {
+export function shortLabel(what, mean, after = ` ${LIST_SPEED}`) {
   return Number.isFinite(mean) ? `${what}${SPEED_MARK}${decimal(mean)} m/s${after}` : what;
 }
 

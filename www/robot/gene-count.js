@@ -28,7 +28,7 @@ export function showGeneCount(el, check, kind, attentionGenes, walking = '') {
   const pending = !check.ok && n > 0 ? ` (for your drawing of ${n} voxels, once it is one piece; ${walking || 'the robot walking is your last whole drawing'})` : '';
   // The breakdown in its own span: a tour question about it hides it until answered (tour.css).
   const breakdown = el.ownerDocument.createElement('span');
-  breakdown.className = 'gene-detail';
+  breakdown.className = 'gene-detail expert'; // in simple words the count alone, its genes explained (shared/simple-words.js)
   breakdown.append(...withTerms(el.ownerDocument, detail));
   el.replaceChildren(...(n > 0 ? [...withTerms(el.ownerDocument, `${genes} genes${pending}`), breakdown] : []));
   el.title = anyBody

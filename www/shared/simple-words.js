@@ -43,6 +43,7 @@ export const EXPLAIN = {
   softmax: 'a squashing into shares that add up to 1',
   saturates: 'sits at +1 or −1',
   median: 'the middle one',
+  Holm: 'a correction for testing many pairs at once',
 };
 
 /** The terms as whole words, the longest first (mlp-comm before mlp). */
@@ -111,15 +112,27 @@ export const SIMPLER = [
   { pattern: /\bhilly-\d+(?:\.\d+)?-\d+(?:\.\d+)?-\d+\b/g, explain: 'the same hills every time' },
   { pattern: /\bhilly-\d+(?:\.\d+)?-\d+(?:\.\d+)?(?![\d.-])/g, explain: 'new hills drawn for every walk' },
   { pattern: /\bsteppy-\d+(?:\.\d+)?-\d+(?:\.\d+)?-\d+\b/g, explain: 'the same steps every time' },
+  // The phase gait's clock by its letters (unless the sentence says it already).
+  { pattern: /φ(?!,? the delay| \(rad)/g, explain: 'the delay from column to column' },
+  { pattern: /\bf(?= (?:and φ|\d[\d.]* Hz))/g, explain: 'beats per second' },
+  // A brain's size: its genes, the numbers evolution tunes (unless a bracket after them says so).
+  { pattern: /\b\d[\d,]* genes\b(?! \()/g, explain: 'the numbers evolution tunes' },
+  { pattern: /\bone-shot\b/gi, explain: 'before any training on its new body' },
+  { pattern: /\bfine-tun(?:e|ed|ing)\b(?! \()/gi, explain: 'trained a little more for the new body' },
+  { pattern: /\bquartiles?\b/g, explain: 'the edges of the middle half of the runs' },
+  { pattern: /\bon \d+ workers?\b/g, explain: 'parts of this computer walking brains at the same time' },
+  // The matrix's expert names for its rows and columns: its plain words stand beside them.
+  { pattern: /\s\((?:query|key)\)/g, hide: true },
 ];
 
 /**
  * Marks, in the text of `el`, now and whenever the page writes it again, what {@link SIMPLER}
- * names: wraps each match in a span (hidden, or explained, in simple words). The text itself
- * (textContent) stays as written.
- * @param {HTMLElement} el
+ * names (and `more`, rules for this element only): wraps each match in a span (hidden, or
+ * explained, in simple words). The text itself (textContent) stays as written.
+ * @param {HTMLElement} el @param {typeof SIMPLER} [more]
  */
-export function simplify(el) {
+export function simplify(el, more = []) {
+  const rules = [...more, ...SIMPLER];
   const doc = el.ownerDocument;
   const mark = () => {
     const walk = doc.createTreeWalker(el, NodeFilter.SHOW_TEXT);
@@ -129,14 +142,19 @@ export function simplify(el) {
       const node = /** @type {Text} */ (walk.currentNode);
       if (!node.parentElement?.closest('.simpler, option, select, textarea')) texts.push(node);
     }
+    // A word is explained once in an element: the first time it appears there.
+    const explained = new Set([...el.querySelectorAll('.simpler[data-explain]')].map((e) => /** @type {HTMLElement} */ (e).dataset.explain));
     for (const node of texts) {
       const text = node.data;
       /** @type {{at: number, end: number, rule: typeof SIMPLER[number]}[]} */
       const found = [];
-      for (const rule of SIMPLER) {
+      for (const rule of rules) {
         for (const m of text.matchAll(rule.pattern)) {
           const at = m.index ?? 0;
-          if (m[0] && !found.some((f) => at < f.end && at + m[0].length > f.at)) found.push({ at, end: at + m[0].length, rule });
+          if (!m[0] || found.some((f) => at < f.end && at + m[0].length > f.at)) continue;
+          if (rule.explain && explained.has(rule.explain)) continue;
+          if (rule.explain) explained.add(rule.explain);
+          found.push({ at, end: at + m[0].length, rule });
         }
       }
       if (found.length === 0) continue;

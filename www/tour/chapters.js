@@ -42,6 +42,8 @@ const voxels = (rows) => rows.split('').filter((c) => c === '1').length;
  *   codesign?: {brain: string, from: string}}} setup
  * @property {string} target      CSS selector of the control the task is about
  * @property {string} [figure]    a study figure's id (figures.js)
+ * @property {{text: string[], task: string, notice: string}} [simple]  the same facts for a 14-year-old: short sentences,
+ *   everyday words, shown instead of text, task and notice while “Simple words” is on (tour.js)
  */
 
 /** @type {Chapter[]} */
@@ -91,6 +93,17 @@ export const CHAPTERS = [
     notice: 'Most values sit at +1 or −1 at any moment; as the foot lands and lifts, whole rows flip from one side to the other (the reveal above counts, for this very walk, how many values sit at ±1 and which rows move). The robot reads its own motion and touch through them.',
     setup: { rows: BIPED, brain: { module: ATTENTION, on: 'own' }, terrain: VIEW },
     target: '#scene, #attention',
+    simple: {
+      text: [
+        'Before a voxel decides how much to squeeze, it looks at the four things it feels. Each of the four asks: how much should I listen to each of the four?',
+        'The answers make a small table: 4 rows and 4 columns. The voxel makes a new table three times a second.',
+        'The small maps next to the robot show the table of every voxel, in its place on the body. Red means listen. Blue means listen, but turned around. White means ignore. '
+          + 'Each row is one thing the voxel feels, asking. Each column is one thing it listens to.',
+      ],
+      task: 'Click the map of one voxel (a foot is a good choice). It opens big, and that voxel gets an outline on the robot.',
+      notice: 'At any moment most squares are dark red or dark blue: fully on, or fully turned around. When the foot lands or lifts, whole rows flip from red to blue or back. '
+        + 'The box above counts this for the walk you are watching. This is how the robot uses what it feels about its own movement and touch.',
+    },
   },
   {
     title: 'Evolution',
@@ -119,6 +132,19 @@ export const CHAPTERS = [
       race: ['pretrained/biped-4x3-mlp.json', 'pretrained/biped-4x3-mlp-comm.json', ATTENTION] }, // not in the order they finish
     target: '#race-status, #race-lanes', // the lanes the class watches, above the sheet on a phone
     figure: 'validation-biped',
+    simple: {
+      text: [
+        'Here are three kinds of brain on the same body. Attention is the brain from the paper. mlp is the same small brain without attention. '
+          + 'mlp-comm is a brain whose voxels send messages to their neighbours.',
+        'Our study trained each brain with 30,000 test walks. Now they race on the same ground for 30 seconds. They all start together.',
+      ],
+      task: 'Choose your answer first. The race under “Side by side” starts when you press Reveal. Then watch it to the end.',
+      notice: 'The paper found attention the fastest, even against voxels that send messages. We trained ten brains of each kind to check. Attention was faster than mlp. '
+        + 'But we could not tell attention and mlp-comm apart. Then a bigger test, planned before it started, trained thirty new brains of each kind on each body. '
+        + 'It showed that attention is not much slower than mlp-comm: not 0.5 m/s slower or more. It did not show that attention is faster. '
+        + 'One race is one piece of ground and one brain of each kind, so it can surprise you. The picture below is the fair test: '
+        + 'many brains of each kind, each on ten pieces of ground it never walked on before (it shows five brains of each kind).',
+    },
   },
   {
     title: 'Freeze the attention',

@@ -147,12 +147,14 @@ export class Tour {
     const body = byId(doc, 'tour-body');
     this.fold(false);
     body.scrollTop = 0;
-    const notice = paragraph(doc, chapter.notice, 'Notice', 'tour-notice');
+    const { simple } = chapter; // its words for a 14-year-old, shown instead while “Simple words” is on (classroom.css)
+    const notice = paragraph(doc, chapter.notice, 'Notice', 'tour-notice', simple?.notice);
     const figure = chapter.figure ? this.figure(chapter.figure) : null;
     // A chapter with a question holds back what would answer it (its notice, its figure, its
     // race) until the answer is revealed.
     const held = figure ? [notice, figure] : [notice];
-    body.replaceChildren(...chapter.text.map((t) => paragraph(doc, t)));
+    body.replaceChildren(...chapter.text.map((t) => paragraph(doc, t, undefined, simple ? 'expert' : undefined)),
+      ...(simple?.text ?? []).map((t) => paragraph(doc, t, undefined, 'simple-only')));
     const task = this.classroom?.exercise(i, () => {
       for (const el of held) el.hidden = false;
       if (this.index === i) this.holdAnswers(false);
@@ -162,7 +164,7 @@ export class Tour {
     this.holdAnswers(Boolean(task) && !this.classroom?.speedsShown(i), false);
     this.raceHeld = Boolean(task && chapter.setup.race);
     if (task) body.append(task);
-    body.append(paragraph(doc, chapter.task, 'Do', 'tour-task'), ...held);
+    body.append(paragraph(doc, chapter.task, 'Do', 'tour-task', simple?.task), ...held);
     byId(doc, 'tour-back', HTMLButtonElement).disabled = i === 0;
     const next = byId(doc, 'tour-next', HTMLButtonElement);
     next.disabled = i === CHAPTERS.length - 1;
@@ -274,9 +276,9 @@ export class Tour {
 
 /**
  * @param {Document} doc @param {string} text @param {string} [lead] a bold first word
- * @param {string} [className]
+ * @param {string} [className] @param {string} [simple] the same in simple words: both written, one shown (classroom.css)
  */
-function paragraph(doc, text, lead, className) {
+function paragraph(doc, text, lead, className, simple) {
   const p = doc.createElement('p');
   if (className) p.className = className;
   if (lead) {
@@ -284,6 +286,13 @@ function paragraph(doc, text, lead, className) {
     b.textContent = `${lead}: `;
     p.append(b);
   }
-  p.append(text);
+  if (simple === undefined) { p.append(text); return p; }
+  const expert = doc.createElement('span');
+  expert.className = 'expert';
+  expert.textContent = text;
+  const plain = doc.createElement('span');
+  plain.className = 'simple-only';
+  plain.textContent = simple;
+  p.append(expert, plain);
   return p;
 }

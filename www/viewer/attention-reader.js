@@ -49,6 +49,7 @@ export class AttentionReader {
     const head = table.createTHead().insertRow();
     const corner = doc.createElement('th');
     corner.textContent = 'query ↓ · key →';
+    corner.dataset.simple = 'asks ↓ · listens to →'; // simple words (shared/simple-words.js)
     corner.className = 'corner';
     head.append(corner);
     for (const name of SENSOR_NAMES) {

@@ -18,6 +18,12 @@ import { familyName } from '../shared/families.js';
 
 /** Most robots in one race. */
 export const MAX_RACERS = 4;
+/**
+ * Which measurement a lane's speed is, said under the race's line: this race's walk on one
+ * terrain, not the module list's mean over the study's ten unseen terrains (issue 46: mlp-comm
+ * at 3.63 m/s in the list and 5.85 m/s in chapter 6's race are both true).
+ */
+export const RACE_SPEEDS = 'Speeds: this race only (one walk on this ground), not the list\'s average over 10 new terrains.';
 
 /**
  * How far (simulated s) a robot may walk ahead of the slowest one still racing: every lane has
@@ -242,6 +248,6 @@ export class Race {
     this.status.textContent = n === 0
       ? 'No robot in the race yet.'
       : `${n} robot${n === 1 ? '' : 's'} on ${this.terrainName}, ${this.seconds.value} s${done ? ': finished'
-        : this.held ? ': waiting at the start line until you reveal your answer (Restart race starts them now)' : ''}.`;
+        : this.held ? ': waiting at the start line until you reveal your answer (Restart race starts them now)' : ''}. ${RACE_SPEEDS}`;
   }
 }
