@@ -303,7 +303,7 @@ challenge = new Challenge(document, lab, {
     workers: Number(runs.inputs.workers.value) || 1 }, estimate.currentPace()),
   lastRun: () => ({ runFile: runs.runFile, settings: runs.runSettings, mode: runs.mode }),
   setBody: (rows) => robot.setBody(rows),
+  refresh: () => robot.updateButtons(),
 });
 
 start().then(() => challenge.begin()).then(() => tour.begin());
-  refresh: () => robot.updateButtons(),

@@ -251,9 +251,9 @@ export class Classroom {
       part.append(make(doc, 'p', 'sheet-lines', 'What happened, and why:'), write);
       sheet.append(part);
     });
+    sheet.append(challengeBox(doc));
     sheet.scrollIntoView({ block: 'start' });
     if (print && !onlyHere(base)) setTimeout(() => doc.defaultView?.print(), 0);
-    sheet.append(challengeBox(doc));
     return sheet;
   }
 
@@ -340,13 +340,18 @@ function challengeBox(doc) {
   const code = make(doc, 'p', 'sheet-code');
   code.setAttribute('aria-label', 'Boxes to write the short code in, a letter a box');
   for (let group = 0; group < 4; group++) {
-    if (group) code.append(make(doc, 'span', 'sheet-code-dash', '–'));
-    for (let letter = 0; letter < 4; letter++) code.append(make(doc, 'span', 'sheet-code-box'));
+    // A group of four boxes wraps as a whole on a narrow screen, its dash after it (never alone at a line's start).
+    const four = make(doc, 'span', 'sheet-code-group');
+    for (let letter = 0; letter < 4; letter++) four.append(make(doc, 'span', 'sheet-code-box'));
+    if (group < 3) four.append(make(doc, 'span', 'sheet-code-dash', '–'));
+    code.append(four);
   }
   part.append(make(doc, 'h2', '', 'Class challenge: my robot'),
-    make(doc, 'p', 'sheet-ask', `After “Share link”, my page shows my robot's short code (like ${EXAMPLE_CODE}). I copy it here, a letter a box, and give it to my teacher:`),
+    make(doc, 'p', 'sheet-ask', `After “Share link”, my page shows my robot's short code (like ${EXAMPLE_CODE}). `
+      + 'I copy it here, one letter or number in each box (a short code leaves the last boxes empty), and give it to my teacher:'),
     code,
-    make(doc, 'p', 'sheet-guess', 'Its speed, as my page says: ____________ m/s   My name on the class\'s list: ______________________'),
-    make(doc, 'p', 'sheet-how', 'No short code? My page says why: I send my teacher the link instead, and tick here ☐'));
+    make(doc, 'p', 'sheet-guess', 'Its speed, as my page says: ____________ m/s'),
+    make(doc, 'p', 'sheet-guess', 'My name, as my teacher will list it: ______________________'),
+    make(doc, 'p', 'sheet-how', 'No short code? My page says why, under “Share link”. Then I send my teacher the link instead, and tick this box: ☐'));
   return part;
 }
