@@ -3,7 +3,7 @@
  * The test of the paper's own claim, that attention "performs better or comparatively" to
  * mlp-comm (not worse), in a newcomer's words. Read from the file `vsr report` writes for it
  * (study/report-noninferiority/noninferiority.json; crate/study/src/report/
- * noninferiority_summary.rs), never copied by hand: until every planned run is in, the file
+ * noninferiority/summary.rs), never copied by hand: until every planned run is in, the file
  * holds only how many have finished, and the page says so; the answer appears once the test
  * is complete.
  */

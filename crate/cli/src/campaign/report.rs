@@ -7,7 +7,7 @@ use std::fs;
 use std::path::PathBuf;
 
 use vsr::{Error, Result};
-use vsr_study::report::{noninferiority_summary, report};
+use vsr_study::report::{noninferiority::summary as noninferiority_summary, report};
 
 use super::target::Target;
 

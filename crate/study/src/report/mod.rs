@@ -32,10 +32,7 @@ mod families;
 mod fidelity;
 pub mod figures;
 mod finetune;
-mod noninferiority;
-mod noninferiority_figure;
-mod noninferiority_section;
-pub mod noninferiority_summary;
+pub mod noninferiority;
 mod plateau;
 mod samples;
 mod series;
@@ -58,8 +55,8 @@ pub struct Report {
     /// to delete (a non-inferiority test's intervals while short of its planned runs).
     pub withdrawn: Vec<String>,
     /// The non-inferiority test's state and answer, where the campaign plans one: written
-    /// next to it as `noninferiority.json` for the page (`noninferiority_summary`).
-    pub noninferiority: Option<noninferiority_summary::Summary>,
+    /// next to it as `noninferiority.json` for the page (`noninferiority::summary`).
+    pub noninferiority: Option<noninferiority::summary::Summary>,
 }
 
 /// Builds the report of `results`.
@@ -68,12 +65,12 @@ pub fn report(results: &Results) -> Report {
         markdown: String::from("# Campaign report\n\n"),
         figures: Vec::new(),
         withdrawn: Vec::new(),
-        noninferiority: noninferiority_summary::summary(results),
+        noninferiority: noninferiority::summary::summary(results),
     };
     missing_section(results, &mut r.markdown);
     let tests = planned(results);
     families_table(&tests, &mut r.markdown);
-    noninferiority_section::noninferiority_sections(results, &mut r);
+    noninferiority::section::noninferiority_sections(results, &mut r);
     sets::sets_section(results, &mut r.markdown);
     for g in &results.campaign.evolve {
         for shape in &g.shapes {
@@ -233,7 +230,7 @@ fn runs_note(seeds: &[u64], samples: &[Sample]) -> String {
         .filter(|&(n, _)| n > 0)
         .map(|(n, s)| format!("{} {n}", s.label))
         .collect();
-    let seeds = noninferiority_section::seeds_text(seeds);
+    let seeds = noninferiority::section::seeds_text(seeds);
     format!("seeds {seeds}; runs: {}", runs.join(", "))
 }
 

@@ -1,20 +1,20 @@
 //! The non-inferiority section of the report: for every evolve group with a
 //! `noninferiority` key, the tests of `noninferiority` set by set (the primary first) with
 //! their intervals and verdicts (and, once a set's tests are at their planned size, the
-//! figure of their intervals: `noninferiority_figure`), then the known seeds' values beside
+//! figure of their intervals: `figure`), then the known seeds' values beside
 //! them, never pooled.
 
-use super::families::ALPHA;
-use super::noninferiority::{arm, complete, tests, Test, ONE_SIDED_ALPHA};
-use super::noninferiority_figure::{figure, file};
-use super::Report;
+use super::super::families::ALPHA;
+use super::{arm, complete, tests as planned_tests, Test, ONE_SIDED_ALPHA};
+use super::figure::{figure, file};
+use super::super::Report;
 use crate::campaign::file::{EvolveGroup, NonInferiority};
 use crate::campaign::Results;
 use crate::statistics::{hodges_lehmann, mann_whitney, median, Method};
 use std::fmt::Write;
 
 /// The sections of every group that plans a non-inferiority test.
-pub(super) fn noninferiority_sections(results: &Results, r: &mut Report) {
+pub(crate) fn noninferiority_sections(results: &Results, r: &mut Report) {
     for g in &results.campaign.evolve {
         if let Some(n) = &g.noninferiority {
             section(results, g, n, r);
@@ -49,7 +49,7 @@ fn section(results: &Results, g: &EvolveGroup, n: &NonInferiority, r: &mut Repor
         known_part(results, g, n, md);
         return;
     }
-    let all = tests(results, g, n);
+    let all = planned_tests(results, g, n);
     for (i, &set) in n.sets.iter().enumerate() {
         let role = if i == 0 { "primary" } else { "secondary" };
         let _ = writeln!(md, "### {set} mean ({role})\n");
@@ -199,7 +199,7 @@ fn known_part(results: &Results, g: &EvolveGroup, n: &NonInferiority, md: &mut S
 }
 
 /// Seeds as runs of consecutive numbers: "1-10", "1-3, 7".
-pub(super) fn seeds_text(seeds: &[u64]) -> String {
+pub(crate) fn seeds_text(seeds: &[u64]) -> String {
     let mut sorted = seeds.to_vec();
     sorted.sort_unstable();
     let mut parts: Vec<String> = Vec::new();

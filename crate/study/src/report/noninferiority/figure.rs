@@ -4,8 +4,8 @@
 //! (the plan's test is at its planned size): before that there is no figure, so no
 //! interim comparison is drawn.
 
-use super::figures::{Figure, IntervalRow, Mark, Plot};
-use super::noninferiority::{Test, ONE_SIDED_ALPHA};
+use super::super::figures::{Figure, IntervalRow, Mark, Plot};
+use super::{Test, ONE_SIDED_ALPHA};
 use crate::campaign::file::{EvolveGroup, NonInferiority};
 use vsr::experiment::ValidationSet;
 

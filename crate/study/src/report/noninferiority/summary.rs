@@ -5,7 +5,7 @@
 //! plan's test is Holm over the shapes at the planned sample size): until then no number of
 //! the comparison is in the file, so nothing reads an interim result as the answer.
 
-use super::noninferiority::{arm, complete, tests};
+use super::{arm, complete, tests};
 use crate::campaign::file::{EvolveGroup, NonInferiority};
 use crate::campaign::Results;
 use serde::Serialize;

@@ -10,6 +10,13 @@
 //! superiority is tested next (one-sided Mann-Whitney of the treatment against the control,
 //! Holm over the family's shapes where it applies, same alpha): a closed testing order, no
 //! further correction.
+//!
+//! Around the test: its section of the report, with the known seeds' values (`section`), the
+//! figure of its intervals (`figure`) and the summary the page reads (`summary`).
+
+pub(super) mod figure;
+pub(super) mod section;
+pub mod summary;
 
 use super::families::ALPHA;
 use crate::campaign::file::{EvolveGroup, NonInferiority};
