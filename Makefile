@@ -22,7 +22,7 @@ WASM_PACK_BUILD := wasm-pack build crate/wasm --release --target web --out-dir .
 # A target runs once per make: the wasm package that lint's typecheck built is the one test-web loads.
 .NOTPARALLEL:
 
-.PHONY: run test setup setup-test wasm serve lint lint-rust typecheck test-native test-wasm test-web test-cluster \
+.PHONY: run test setup setup-test wasm serve lint lint-rust lint-workflows typecheck test-native test-wasm test-web test-cluster \
 	test-parallel test-slurm test-python test-python-install test-browsers bench-wasm bench-python web-package site
 
 run: setup wasm serve
@@ -47,7 +47,12 @@ serve:
 site: setup wasm
 	node scripts/site.mjs
 
-lint: lint-rust typecheck
+lint: lint-rust typecheck lint-workflows
+
+## The Pages workflow never runs here (no GitHub runner): its form is checked against GitHub's
+## workflow schema (check-jsonschema's copy of it, in the test virtual environment).
+lint-workflows:
+	$(PY_VENV)/bin/check-jsonschema --builtin-schema vendor.github-workflows .github/workflows/*.yml
 
 lint-rust:
 	cargo fmt --all --check

@@ -8,6 +8,7 @@
 #                             Debian parallel, slurm-wlm and munge for the campaign recipes' tests,
 #                             and a Python virtual environment (target/py-venv) with maturin,
 #                             numpy, pytest, cma and gymnasium from PyPI for the Python package's tests
+#                             and check-jsonschema for the Pages workflow's form
 #   scripts/setup.sh --browsers the same as without a flag, plus Debian firefox-esr, webkit2gtk-driver
 #                             (WebKitWebDriver and MiniBrowser), xvfb and xauth for `make test-browsers`
 set -euo pipefail
@@ -136,7 +137,7 @@ cluster_tools() {
 
 # The Python package's build and test tools, in their own virtual environment.
 PY_VENV=target/py-venv
-PY_PACKAGES=(maturin numpy pytest cma gymnasium)
+PY_PACKAGES=(maturin numpy pytest cma gymnasium check-jsonschema)
 python_tools() {
   if ! command -v python3 >/dev/null || ! python3 -c 'import venv, ensurepip' 2>/dev/null; then
     say "installing Debian python3 and python3-venv"
@@ -146,7 +147,7 @@ python_tools() {
     say "making the Python virtual environment $PY_VENV"
     python3 -m venv "$PY_VENV"
   fi
-  if ! "$PY_VENV/bin/python" -c 'import maturin, numpy, pytest, cma, gymnasium' 2>/dev/null; then
+  if ! "$PY_VENV/bin/python" -c 'import maturin, numpy, pytest, cma, gymnasium, check_jsonschema' 2>/dev/null; then
     say "installing ${PY_PACKAGES[*]} (PyPI) into $PY_VENV"
     "$PY_VENV/bin/pip" install --quiet --disable-pip-version-check "${PY_PACKAGES[@]}"
   fi
