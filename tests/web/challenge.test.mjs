@@ -8,10 +8,14 @@
  * again counted once, the same robot under two names placed but said and raced once, a budget
  * over the challenge's said and left out of the places; the table's header stays on one line at
  * 1400 px; a reload brings back the made link, its rules and the pasted links. A student opening
- * the link gets its rules, and a drawing over the voxel limit is told at once.
- * Screenshots: screenshots/challenge-table-1400.png, classroom-challenge.png.
+ * the link gets its rules, its run shown in the Run fieldset (locked, said why) and that run is
+ * the one the page makes (its run file's settings); the teacher's form on that page shows the
+ * link's rules, not the form's defaults; a drawing over the voxel limit is told at once.
+ * Screenshots: screenshots/challenge-table-1400.png, classroom-challenge.png, challenge-evolve-off-1400.png,
+ * challenge-run-fixed-1400.png.
  */
 import assert from 'node:assert/strict';
+import { readFile } from 'node:fs/promises';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 import { SCREENSHOTS, byTestId, openPage, start, waitForText } from './harness.mjs';
@@ -163,9 +167,28 @@ test('a class challenge: ranked by the link the teacher made, duplicates, the sa
   await student.page.context().close();
 });
 
-test('a challenge of at most 12 voxels: a student\'s drawing of 13 is told at once, in the words of the teacher\'s table, and Evolve is off until it keeps the rules', async () => {
-  const small = await openPage(env.browser, `${env.url}?challenge=1&terrain=hilly-1-10-0&voxels=12`, { width: 1400, height: 900 });
-  await waitForText(small.page, 'challenge-rules', /any body of at most 12 voxels/);
+test('a challenge of at most 12 voxels: its run shown (locked) is the run the page makes, the teacher\'s form shows the challenge; a drawing of 13 is told at once, and Evolve is off until it keeps the rules', async () => {
+  // Every setting other than the page's own defaults (20, 10 s, 2,000, seed 1, hilly-1-10), so that a default shown is seen.
+  const query = '?challenge=1&terrain=hilly-1-10-0&seconds=5&voxels=12&budget=200&seed=3&population=10&train=flat';
+  const small = await openPage(env.browser, `${env.url}${query}`, { width: 1400, height: 900 });
+  await waitForText(small.page, 'challenge-rules', /any body of at most 12 voxels, as fast as it can over 5 s on hilly-1-10-0\. .*\(200 evaluations, seed 3, 5-s walks\)/);
+  /** The Run fieldset as a student sees it: each field's value, and whether it is locked. */
+  const runForm = () => small.page.evaluate(() => Object.fromEntries(['population', 'seconds', 'budget', 'seed', 'terrain'].map((k) => {
+    const input = /** @type {HTMLInputElement} */ (document.getElementById(`run-${k}`));
+    return [k, `${input.value}${input.disabled ? ' locked' : ''}`];
+  })));
+  const challengeRun = { population: '10 locked', seconds: '5 locked', budget: '200 locked', seed: '3 locked', terrain: 'flat locked' };
+  assert.deepEqual(await runForm(), challengeRun, 'the Run fieldset shows the challenge\'s run, locked');
+  assert.match(String(await byTestId(small.page, 'run-fixed').textContent()), /^Set by the challenge \(greyed out\): the same on every computer/, 'and says why, in words (no hover on a touch screen)');
+  // The teacher's part of this page: the form shows the challenge in force, not its defaults, and its link and QR code.
+  await byTestId(small.page, 'challenge').locator('summary').click();
+  const teacherForm = await small.page.evaluate(() => ['terrain', 'seconds', 'voxels', 'budget', 'seed'].map((k) => /** @type {HTMLInputElement} */ (document.getElementById(`challenge-${k}`)).value));
+  assert.deepEqual(teacherForm, ['hilly-1-10-0', '5', '12', '200', '3'], 'the challenge-making form holds the link\'s rules');
+  assert.equal(await small.page.locator('#challenge-fixed').isChecked(), false);
+  assert.equal(await small.page.locator('#challenge-link').inputValue(), `${env.url}?challenge=1&terrain=hilly-1-10-0&seconds=5&voxels=12&budget=200&seed=3&population=10&train=flat`,
+    'the link in force, for the projector (its population and training terrain kept, though the form has no field for them)');
+  await small.page.locator('#challenge-qr [data-testid="qr"]').waitFor();
+  await byTestId(small.page, 'challenge').locator('summary').click();
   await small.page.locator('#rows').fill('11111-11111-11100');
   await small.page.locator('#rows').press('Enter');
   const grid = await small.page.locator('#editor').boundingBox();
@@ -185,6 +208,19 @@ test('a challenge of at most 12 voxels: a student\'s drawing of 13 is told at on
   assert.equal(await small.page.locator('#editor.breaks-rules').count(), 0);
   await small.page.waitForFunction(() => !(/** @type {HTMLButtonElement} */ (document.getElementById('run-evolve'))).disabled, undefined, { timeout: 5_000 });
   assert.equal(await byTestId(small.page, 'run-blocked').isVisible(), false, 'within the rules: Evolve on, nothing said');
+
+  // The run the page makes is the one shown: its run file's settings are the challenge's.
+  await byTestId(small.page, 'evolve').click();
+  await waitForText(small.page, 'run-evaluations', /^210 \/ 210$/, 300_000); // 200 evaluations, the last generation finished
+  await small.page.waitForFunction(() => !(/** @type {HTMLInputElement} */ (document.getElementById('run-workers'))).disabled, undefined, { timeout: 60_000 });
+  const [download] = await Promise.all([small.page.waitForEvent('download'), byTestId(small.page, 'export').click()]);
+  const config = JSON.parse(await readFile(String(await download.path()), 'utf8')).config;
+  assert.deepEqual({ population: `${config.ga.population} locked`, seconds: `${config.seconds} locked`, budget: `${config.ga.budget_evals} locked`,
+    seed: `${config.seed} locked`, terrain: `${config.terrain} locked` }, challengeRun, `the run made is the challenge's: ${JSON.stringify(config)}`);
+  assert.equal(config.shape, '11111-11111-11000');
+  assert.deepEqual(await runForm(), challengeRun, 'and the form still shows it');
+  await small.page.locator('#run-settings').scrollIntoViewIfNeeded();
+  await small.page.screenshot({ path: path.join(SCREENSHOTS, 'challenge-run-fixed-1400.png') });
   assert.deepEqual(small.problems, []);
   await small.page.context().close();
 });

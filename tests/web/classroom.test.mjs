@@ -144,7 +144,8 @@ test('every chapter asks before it shows: an answer, then the reveal with why', 
       // In the tour the walk holds where its speed was measured, and says how to go on.
       await waitForText(page, 'sim-time', /episode is over; Play walks on, Restart walks it again/);
       const held = Number(await page.locator('#sim-time').getAttribute('data-value'));
-      await page.waitForTimeout(1000);
+      // Thirty frames drawn (the viewer steps once a frame: a clock that ran on would have moved), not a time a busy machine may not draw in.
+      await page.evaluate(() => new Promise((resolve) => { let frames = 0; const next = () => (++frames >= 30 ? resolve(undefined) : requestAnimationFrame(next)); requestAnimationFrame(next); }));
       assert.equal(Number(await page.locator('#sim-time').getAttribute('data-value')), held, 'the clock stands at the episode\'s end');
       await page.locator('#sim-restart').click();
       await page.waitForFunction(() => Number(document.getElementById('sim-time')?.dataset.value) < 5, undefined, { timeout: 10_000 });

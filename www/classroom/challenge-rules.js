@@ -14,13 +14,22 @@ import { count } from '../shared/format.js';
 /** The challenge link's query parameters. */
 const KEYS = Object.freeze(['terrain', 'seconds', 'voxels', 'body', 'budget', 'seed', 'population', 'train']);
 
-/** The run a challenge fixes when its link does not say: the quick run's population and training terrains. */
-export const RUN_DEFAULTS = Object.freeze({ population: 20, train: 'hilly-1-10' });
+/**
+ * The run a challenge fixes when its link does not say: the quick run's population, episode and
+ * training terrains, as the teacher's form starts (index.html: 10 s, 2,000 evaluations, seed 1).
+ */
+export const RUN_DEFAULTS = Object.freeze({ population: 20, seconds: 10, budget: '2000', seed: '1', train: 'hilly-1-10' });
 
 /**
  * @typedef {{terrain: string, seconds: number, voxels: number | null, body: string | null, budget: string, seed: string,
  *   population: number, train: string}} Rules
  */
+
+/** A whole number of at least `least` as the form holds it, or null. @param {string} text @param {number} least */
+function whole(text, least) {
+  const n = Number(text);
+  return text !== '' && Number.isSafeInteger(n) && n >= least ? String(n) : null;
+}
 
 /**
  * Rules from loose values (a link's query, a form, what was kept), each missing or wrong one the default.
@@ -31,9 +40,10 @@ export const RUN_DEFAULTS = Object.freeze({ population: 20, train: 'hilly-1-10' 
 export function rulesFrom(v) {
   const text = (/** @type {unknown} */ x) => (typeof x === 'string' ? x.trim() : typeof x === 'number' ? String(x) : '');
   const voxels = Number(v.voxels);
-  return { terrain: text(v.terrain) || 'hilly-1-10-0', seconds: Number(v.seconds) || 30,
+  const seconds = Number(v.seconds);
+  return { terrain: text(v.terrain) || 'hilly-1-10-0', seconds: Number.isFinite(seconds) && seconds > 0 ? seconds : RUN_DEFAULTS.seconds,
     voxels: Number.isInteger(voxels) && voxels > 0 ? voxels : null, body: text(v.body) || null,
-    budget: text(v.budget) || '2000', seed: text(v.seed) || '1',
+    budget: whole(text(v.budget), 1) ?? RUN_DEFAULTS.budget, seed: whole(text(v.seed), 0) ?? RUN_DEFAULTS.seed,
     population: Number.isInteger(Number(v.population)) && Number(v.population) > 0 ? Number(v.population) : RUN_DEFAULTS.population,
     train: text(v.train) || RUN_DEFAULTS.train };
 }

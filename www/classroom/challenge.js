@@ -21,7 +21,7 @@ import { terrainRefused } from '../viewer/terrain-words.js';
 import { checkCode, linesOf, order, rankEntries, unchecked } from './challenge-entries.js';
 import { EXAMPLE_CODE, looksLikeCode, normalCode, readCode, robotCode } from './challenge-code.js';
 import { evolveAgain } from './challenge-evolve.js';
-import { bodyProblem, challengeLink, rankingWords, rulesFrom, rulesOf, rulesWords, runOf, runSettings, sameRules } from './challenge-rules.js';
+import { RUN_DEFAULTS, bodyProblem, challengeLink, rankingWords, rulesFrom, rulesOf, rulesWords, runOf, runSettings, sameRules } from './challenge-rules.js';
 import { loadQr, qrBox } from './qr.js';
 import { onlyHere } from './sheet-address.js';
 import { durationWords } from '../runs/progress.js';
@@ -93,6 +93,8 @@ export class Challenge {
     this.rankedBy = null;
     /** @type {Rules | null} the rules of the challenge link this page was opened from (a student's page) */
     this.opened = rulesOf(location.search);
+    /** @type {{population: number, train: string}} the run the form's challenge fixes beyond the form's fields (a new link keeps them) */
+    this.formRun = { population: RUN_DEFAULTS.population, train: RUN_DEFAULTS.train };
     const kept = loadChallenge();
     /** @type {Rules | null} the rules of the challenge link the teacher made, as they were when it was made */
     this.made = kept.rules;
@@ -117,11 +119,26 @@ export class Challenge {
     this.restore(kept.links);
   }
 
-  /** The form's rules, with the robot drawn now if everyone is to use it. @returns {Rules} */
+  /**
+   * The form's rules, with the robot drawn now if everyone is to use it; the population and the
+   * training terrain (not in the form) those of the challenge the form shows. @returns {Rules}
+   */
   formRules() {
     const f = this.form;
     return rulesFrom({ terrain: f.terrain.value, seconds: f.seconds.value, voxels: f.voxels.value,
-      body: f.fixed.checked ? this.page.rows() : null, budget: f.budget.value, seed: f.seed.value });
+      body: f.fixed.checked ? this.page.rows() : null, budget: f.budget.value, seed: f.seed.value, ...this.formRun });
+  }
+
+  /** The challenge in force in the form: what a new link starts from. @param {Rules} r */
+  showInForm(r) {
+    const f = this.form;
+    f.terrain.value = r.terrain;
+    f.seconds.value = String(r.seconds);
+    f.voxels.value = r.voxels === null ? '' : String(r.voxels);
+    f.budget.value = r.budget;
+    f.seed.value = r.seed;
+    f.fixed.checked = r.body !== null;
+    this.formRun = { population: r.population, train: r.train };
   }
 
   /**
@@ -140,14 +157,13 @@ export class Challenge {
     if (links) this.box.value = links;
     const made = this.made;
     setTimeout(() => this.showEstimate(), 0); // the lines kept, counted (once the form holds the kept rules)
-    if (made && !this.opened) {
-      const f = this.form;
-      f.terrain.value = made.terrain;
-      f.seconds.value = String(made.seconds);
-      f.voxels.value = made.voxels === null ? '' : String(made.voxels);
-      f.budget.value = made.budget;
-      f.seed.value = made.seed;
-      f.fixed.checked = made.body !== null;
+    // The form shows the challenge in force, never its defaults: the link this page was opened from (a teacher may open
+    // it on the projector's laptop, to show its QR code and rank the class), else the one made here.
+    if (this.opened) {
+      this.showInForm(this.opened);
+      this.showLink(this.opened);
+    } else if (made) {
+      this.showInForm(made);
       this.showMade(made);
     }
     if (this.opened || (!made && !links)) return;
@@ -268,15 +284,28 @@ export class Challenge {
         .then((w) => w.speed, () => NaN);
     const code = why || !brain ? null : robotCode(state.rows, brain.controller, brain.genome, speed);
     this.codeLine.dataset.code = code ?? '';
-    this.codeLine.textContent = code
-      ? `Your short code: ${code} (your robot's speed over ${r.seconds} s on ${r.terrain}: ${decimal(speed)} m/s, in the code). `
-        + 'Give your teacher this code (or the link): their page ranks it by that speed and can check it by evolving your robot again, exactly.'
-      : `No short code for this robot (${why || (Number.isFinite(speed) ? 'a body too large for a code' : 'its speed could not be measured')}): send your teacher the link.`;
+    if (code) {
+      // The code itself large and in a typewriter's letters, where a student copying it looks (0 and O read the same: challenge-code.js).
+      const letters = this.section.ownerDocument.createElement('span');
+      letters.className = 'short-code';
+      letters.textContent = code;
+      this.codeLine.replaceChildren('Your short code: ', letters, ` (your robot's speed over ${r.seconds} s on ${r.terrain}: ${decimal(speed)} m/s, in the code). `
+        + 'Give your teacher this code (or the link): their page ranks it by that speed and can check it by evolving your robot again, exactly.');
+    } else {
+      this.codeLine.textContent = `No short code for this robot (${why || (Number.isFinite(speed) ? 'a body too large for a code' : 'its speed could not be measured')}): send your teacher the link.`;
+    }
     this.codeLine.hidden = false;
   }
 
   /** Shows the made challenge's link, its QR code and rules. @param {Rules} r */
   showMade(r) {
+    this.showLink(r);
+    this.rulesLine.textContent = `What your students will see: ${rulesWords(r)}`;
+    this.rulesLine.hidden = false;
+  }
+
+  /** Shows a challenge's link and its QR code, for the class. @param {Rules} r */
+  showLink(r) {
     this.linkOut.value = challengeLink(r);
     this.linkBox.hidden = false;
     const here = onlyHere(this.linkOut.value);
@@ -285,8 +314,6 @@ export class Challenge {
     this.addressNote.hidden = !here;
     this.qr.replaceChildren(qrBox(this.section.ownerDocument, this.linkOut.value, 'Open the class challenge'));
     this.qr.hidden = false;
-    this.rulesLine.textContent = `What your students will see: ${rulesWords(r)}`;
-    this.rulesLine.hidden = false;
   }
 
   /** The tools an entry needs, with the codes checked before under the rules `r`. @param {Rules} r */

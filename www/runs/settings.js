@@ -40,6 +40,12 @@ export class RunSettings {
       dice: byId(doc, 'run-dice', HTMLButtonElement),
     };
     this.plan = byId(doc, 'run-plan');
+    /** The line at the top of the form, while a challenge fixes settings: greyed out, and why (a title is not read on a touch screen). */
+    this.fixedNote = doc.createElement('p');
+    this.fixedNote.className = 'explain run-fixed';
+    this.fixedNote.dataset.testid = 'run-fixed';
+    this.fixedNote.hidden = true;
+    byId(doc, 'run-settings').querySelector('legend')?.after(this.fixedNote);
     /** Plans asked: only the latest one's words are shown. */
     this.plans = 0;
     /** Evaluations the settings in the form plan (NaN while they are not valid). */
@@ -116,6 +122,9 @@ export class RunSettings {
     this.setValues(values);
     this.fixed = new Set(Object.keys(values).filter((k) => this.inputs[k]));
     this.fixedBy = by;
+    this.fixedNote.textContent = `Set by ${by} (greyed out): the same on every computer, so the same drawing gives the same robot everywhere. `
+      + 'Workers only changes how fast it runs here.';
+    this.fixedNote.hidden = this.fixed.size === 0;
     this.lock(false);
   }
 
