@@ -17,7 +17,7 @@ import { Keeper } from './keep/keeper.js';
 import { messageOf } from './workers/kit.js';
 import { Measurer } from './robot/measure.js';
 import { MessageBox } from './shared/message.js';
-import { Challenge } from './classroom/challenge.js';
+import { Challenge } from './classroom/challenge/challenge.js';
 import { Classroom } from './classroom/classroom.js';
 import { Lab } from './classroom/lab.js';
 import { simplify, wireWords } from './shared/simple-words.js';

@@ -23,7 +23,7 @@ import path from 'node:path';
 import { after, before, test } from 'node:test';
 import { EVOLVE_FIRST, EXERCISES, TASKS, exerciseOf } from '../../www/classroom/exercises.js';
 import { GUIDE, LESSONS } from '../../www/classroom/lesson-plan.js';
-import { EXAMPLE_CODE } from '../../www/classroom/challenge-code.js';
+import { EXAMPLE_CODE } from '../../www/classroom/challenge/code.js';
 import { CHAPTERS, RUN_TIME } from '../../www/tour/chapters.js';
 import { ROOT, SCREENSHOTS, byTestId, figure, openPage, screenshot, start, waitForText } from './harness.mjs';
 

@@ -16,7 +16,7 @@ import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 import { LESSON, lessonStepWords, lessonTimes } from '../../www/classroom/lesson-plan.js';
-import { EXAMPLE_CODE, codeLength, readCode, robotCode } from '../../www/classroom/challenge-code.js';
+import { EXAMPLE_CODE, codeLength, readCode, robotCode } from '../../www/classroom/challenge/code.js';
 import { decimal } from '../../www/shared/format.js';
 import { ROOT, SCREENSHOTS, byTestId, openPage, start, waitForText } from './harness.mjs';
 
@@ -105,7 +105,7 @@ test('every example of a short code in the page and the docs is a real code of t
   assert.equal(EXAMPLE_CODE.replace(/-/g, '').length, codeLength(4, 3), 'the example is a 4 × 3 body\'s');
   /** @type {string[]} */
   const found = [];
-  for (const file of ['docs/teaching.md', 'docs/playground.md', 'README.md', 'www/index.html', 'www/classroom/challenge-rules.js', 'www/classroom/lesson-plan.js']) {
+  for (const file of ['docs/teaching.md', 'docs/playground.md', 'README.md', 'www/index.html', 'www/classroom/challenge/rules.js', 'www/classroom/lesson-plan.js']) {
     const text = readFileSync(path.join(ROOT, file), 'utf8');
     // A code-like word: groups of four of the code's letters; not a body's rows (only 0 and 1) nor a date.
     for (const [word] of text.matchAll(/(?<![\w-])[0-9A-Z]{4}(?:-[0-9A-Z]{1,4})+(?![\w-])/g)) {

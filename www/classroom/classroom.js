@@ -14,7 +14,7 @@ import { keepGuess } from './guess-lock.js';
 import { LESSON, lessonPlanNodes, lessonStepWords, lessonTimes } from './lesson-plan.js';
 import { loadQr, qrBox } from './qr.js';
 import { addressField, chapterLink, onlyHere, pageAddress } from './sheet-address.js';
-import { EXAMPLE_CODE } from './challenge-code.js';
+import { EXAMPLE_CODE } from './challenge/code.js';
 import { withTerms } from '../shared/simple-words.js';
 
 /**

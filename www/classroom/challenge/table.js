@@ -1,16 +1,16 @@
 // @ts-check
 /**
  * The teacher's ranking table: the placed entries, fastest first, then the entries without a
- * place, each with why in its note (challenge-entries.js decides which is which). A speed a short
+ * place, each with why in its note (entries.js decides which is which). A speed a short
  * code claims (not checked here yet) says “claimed” beside it; a measured one does not.
  */
-import { decimal } from '../shared/format.js';
+import { decimal } from '../../shared/format.js';
 
 const HEAD = Object.freeze(['place', 'name', 'body', 'brain', 'speed', 'note']);
 
 /**
  * Fills `table` with the ranking.
- * @param {HTMLTableElement} table @param {{placed: import('./challenge-entries.js').Entry[], others: import('./challenge-entries.js').Entry[]}} ranking
+ * @param {HTMLTableElement} table @param {{placed: import('./entries.js').Entry[], others: import('./entries.js').Entry[]}} ranking
  * @param {string} caption which rules the class was ranked by
  */
 export function showRanking(table, ranking, caption) {

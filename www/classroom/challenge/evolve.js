@@ -1,17 +1,17 @@
 // @ts-check
 /**
  * A short code's robot evolved again on the teacher's page with the challenge's run
- * (challenge-code.js says why that gives the student's robot, to the bit), stoppable.
+ * (code.js says why that gives the student's robot, to the bit), stoppable.
  */
-import { runGenome } from '../workers/core.js';
-import { spawn } from '../workers/kit.js';
-import { FromCoordinator, MAX_EVALUATORS, ToCoordinator } from '../workers/protocol.js';
+import { runGenome } from '../../workers/core.js';
+import { spawn } from '../../workers/kit.js';
+import { FromCoordinator, MAX_EVALUATORS, ToCoordinator } from '../../workers/protocol.js';
 
 /**
  * Evolves a robot again with a challenge's run, as the student's page did (the page's GA
  * coordinator, all this computer's cores: the same bits for any number of workers), and gives
  * its best genome. An abort stops it at once (its workers ended) and rejects with an AbortError.
- * @param {import('../workers/protocol.js').EvolveSettings} settings @param {AbortSignal} [signal]
+ * @param {import('../../workers/protocol.js').EvolveSettings} settings @param {AbortSignal} [signal]
  * @returns {Promise<Float32Array>}
  */
 export function evolveAgain(settings, signal) {

@@ -4,12 +4,12 @@
  * run every student makes: its budget (the most evaluations an entry may be evolved with), seed,
  * population and training terrain, fixed for everyone (the student's run form is locked to them:
  * the same body gives the same robot on every laptop, which is what a short code relies on,
- * challenge-code.js). They travel in a challenge
+ * code.js). They travel in a challenge
  * link (`?challenge=1&terrain=...`: a query, so it never meets the share link's `#...`), are read
  * back from it, and are the one check of a body and of a budget, for the student's drawing and
  * for the teacher's ranking alike.
  */
-import { count } from '../shared/format.js';
+import { count } from '../../shared/format.js';
 
 /** The challenge link's query parameters. */
 const KEYS = Object.freeze(['terrain', 'seconds', 'voxels', 'body', 'budget', 'seed', 'population', 'train']);
@@ -55,7 +55,7 @@ export function runOf(r) {
 
 /**
  * The run a challenge's robot of `rows` was evolved with (what a short code stands for).
- * @param {Rules} r @param {string} rows @param {string} controller @returns {import('../workers/protocol.js').EvolveSettings}
+ * @param {Rules} r @param {string} rows @param {string} controller @returns {import('../../workers/protocol.js').EvolveSettings}
  */
 export function runSettings(r, rows, controller) {
   return { shape: rows, controller, seed: Number(r.seed), seconds: r.seconds, terrain: r.train, population: r.population, budget: Number(r.budget) };

@@ -1,15 +1,15 @@
 // @ts-check
 /**
  * The class's entries: every line of the teacher's compare box read with the page's own link
- * reader (keep/share.js), or as a short code (challenge-code.js), checked against the challenge's
- * rules (challenge-rules.js), a link's robot measured again by the page on the challenge's terrain
+ * reader (keep/share.js), or as a short code (code.js), checked against the challenge's
+ * rules (rules.js), a link's robot measured again by the page on the challenge's terrain
  * for its episode (lab.js: the speed a link claims is never trusted), then put in order.
  *
  * A short code is ranked at once by the speed the student's page measured, which it holds: that
  * speed is said as claimed, not checked. Checking it (checkCode) evolves the robot again here with
  * the challenge's run (13 to 27 s on a school laptop), compares the genome's check and measures it
  * again: from then on its speed is this page's own. A code checked once is not evolved again
- * (the caller keeps its genome, challenge-store.js).
+ * (the caller keeps its genome, store.js).
  *
  * What the table says of an entry, and whether it gets a place:
  * - a rule broken (another body, more voxels, a budget over the challenge's), or a link that
@@ -21,11 +21,11 @@
  *   first), a link made at another address of the page, and the same robot (body and genome,
  *   or body and clock) under two names (it races once).
  */
-import { messageOf } from '../workers/kit.js';
-import { decodeState } from '../keep/share.js';
-import { genomeCheck, looksLikeCode, normalCode, readCode } from './challenge-code.js';
-import { bodyProblem, budgetProblem, runSettings } from './challenge-rules.js';
-import { decimal } from '../shared/format.js';
+import { messageOf } from '../../workers/kit.js';
+import { decodeState } from '../../keep/share.js';
+import { genomeCheck, looksLikeCode, normalCode, readCode } from './code.js';
+import { bodyProblem, budgetProblem, runSettings } from './rules.js';
+import { decimal } from '../../shared/format.js';
 
 /**
  * @typedef {object} Entry  one line of the compare box, read and measured
@@ -43,7 +43,7 @@ import { decimal } from '../shared/format.js';
 /**
  * What an entry needs of the page: the lab (walks), the page's defaults, and the genomes of the
  * short codes checked before (by a code's one spelling; their robots are not evolved again).
- * @typedef {{lab: import('./lab.js').Lab, defaults: import('../workers/core.js').Defaults,
+ * @typedef {{lab: import('../lab.js').Lab, defaults: import('../../workers/core.js').Defaults,
  *   checked?: (code: string) => Float32Array | null}} Tools
  */
 
@@ -73,7 +73,7 @@ function blank(name) {
 /**
  * Every line read, checked and measured (a link pasted again is measured once), then in order:
  * the placed entries fastest first, then the others.
- * @param {string} text the compare box @param {import('./challenge-rules.js').Rules} r @param {Tools} tools
+ * @param {string} text the compare box @param {import('./rules.js').Rules} r @param {Tools} tools
  * @returns {Promise<{placed: Entry[], others: Entry[]}>}
  */
 export async function rankEntries(text, r, tools) {
@@ -118,8 +118,8 @@ export function unchecked(placed) {
 /**
  * Checks a short code's claimed entry: its robot evolved again with the challenge's run (or its
  * genome checked before), its check compared, then measured here. Gives the entry as it now is.
- * @param {Entry} entry @param {import('./challenge-rules.js').Rules} r @param {Tools} tools
- * @param {(settings: import('../workers/protocol.js').EvolveSettings) => Promise<Float32Array>} evolve
+ * @param {Entry} entry @param {import('./rules.js').Rules} r @param {Tools} tools
+ * @param {(settings: import('../../workers/protocol.js').EvolveSettings) => Promise<Float32Array>} evolve
  * @returns {Promise<Entry>}
  */
 export async function checkCode(entry, r, { lab, defaults, checked }, evolve) {
@@ -177,7 +177,7 @@ function markSameRobots(ordered) {
 
 /**
  * One line: its link read with the page's link reader, checked against the rules, measured.
- * @param {string} name @param {string} link @param {import('./challenge-rules.js').Rules} r @param {Tools} tools
+ * @param {string} name @param {string} link @param {import('./rules.js').Rules} r @param {Tools} tools
  * @returns {Promise<Entry>}
  */
 async function readEntry(name, link, r, tools) {
@@ -227,7 +227,7 @@ async function readEntry(name, link, r, tools) {
 /**
  * One line that is a short code: read, its body checked against the rules, placed by the speed
  * it claims (or, checked before, measured here at once).
- * @param {string} name @param {string} text @param {import('./challenge-rules.js').Rules} r @param {Tools} tools
+ * @param {string} name @param {string} text @param {import('./rules.js').Rules} r @param {Tools} tools
  * @returns {Promise<Entry>}
  */
 async function readCodeEntry(name, text, r, tools) {

@@ -7,12 +7,12 @@
  * then nothing is kept, and the caller says so instead of failing (as keep/storage.js does for
  * the page's state). clearEntries forgets the class's entries and checks, not the challenge.
  */
-import { rulesFrom } from './challenge-rules.js';
+import { rulesFrom } from './rules.js';
 
 const KEY = 'vsr-playground/challenge/v1';
 
 /**
- * @typedef {{rules: import('./challenge-rules.js').Rules | null, links: string, checked?: Record<string, string>}} KeptChallenge
+ * @typedef {{rules: import('./rules.js').Rules | null, links: string, checked?: Record<string, string>}} KeptChallenge
  *   checked: a checked code's genome (base64 of its float32 bytes), by checkKey
  */
 
@@ -42,7 +42,7 @@ export function keepChallenge(challenge) {
 
 /**
  * Which checked genome a code of a challenge names: the run and the walk it was checked with, and the code.
- * @param {import('./challenge-rules.js').Rules} r @param {string} code its one spelling
+ * @param {import('./rules.js').Rules} r @param {string} code its one spelling
  */
 export function checkKey(r, code) {
   return [r.terrain, r.seconds, r.budget, r.seed, r.population, r.train, code].join(' ');

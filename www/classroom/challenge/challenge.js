@@ -1,48 +1,48 @@
 // @ts-check
 /**
- * A class challenge without a server. The teacher fixes the rules (challenge-rules.js) and makes
+ * A class challenge without a server. The teacher fixes the rules (rules.js) and makes
  * a challenge link; opening it sets the playground up for a student. A student's entry is an
  * ordinary share link. The teacher pastes the class's links (one a line, a name before each if
- * wanted) into the compare box, and the page ranks them (challenge-entries.js) by the rules of
+ * wanted) into the compare box, and the page ranks them (entries.js) by the rules of
  * the link the teacher made (or of the challenge link the page was opened from): never by the
  * form or the drawing as they are when Rank is pressed, which may have changed since. A student
- * may hand in a short code instead (challenge-code.js): ranked at once by the speed it claims,
+ * may hand in a short code instead (code.js): ranked at once by the speed it claims,
  * said as claimed; Rank then checks the best four (each evolved again here, 13 to 27 s on a
  * school laptop, said before it starts, its progress shown, stoppable), and “Check every code”
  * the rest. The rules made, the links and codes pasted and the codes checked are kept for the
- * teacher's next visit (challenge-store.js) until “Clear the class's entries”. The best four
+ * teacher's next visit (store.js) until “Clear the class's entries”. The best four
  * with a brain race side by side. A student's drawing that breaks the rules is said under the
  * grid, and Evolve is off until it keeps them (problem, read by the run panel).
  */
-import { checkTerrain, runGenome } from '../workers/core.js';
-import { byId } from '../shared/dom.js';
-import { messageOf } from '../workers/kit.js';
-import { terrainRefused } from '../viewer/terrain-words.js';
-import { checkCode, linesOf, order, rankEntries, unchecked } from './challenge-entries.js';
-import { EXAMPLE_CODE, looksLikeCode, normalCode, readCode, robotCode } from './challenge-code.js';
-import { evolveAgain } from './challenge-evolve.js';
-import { RUN_DEFAULTS, bodyProblem, challengeLink, rankingWords, rulesFrom, rulesOf, rulesWords, runOf, runSettings, sameRules } from './challenge-rules.js';
-import { loadQr, qrBox } from './qr.js';
-import { onlyHere } from './sheet-address.js';
-import { durationWords } from '../runs/progress.js';
-import { decimal } from '../shared/format.js';
-import { checkKey, genomeOf, genomeText, keepChallenge, loadChallenge } from './challenge-store.js';
-import { showRanking } from './challenge-table.js';
+import { checkTerrain, runGenome } from '../../workers/core.js';
+import { byId } from '../../shared/dom.js';
+import { messageOf } from '../../workers/kit.js';
+import { terrainRefused } from '../../viewer/terrain-words.js';
+import { checkCode, linesOf, order, rankEntries, unchecked } from './entries.js';
+import { EXAMPLE_CODE, looksLikeCode, normalCode, readCode, robotCode } from './code.js';
+import { evolveAgain } from './evolve.js';
+import { RUN_DEFAULTS, bodyProblem, challengeLink, rankingWords, rulesFrom, rulesOf, rulesWords, runOf, runSettings, sameRules } from './rules.js';
+import { loadQr, qrBox } from '../qr.js';
+import { onlyHere } from '../sheet-address.js';
+import { durationWords } from '../../runs/progress.js';
+import { decimal } from '../../shared/format.js';
+import { checkKey, genomeOf, genomeText, keepChallenge, loadChallenge } from './store.js';
+import { showRanking } from './table.js';
 
-/** @typedef {import('./challenge-rules.js').Rules} Rules */
-/** @typedef {import('./challenge-entries.js').Entry} Entry */
+/** @typedef {import('./rules.js').Rules} Rules */
+/** @typedef {import('./entries.js').Entry} Entry */
 
 /** How many of the best Rank checks at once: the race's four. */
 const BEST = 4;
 
 export class Challenge {
   /**
-   * @param {Document} doc @param {import('./lab.js').Lab} lab
-   * @param {{defaults: import('../workers/core.js').Defaults, rows: () => string, setView: (terrain: string) => void,
+   * @param {Document} doc @param {import('../lab.js').Lab} lab
+   * @param {{defaults: import('../../workers/core.js').Defaults, rows: () => string, setView: (terrain: string) => void,
    *   fixRun: (values: Record<string, string>) => void, setBody: (rows: string) => Promise<void>,
-   *   race: import('../viewer/race.js').Race, message: (text: string) => void, pin: (text: string) => void,
-   *   runSeconds: (settings: import('../workers/protocol.js').EvolveSettings) => number, refresh: () => void,
-   *   lastRun: () => {runFile: string | null, settings: import('../workers/protocol.js').EvolveSettings | null, mode: string}}} page
+   *   race: import('../../viewer/race.js').Race, message: (text: string) => void, pin: (text: string) => void,
+   *   runSeconds: (settings: import('../../workers/protocol.js').EvolveSettings) => number, refresh: () => void,
+   *   lastRun: () => {runFile: string | null, settings: import('../../workers/protocol.js').EvolveSettings | null, mode: string}}} page
    *   fixRun: the run settings every student's run uses, locked; runSeconds: how long a run takes here (NaN: not known);
    *   refresh: the page's buttons set again (Evolve is off while the drawing breaks the rules);
    *   lastRun: the page's latest finished run (its run file), its settings and mode
@@ -61,7 +61,7 @@ export class Challenge {
     /** The made link's QR code, for the projector, and the line that says when no student can open the link. */
     this.qr = byId(doc, 'challenge-qr');
     this.addressNote = byId(doc, 'challenge-address-note');
-    /** The student's short code, under the share link (challenge-code.js). */
+    /** The student's short code, under the share link (code.js). */
     this.codeLine = byId(doc, 'challenge-code');
     this.box = byId(doc, 'challenge-compare', HTMLTextAreaElement);
     this.status = byId(doc, 'challenge-status');
@@ -76,7 +76,7 @@ export class Challenge {
     this.estimate = byId(doc, 'challenge-estimate');
     /** What Evolve says while a student's drawing breaks the rules (beside the run's buttons). */
     this.runBlocked = byId(doc, 'run-blocked');
-    this.box.placeholder = `Ana ${EXAMPLE_CODE}\nBen https://…#shape=…`; // a real code (challenge-code.js)
+    this.box.placeholder = `Ana ${EXAMPLE_CODE}\nBen https://…#shape=…`; // a real code (code.js)
     /** The line under the grid that says which rule a student's drawing breaks, while it does. */
     this.warning = byId(doc, 'rule-warning');
     /** The grid, outlined while the drawing breaks the rules (the line under it may be off a phone's screen). */
@@ -257,7 +257,7 @@ export class Challenge {
    * After Share in a challenge: the robot's short code under the link, when the robot is the
    * challenge's run of its body (the page's latest run, from scratch with the challenge's
    * settings, finished, its best the brain shared); else why it has none (the link still counts).
-   * @param {import('../keep/share.js').PageState} state what the link holds
+   * @param {import('../../keep/share.js').PageState} state what the link holds
    */
   async shared(state) {
     const r = this.opened;
@@ -285,7 +285,7 @@ export class Challenge {
     const code = why || !brain ? null : robotCode(state.rows, brain.controller, brain.genome, speed);
     this.codeLine.dataset.code = code ?? '';
     if (code) {
-      // The code itself large and in a typewriter's letters, where a student copying it looks (0 and O read the same: challenge-code.js).
+      // The code itself large and in a typewriter's letters, where a student copying it looks (0 and O read the same: code.js).
       const letters = this.section.ownerDocument.createElement('span');
       letters.className = 'short-code';
       letters.textContent = code;

@@ -2,7 +2,7 @@
 /**
  * A robot's short code in a class challenge, for a student to type instead of a 700-character
  * share link (the link stays, exact, beside it). A challenge fixes every setting of the run
- * (challenge-rules.js) and a run is the same bits on every computer for the same settings, so a
+ * (rules.js) and a run is the same bits on every computer for the same settings, so a
  * robot evolved for the challenge is its body and brain family alone: the code holds those, the
  * speed the student's page measured (over the challenge's walk, as the teacher's page measures
  * it), a check of the brain's genes (10 bits of a hash) and a last letter that checks the code's
@@ -10,7 +10,7 @@
  *
  * The teacher's page ranks a code at once by the speed it claims, said as claimed, and checks it
  * when asked (the best four first, every code if the teacher wants): it evolves the robot again
- * from the code with the challenge's run (challenge-evolve.js) and compares the check; a checked
+ * from the code with the challenge's run (evolve.js) and compares the check; a checked
  * robot is measured again, so its speed is the teacher's page's own.
  *
  * The code: Crockford's base32 (no I, L, O or U; typed in any case, O read as 0, I and L as 1),
