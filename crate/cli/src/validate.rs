@@ -14,8 +14,22 @@ use vsr::{Error, Result};
 /// Arguments of `vsr validate`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    #[command(flatten)]
-    individual: crate::runfile::Individual,
+    /// The run file whose best individual is walked (or a co-design run file: its best body
+    /// with its brain).
+    #[arg(long, required_unless_present = "random_brain")]
+    genome: Option<PathBuf>,
+    /// A co-design run file's archive entry (0 first, in the file's order) instead of its best.
+    #[arg(long, requires = "genome")]
+    entry: Option<usize>,
+    /// Instead of --genome, with --bodies: a random brain for any body of this family
+    /// (attention-any, mlp-any, mlp-comm-any), its genes drawn uniformly in [-1, 1] (the GA's
+    /// initial range) from --seed: the floor a trained brain is measured against. Episodes
+    /// of --seconds (default 30).
+    #[arg(long, value_name = "CONTROLLER", conflicts_with = "genome", requires_all = ["bodies", "seed"])]
+    random_brain: Option<vsr::controllers::ControllerKind>,
+    /// The seed of --random-brain's genes.
+    #[arg(long, requires = "random_brain")]
+    seed: Option<u64>,
     /// Simulated seconds per episode [default: the run's own episode length, config.seconds
     /// in the run file].
     #[arg(long)]
@@ -42,7 +56,15 @@ pub struct Args {
 
 /// Runs the command.
 pub fn run(args: Args) -> Result<()> {
-    let (best, seconds) = args.individual.load(args.seconds)?;
+    let (best, seconds) = match (&args.genome, args.random_brain) {
+        (Some(genome), _) => crate::runfile::Individual {
+            genome: genome.clone(),
+            entry: args.entry,
+        }
+        .load(args.seconds)?,
+        (None, Some(kind)) => random_brain(&args, kind)?,
+        (None, None) => unreachable!("clap requires --genome or --random-brain"),
+    };
     if let Some(out) = &args.out {
         crate::atomic::check_writable(out)?;
     }
@@ -59,6 +81,18 @@ pub fn run(args: Args) -> Result<()> {
     say!("{:<16} {:>8.3} m/s", "median", validation.median);
     say!("{:<16} {:>8.3} m/s", "mean", validation.mean);
     Ok(())
+}
+
+/// `--random-brain`: the seeded random genome on the set's first body, and the episode
+/// length (`--seconds`, 30 by default).
+fn random_brain(args: &Args, kind: vsr::controllers::ControllerKind) -> Result<(Best, f64)> {
+    let seconds = args.seconds.unwrap_or(30.0);
+    vsr::experiment::config::check_seconds(seconds)?;
+    let path = args.bodies.as_ref().expect("clap requires --bodies");
+    let bodies = BodySet::read(path)?;
+    let seed = args.seed.expect("clap requires --seed");
+    let best = vsr::experiment::body_set::random_brain(kind, &bodies.bodies[0], seed)?;
+    Ok((best, seconds))
 }
 
 /// Writes `validation` to `--out` when asked, and prints it as JSON with `--json` (then

@@ -15,7 +15,9 @@ use crate::error::{Error, Result};
 use crate::simulation::Shape;
 use serde::{Deserialize, Serialize};
 
-pub use validation::{validate_bodies, validate_body, BodiesValidation, BodyValidation};
+pub use validation::{
+    random_brain, validate_bodies, validate_body, BodiesValidation, BodyValidation,
+};
 
 /// Most bodies a set may hold.
 pub const MAX_BODIES: usize = 10_000;

@@ -5,11 +5,14 @@
 //! [`WALKS`] m/s.
 
 use super::BodySet;
+use crate::controllers::ControllerKind;
 use crate::error::{Error, Result};
 use crate::experiment::run::Best;
 use crate::experiment::validation::{validate_on, Validation, ValidationSet};
 use crate::quantiles::median;
+use crate::random::rng_from;
 use crate::simulation::Shape;
+use rand::Rng;
 use serde::{Deserialize, Serialize};
 
 /// The speed (m/s) above which a body counts as walking in the summary.
@@ -57,6 +60,24 @@ pub fn best_on(best: &Best, body: &Shape) -> Result<Best> {
         shape: body.clone(),
         ..best.clone()
     })
+}
+
+/// A random brain for any body: `controller`'s genome drawn uniformly in [-1, 1] (the GA's
+/// initial range) from the project's generator seeded with `seed`, on `body` (its fitness
+/// unknown: NaN). The floor a trained brain is measured against (`vsr validate
+/// --random-brain`); a controller with genes for each voxel is refused in words.
+pub fn random_brain(controller: ControllerKind, body: &Shape, seed: u64) -> Result<Best> {
+    if !controller.is_body_independent() {
+        return Err(Error::Input(format!(
+            "a random brain for a body set needs a brain for any body (attention-any, mlp-any, \
+             mlp-comm-any), not {controller}"
+        )));
+    }
+    let mut rng = rng_from(seed);
+    let genome = (0..controller.param_count(body.voxel_count()))
+        .map(|_| -1.0 + 2.0 * rng.gen::<f32>())
+        .collect();
+    Ok(Best::new(controller, body.clone(), genome, f64::NAN))
 }
 
 /// Validates `best` on one body (see [`validate_on`]).
@@ -110,4 +131,24 @@ pub fn validate_bodies(
         .map(|b| validate_body(best, b, set, seconds))
         .collect::<Result<Vec<_>>>()?;
     Ok(BodiesValidation::new(bodies, set, seconds, per_body))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_random_brain_is_its_seed_s_for_every_body_and_refuses_a_per_voxel_brain() {
+        let biped = Shape::parse("biped-4x3").unwrap();
+        let comb = Shape::parse("comb-7x2").unwrap();
+        let kind = ControllerKind::AttentionAny;
+        let a = random_brain(kind, &biped, 3).unwrap();
+        assert_eq!(a.genome, random_brain(kind, &comb, 3).unwrap().genome);
+        assert_ne!(a.genome, random_brain(kind, &biped, 4).unwrap().genome);
+        assert_eq!(a.genome.len(), kind.param_count(biped.voxel_count()));
+        assert!(a.genome.iter().all(|g| (-1.0..=1.0).contains(g)));
+        assert!(a.fitness.is_nan());
+        let e = random_brain(ControllerKind::Attention, &biped, 3).unwrap_err();
+        assert!(e.to_string().contains("brain for any body"), "{e}");
+    }
 }
