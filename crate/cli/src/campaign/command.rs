@@ -57,6 +57,26 @@ pub fn args(job: &Job, threads: usize) -> Vec<String> {
             &seconds.to_string(),
             "--json",
         ]),
+        Task::RandomBodies {
+            controller,
+            seed,
+            bodies,
+            set,
+            seconds,
+        } => words(&[
+            "validate",
+            "--random-brain",
+            controller.name(),
+            "--seed",
+            &seed.to_string(),
+            "--bodies",
+            &bodies.display().to_string(),
+            "--set",
+            set.name(),
+            "--seconds",
+            &seconds.to_string(),
+            "--json",
+        ]),
         Task::Codesign(task) => codesign_args(task),
         Task::Fidelity { reference } => {
             words(&["fidelity", "--reference", &reference.display().to_string()])

@@ -23,10 +23,12 @@ pub fn run(args: Args) -> Result<()> {
     let path = args.csv.unwrap_or_else(|| out.join("campaign.csv"));
     crate::atomic::write(&path, merge::csv(&results).as_bytes(), "table")?;
     let found = results.data.iter().filter(|(_, d)| d.run.is_some()).count();
+    let any_body = results.any_body.iter().filter(|(_, d)| d.run.is_some());
+    let found = found + any_body.count();
     say!(
         "{} runs of {} in {}; {} planned outputs missing",
         found,
-        results.data.len(),
+        results.data.len() + results.any_body.len(),
         path.display(),
         results.missing.len()
     );

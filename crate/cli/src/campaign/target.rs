@@ -125,7 +125,8 @@ pub fn load_results(campaign: Campaign, out: &Path) -> Result<Results> {
     }
     let groups = results.campaign.any_body.clone();
     for (spec, data) in &mut results.any_body {
-        data.finished = spec_path(out, "runs", &spec.stem(), "json").exists();
+        data.run = read_json(&spec.run_path(out), RunFile::from_json)?;
+        data.finished = data.run.is_some();
         let Some(g) = groups.iter().find(|g| g.name == spec.group) else {
             continue;
         };
@@ -136,6 +137,17 @@ pub fn load_results(campaign: Campaign, out: &Path) -> Result<Results> {
                 if let Some(v) = read_json(&spec_path(out, "validation", &name, "json"), json)? {
                     data.validation.insert((stem.clone(), set), v);
                 }
+            }
+        }
+    }
+    let floor_sets = vsr_study::campaign::any_body::floor_sets(&groups);
+    for (&(controller, seed), found) in results.floor.iter_mut().map(|(b, f)| (&*b, f)) {
+        let stem = vsr_study::campaign::any_body::floor_stem(controller, seed);
+        for (bodies, set) in &floor_sets {
+            let set_stem = vsr_study::campaign::any_body::set_stem(bodies);
+            let name = format!("{stem}.{set_stem}.{set}");
+            if let Some(v) = read_json(&spec_path(out, "validation", &name, "json"), json)? {
+                found.insert((set_stem, *set), v);
             }
         }
     }

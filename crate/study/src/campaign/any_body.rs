@@ -5,6 +5,12 @@
 //! `runs/NAME-CONTROLLER-EVALS-sSEED.json` and
 //! `validation/NAME-CONTROLLER-EVALS-sSEED.BODYSET.SET.json` (BODYSET: the set file's stem).
 //!
+//! Beside the runs, the floor they are measured against (the plan's "random brain"): for every
+//! family the groups train and every seed of the campaign, a random genome of that family
+//! (`vsr validate --random-brain`, genes uniform in [-1, 1] from the seed) walked on every
+//! held-out set of the groups (each set once), stage 1:
+//! `validation/floor-CONTROLLER-sSEED.BODYSET.SET.json` ([`floor_jobs`]).
+//!
 //! ```toml
 //! [[any_body]]
 //! name = "any-train32"                       # the first part of its file names
@@ -160,4 +166,73 @@ impl AnyBodyGroup {
         }
         jobs
     }
+}
+
+/// The first part of the floor's file names.
+pub const FLOOR: &str = "floor";
+
+/// The file stem of the floor's random brain of `controller` and `seed`.
+pub fn floor_stem(controller: ControllerKind, seed: u64) -> String {
+    format!("{FLOOR}-{controller}-s{seed}")
+}
+
+/// The floor's random brains: every family the groups train (in their order), each at every
+/// seed of `seeds` (the campaign's).
+pub fn floor_brains(groups: &[AnyBodyGroup], seeds: &[u64]) -> Vec<(ControllerKind, u64)> {
+    let mut kinds: Vec<ControllerKind> = Vec::new();
+    for g in groups {
+        for &c in &g.controllers {
+            if !kinds.contains(&c) {
+                kinds.push(c);
+            }
+        }
+    }
+    kinds
+        .into_iter()
+        .flat_map(|c| seeds.iter().map(move |&s| (c, s)))
+        .collect()
+}
+
+/// The sets the floor is walked on: every held-out set of the groups, each once (in their
+/// order), with every terrain set of the groups.
+pub fn floor_sets(groups: &[AnyBodyGroup]) -> Vec<(String, ValidationSet)> {
+    let mut out: Vec<(String, ValidationSet)> = Vec::new();
+    for g in groups {
+        for h in &g.heldout {
+            for &set in &g.sets {
+                if !out.iter().any(|(b, s)| b == h && *s == set) {
+                    out.push((h.clone(), set));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The floor's jobs under `out` (stage 1: they need no run); episodes of `seconds`.
+pub fn floor_jobs(groups: &[AnyBodyGroup], seeds: &[u64], seconds: f64, out: &Path) -> Vec<Job> {
+    let sets = floor_sets(groups);
+    let mut jobs = Vec::new();
+    for (controller, seed) in floor_brains(groups, seeds) {
+        for (bodies, set) in &sets {
+            let name = format!(
+                "{}.{}.{set}.json",
+                floor_stem(controller, seed),
+                set_stem(bodies)
+            );
+            jobs.push(Job {
+                stage: 1,
+                task: Task::RandomBodies {
+                    controller,
+                    seed,
+                    bodies: PathBuf::from(bodies),
+                    set: *set,
+                    seconds,
+                },
+                out: out.join("validation").join(name),
+                needs: vec![],
+            });
+        }
+    }
+    jobs
 }

@@ -55,6 +55,20 @@ pub enum Task {
         /// Episode seconds.
         seconds: f64,
     },
+    /// A random brain for any body walked on every body of a set: the floor of the trained
+    /// brains (`vsr validate --random-brain CONTROLLER --seed SEED --bodies`).
+    RandomBodies {
+        /// The family of the random brain.
+        controller: ControllerKind,
+        /// The seed of its genes.
+        seed: u64,
+        /// The body-set file.
+        bodies: PathBuf,
+        /// The validation set (terrains).
+        set: ValidationSet,
+        /// Episode seconds.
+        seconds: f64,
+    },
     /// A body search (`vsr codesign`).
     Codesign(CodesignTask),
     /// The reference's gait ensembles measured here (`vsr fidelity`).

@@ -175,6 +175,12 @@ pub fn plan(c: &Campaign, out: &Path) -> Vec<Job> {
     for g in &c.any_body {
         jobs.extend(g.jobs(&c.seeds, (c.seconds, c.population, &c.terrain), out));
     }
+    jobs.extend(super::any_body::floor_jobs(
+        &c.any_body,
+        &c.seeds,
+        c.seconds,
+        out,
+    ));
     jobs.sort_by_key(|j| j.stage);
     jobs
 }

@@ -145,11 +145,18 @@ pub struct Results {
     /// Data of every planned run of a brain for any body, in campaign order (group, seed,
     /// controller).
     pub any_body: Vec<(AnyBodySpec, AnyBodyData)>,
+    /// The floor of the `[[any_body]]` groups: each random brain (family, seed) with its
+    /// validations found, per (body-set stem, terrain set) (`any_body::floor_jobs`).
+    pub floor: Vec<((vsr::controllers::ControllerKind, u64), BodySetValidations)>,
     /// Planned output files not found.
     pub missing: Vec<PathBuf>,
     /// The fidelity measurements found, with their reference files, in campaign order.
     pub fidelity: Vec<(PathBuf, Fidelity)>,
 }
+
+/// Validations of one brain on body sets, per (body-set stem, terrain set).
+pub type BodySetValidations =
+    BTreeMap<(String, ValidationSet), vsr::experiment::body_set::BodiesValidation>;
 
 /// One planned run of an `[[any_body]]` group.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -165,6 +172,11 @@ pub struct AnyBodySpec {
 }
 
 impl AnyBodySpec {
+    /// Its run file under the campaign's output folder `out`.
+    pub fn run_path(&self, out: &Path) -> PathBuf {
+        out.join("runs").join(format!("{}.json", self.stem()))
+    }
+
     /// The file stem of its outputs (`any_body::AnyBodyGroup::stem`).
     pub fn stem(&self) -> String {
         format!(
@@ -174,12 +186,14 @@ impl AnyBodySpec {
     }
 }
 
-/// What exists of one any-body run: whether its run file is there, and its validations per
-/// (body-set stem, terrain set).
+/// What exists of one any-body run: whether its run file is there (and the file), and its
+/// validations per (body-set stem, terrain set).
 #[derive(Debug, Clone, Default)]
 pub struct AnyBodyData {
     /// The run file exists (the run is finished: a run in flight writes only its checkpoint).
     pub finished: bool,
+    /// The run file, when it exists.
+    pub run: Option<RunFile>,
     /// Its best on each body set, per (body-set stem, terrain set).
     pub validation: std::collections::BTreeMap<
         (String, ValidationSet),
@@ -241,12 +255,17 @@ impl Results {
                 }
             }
         }
+        let floor = super::any_body::floor_brains(&campaign.any_body, &campaign.seeds)
+            .into_iter()
+            .map(|b| (b, BTreeMap::new()))
+            .collect();
         Results {
             campaign,
             data,
             earlier,
             known,
             codesign,
+            floor,
             any_body,
             missing: Vec::new(),
             fidelity: Vec::new(),
