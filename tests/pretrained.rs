@@ -2,7 +2,9 @@
 //! lists every run file of the folder, each loads, matches what its entry records, and its
 //! best individual re-validates on both validation sets to exactly the velocities recorded
 //! when the campaign validated it. The same for the bodies of body searches (`bodies/`):
-//! each is its run file's best, the archive entry the manifest names.
+//! each is its run file's best, the archive entry the manifest names. A brain for any body
+//! (`any_body` in its entry) re-walks every body set its entry lists to exactly the per-body
+//! speeds recorded.
 
 use vsr::experiment::run::{Best, RunFile};
 use vsr::experiment::validation::validate_on;
@@ -34,6 +36,10 @@ fn replays_to(p: &Provenance, best: &Best, seconds: f64, file: &str) {
     }
 }
 
+fn command_names_seed(p: &Provenance) -> bool {
+    p.command.contains(&format!("--seed {}", p.seed))
+}
+
 #[test]
 fn every_pretrained_module_replays_to_its_recorded_figures() {
     let manifest = manifest();
@@ -54,6 +60,15 @@ fn every_pretrained_module_replays_to_its_recorded_figures() {
         );
         let last = run.generations.last().map(|g| g.evaluations);
         assert_eq!(last, Some(m.provenance.evaluations), "{file}: evaluations");
+        if let Some(record) = &m.any_body {
+            assert!(command_names_seed(&m.provenance), "{file}");
+            let trained = run.config.bodies.as_ref().map(|b| b.set.bodies.len());
+            assert_eq!(trained, m.bodies, "{file}: training bodies");
+            let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+            vsr_study::campaign::export::any_body::replay(record, &run.best, root)
+                .unwrap_or_else(|e| panic!("{file}: {e}"));
+            continue;
+        }
         replays_to(&m.provenance, &run.best, run.config.seconds, file);
     }
 }

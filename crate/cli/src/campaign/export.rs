@@ -4,7 +4,9 @@
 //! validated run keeps what the previous export gave it (nothing is lost by exporting a
 //! campaign that has barely started); other files the previous manifest listed are removed.
 //! A campaign that plans body searches also exports their best bodies (`export_bodies`); one
-//! that plans no module run (only body searches) leaves the modules as they are.
+//! that plans no module run (only body searches) leaves the modules as they are. An
+//! `[[any_body]]` group exports its brains for any body (`export_any_body`), which no other
+//! campaign's export removes.
 
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -27,7 +29,11 @@ pub struct Args {
     #[arg(long, default_value = "pretrained")]
     to: PathBuf,
     /// Controller families exported (default: those the page runs), comma-separated.
-    #[arg(long, value_delimiter = ',', default_value = "attention,mlp,mlp-comm")]
+    #[arg(
+        long,
+        value_delimiter = ',',
+        default_value = "attention,mlp,mlp-comm,attention-any"
+    )]
     controllers: Vec<ControllerKind>,
 }
 
@@ -54,6 +60,9 @@ pub fn run(args: Args) -> Result<()> {
     let mut modules = Vec::new();
     let mut pending = Vec::new();
     let plans_modules = !results.data.is_empty();
+    // Brains for any body are handled apart (`export_any_body`), whatever the campaign.
+    let (previous_any, previous): (Vec<Entry>, Vec<Entry>) =
+        previous.into_iter().partition(|e| e.any_body.is_some());
     if !plans_modules {
         let kept = previous.iter().filter(|e| args.to.join(&e.file).exists());
         modules.extend(kept.cloned());
@@ -110,6 +119,15 @@ pub fn run(args: Args) -> Result<()> {
         .iter()
         .filter(|e| plans_modules && !args.controllers.contains(&e.controller));
     modules.extend(others.filter(|e| args.to.join(&e.file).exists()).cloned());
+    let any = super::export_any_body::export(
+        &results,
+        (&jobs, &out),
+        &args.to,
+        &previous_any,
+        (&campaign_file, &version, &args.controllers),
+    )?;
+    modules.extend(any.modules);
+    pending.extend(any.pending);
     let exported = super::export_bodies::export(
         &results,
         (&jobs, &out),
@@ -266,10 +284,11 @@ fn readme(manifest: &Manifest, pending: &[String], campaign: &str, dir: &Path) -
          version, the training fitness and the velocities `vsr validate` gives on both \
          validation sets (`paper`: hilly-1-10-0..9, also in the training pool; `unseen`: \
          hilly-1-10-10000..10009). `tests/pretrained.rs` replays every module to exactly \
-         those velocities. The page lists them (Modules).\n\n{table}{bodies}{not_yet}",
+         those velocities. The page lists them (Modules).\n\n{table}{any_body}{bodies}{not_yet}",
         dir = dir.display(),
         selection = manifest.selection,
         table = manifest.table(),
+        any_body = super::export_any_body::readme_part(manifest),
         bodies = super::export_bodies::readme_part(manifest)
     )
 }

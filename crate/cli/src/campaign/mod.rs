@@ -9,6 +9,7 @@ mod boxes_svg;
 mod chart_frame;
 pub mod command;
 mod export;
+mod export_any_body;
 mod export_bodies;
 mod intervals_svg;
 mod merge;

@@ -6,8 +6,10 @@
 //! best has the highest median velocity on the `paper` validation set (ties: the first in
 //! plan order). The `unseen` set is not used to choose, so its figure stays an unbiased
 //! estimate of how the chosen module walks on terrains it has never met. A body-search
-//! campaign's best bodies with their brains go beside them (`bodies`).
+//! campaign's best bodies with their brains go beside them (`bodies`); an `[[any_body]]`
+//! group's brains for any body are chosen by their training-set median (`any_body`).
 
+pub mod any_body;
 pub mod bodies;
 mod provenance;
 
@@ -60,6 +62,14 @@ pub struct Entry {
     /// For a fine-tuned module: the shape its attention module was evolved on.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub finetuned_from: Option<String>,
+    /// For a brain for any body: how many bodies it was trained on (`shape` then names the
+    /// training set, `rows` its first body).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bodies: Option<usize>,
+    /// For a brain for any body: its group, training set and figures on every body set
+    /// (its `validation` is empty: it has no one body).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub any_body: Option<any_body::AnyBodyRecord>,
     /// Where it came from, and the figures a replay must reproduce.
     #[serde(flatten)]
     pub provenance: Provenance,
@@ -173,6 +183,8 @@ pub fn entry(choice: &Choice, origin: Origin) -> Option<Entry> {
         rows: run.best.shape.to_rows(),
         controller: choice.spec.controller,
         finetuned_from: choice.spec.source.as_ref().map(|s| s.shape.clone()),
+        bodies: None,
+        any_body: None,
         provenance: Provenance::new(figures, &choice.data.validation, choice.candidates, origin),
     })
 }
@@ -198,7 +210,7 @@ impl Manifest {
             "| file | shape | controller | seed | evaluations | training best | paper median | \
              unseen median | chosen from (validated runs) |\n|---|---|---|---|---|---|---|---|---|\n",
         );
-        for m in &self.modules {
+        for m in self.modules.iter().filter(|m| m.any_body.is_none()) {
             let median = |set| {
                 m.provenance
                     .validation
