@@ -1,7 +1,8 @@
 //! Draws a picture of bodies (`Plot::Bodies`) as plain SVG: a row per label (with its note on
 //! a second, smaller line), each body a grid of square voxels standing on a ground line, its
 //! caption under it, each row in the colour its label's role has in every other figure
-//! (`palette`). The labels' column is as wide as its longest line, by an estimate of the
+//! (`palette`); a row with an empty label continues the row above it, in its colour. The
+//! labels' column is as wide as its longest line, by an estimate of the
 //! viewer's sans-serif font (no font file is read), so that no label runs into a body.
 
 use super::palette::look;
@@ -52,9 +53,13 @@ pub fn draw(figure: &Figure, rows: &[BodyRow]) -> String {
         width / 2.0,
         escape(&figure.title)
     );
+    let mut colour_of = 0;
     for (i, row) in rows.iter().enumerate() {
         let top = TITLE + ROW * i as f64;
-        let c = look(Role::of(&row.label), i).colour;
+        if !row.label.is_empty() {
+            colour_of = i;
+        }
+        let c = look(Role::of(&rows[colour_of].label), colour_of).colour;
         let colour = format!("#{:02x}{:02x}{:02x}", c.0, c.1, c.2);
         svg += &format!(
             "<text x=\"10\" y=\"{}\" font-size=\"{LABEL_FONT}\" fill=\"{colour}\">{}</text>\n",

@@ -27,6 +27,18 @@ fn key(plot: &Plot) -> Option<&'static str> {
     }
 }
 
+/// The figure's width: 800 px, or more for box plots whose labels would not fit under their
+/// boxes (by an estimate of 6.5 px per character of the axis font, 20 px apart).
+fn width(plot: &Plot) -> u32 {
+    let Plot::Boxes(boxes) = plot else {
+        return SIZE.0;
+    };
+    let longest = boxes.iter().map(|b| b.label.chars().count()).max();
+    let per_box = longest.unwrap_or(0) as f64 * 6.5 + 20.0;
+    SIZE.0
+        .max((90.0 + per_box * boxes.len() as f64).ceil() as u32)
+}
+
 /// The SVG text of `figure`.
 pub fn draw(figure: &Figure) -> Result<String> {
     if let Plot::Bodies(rows) = &figure.plot {
@@ -37,7 +49,8 @@ pub fn draw(figure: &Figure) -> Result<String> {
         let key = key(&figure.plot).map(str::to_string);
         let notes: Vec<&String> = key.iter().chain(&figure.notes).collect();
         let height = SIZE.1 + NOTE_LINE * notes.len() as u32;
-        let root = SVGBackend::with_string(&mut svg, (SIZE.0, height)).into_drawing_area();
+        let root =
+            SVGBackend::with_string(&mut svg, (width(&figure.plot), height)).into_drawing_area();
         root.fill(&WHITE).map_err(plot_error)?;
         // The notes go under the chart.
         let (root, under) = root.split_vertically(SIZE.1);

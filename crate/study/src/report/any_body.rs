@@ -13,7 +13,12 @@
 //! No test, estimate or figure of a family is printed until every planned run of its
 //! conditions has its primary validation: before that, only how many runs each condition has
 //! (no interim result is read). Secondary measures (each held-out set, the training-to-held-out
-//! gap, the share of held-out bodies above 1 m/s) are estimates, printed with the tests.
+//! gap, the share of held-out bodies above 1 m/s) are estimates, printed with the tests, and
+//! so are the figures (`pictures`). The floor (random brains, `floor`) is printed whenever its
+//! files are in: it reads no run.
+
+mod floor;
+mod pictures;
 
 use super::noninferiority::{Verdict, ONE_SIDED_ALPHA};
 use super::Report;
@@ -34,6 +39,7 @@ pub const PRIMARY: &str = "heldout-random";
 /// One condition: a group's runs of one controller, with their data in seed order.
 struct Condition<'a> {
     label: String,
+    controller: ControllerKind,
     group: &'a AnyBodyGroup,
     runs: Vec<&'a AnyBodyData>,
     planned: usize,
@@ -78,6 +84,7 @@ fn conditions<'a>(results: &'a Results) -> Vec<Condition<'a>> {
                 .collect();
             out.push(Condition {
                 label: format!("{controller} on {}", set_stem(&g.bodies)),
+                controller,
                 group: g,
                 planned: runs.len(),
                 runs,
@@ -271,9 +278,12 @@ pub fn any_body_section(results: &Results, r: &mut Report) {
             );
         }
     }
-    if all.iter().all(|c| c.complete()) {
+    let ready = all.iter().all(|c| c.complete());
+    if ready {
         estimates(&all, md);
     }
+    floor::floor_section(results, md);
+    pictures::figures(results, &all, ready, r);
 }
 
 /// Secondary measures, per condition: median [q1, q3] over runs of each set's median, the gap
