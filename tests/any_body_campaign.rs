@@ -70,6 +70,7 @@ fn runs_validations_status_and_a_report_that_waits_for_every_run() {
     assert!(status.contains("10 of 10 finished"), "{status}");
     vsr(&dir, &["report", "c.toml", "--dir", "report"]);
     let report = std::fs::read_to_string(dir.join("report/report.md")).unwrap();
+    assert!(report.contains("Run files found: 10 of 10."), "{report}");
     assert!(
         report.contains("| attention-any on train-32 | 2 of 2 | 2 |"),
         "{report}"

@@ -4,16 +4,9 @@
 //! resolved relative to the campaign file, or under `--out-dir` (`target.rs`). One file per
 //! subcommand; `command.rs` turns a planned job into a `vsr` command line.
 
-mod bodies_svg;
-mod boxes_svg;
-mod chart_frame;
 pub mod command;
 mod export;
-mod export_any_body;
-mod export_bodies;
-mod intervals_svg;
 mod merge;
-mod palette;
 mod plan;
 pub mod report;
 mod run;

@@ -107,8 +107,9 @@ fn missing_section(results: &Results, md: &mut String) {
         .filter(|d| d.run.is_some())
         .count();
     let bodies = results.codesign.iter().filter(|(_, d)| d.run.is_some());
-    let found = found + bodies.count();
-    let planned = results.data.len() + results.codesign.len();
+    let any_body = results.any_body.iter().filter(|(_, d)| d.run.is_some());
+    let found = found + bodies.count() + any_body.count();
+    let planned = results.data.len() + results.codesign.len() + results.any_body.len();
     let _ = writeln!(md, "Run files found: {found} of {planned}.");
     if results.missing.is_empty() {
         md.push_str("Every planned output exists.\n\n");

@@ -5,9 +5,9 @@
 //! them, never pooled.
 
 use super::super::families::ALPHA;
-use super::{arm, complete, tests as planned_tests, Test, ONE_SIDED_ALPHA};
-use super::figure::{figure, file};
 use super::super::Report;
+use super::figure::{figure, file};
+use super::{arm, complete, tests as planned_tests, Test, ONE_SIDED_ALPHA};
 use crate::campaign::file::{EvolveGroup, NonInferiority};
 use crate::campaign::Results;
 use crate::statistics::{hodges_lehmann, mann_whitney, median, Method};

@@ -14,7 +14,7 @@ use vsr_study::campaign::export::bodies::{
 use vsr_study::campaign::export::{Manifest, Origin};
 use vsr_study::campaign::{Job, Results};
 
-use super::command;
+use crate::campaign::command;
 
 /// The bodies of the manifest after this export, and the files not written yet.
 pub struct Exported {

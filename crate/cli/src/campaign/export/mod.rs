@@ -3,10 +3,13 @@
 //! figures a replay must reproduce, and a README table). A category without a finished,
 //! validated run keeps what the previous export gave it (nothing is lost by exporting a
 //! campaign that has barely started); other files the previous manifest listed are removed.
-//! A campaign that plans body searches also exports their best bodies (`export_bodies`); one
+//! A campaign that plans body searches also exports their best bodies (`bodies`); one
 //! that plans no module run (only body searches) leaves the modules as they are. An
-//! `[[any_body]]` group exports its brains for any body (`export_any_body`), which no other
+//! `[[any_body]]` group exports its brains for any body (`any_body`), which no other
 //! campaign's export removes.
+
+mod any_body;
+mod bodies;
 
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -17,8 +20,8 @@ use vsr_study::campaign::export::bodies::BodyEntry;
 use vsr_study::campaign::export::{choose, entry, file_name, Entry, Manifest, Origin};
 use vsr_study::campaign::plan;
 
-use super::command;
-use super::target::{load_results, Target};
+use crate::campaign::command;
+use crate::campaign::target::{load_results, Target};
 
 /// Arguments of `vsr campaign export`.
 #[derive(clap::Args, Debug)]
@@ -60,7 +63,7 @@ pub fn run(args: Args) -> Result<()> {
     let mut modules = Vec::new();
     let mut pending = Vec::new();
     let plans_modules = !results.data.is_empty();
-    // Brains for any body are handled apart (`export_any_body`), whatever the campaign.
+    // Brains for any body are handled apart (`any_body`), whatever the campaign.
     let (previous_any, previous): (Vec<Entry>, Vec<Entry>) =
         previous.into_iter().partition(|e| e.any_body.is_some());
     if !plans_modules {
@@ -119,7 +122,7 @@ pub fn run(args: Args) -> Result<()> {
         .iter()
         .filter(|e| plans_modules && !args.controllers.contains(&e.controller));
     modules.extend(others.filter(|e| args.to.join(&e.file).exists()).cloned());
-    let any = super::export_any_body::export(
+    let any = any_body::export(
         &results,
         (&jobs, &out),
         &args.to,
@@ -128,7 +131,7 @@ pub fn run(args: Args) -> Result<()> {
     )?;
     modules.extend(any.modules);
     pending.extend(any.pending);
-    let exported = super::export_bodies::export(
+    let exported = bodies::export(
         &results,
         (&jobs, &out),
         &args.to,
@@ -288,8 +291,8 @@ fn readme(manifest: &Manifest, pending: &[String], campaign: &str, dir: &Path) -
         dir = dir.display(),
         selection = manifest.selection,
         table = manifest.table(),
-        any_body = super::export_any_body::readme_part(manifest),
-        bodies = super::export_bodies::readme_part(manifest)
+        any_body = any_body::readme_part(manifest),
+        bodies = bodies::readme_part(manifest)
     )
 }
 

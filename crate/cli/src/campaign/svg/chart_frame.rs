@@ -1,7 +1,7 @@
 //! What every figure of the report shares, whatever it draws: the frame (title, margins, axis
 //! areas), the grid's colours, the legend's box, the dashed marks at chosen x, the padded
 //! range of the data, and the error of a failed drawing. The figures themselves: `svg`
-//! (lines and points against points), `boxes_svg`, `intervals_svg`.
+//! (lines and points against points), `boxes`, `intervals`.
 
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;

@@ -15,7 +15,7 @@ use vsr_study::campaign::export::any_body::{
 use vsr_study::campaign::export::{Entry, Manifest, Origin};
 use vsr_study::campaign::{Job, Results};
 
-use super::command;
+use crate::campaign::command;
 
 /// The brains for any body of the manifest after this export, and the files not written yet.
 pub struct Exported {

@@ -1,11 +1,17 @@
 //! Draws the report's figures as SVG with plotters' SVG backend. Text is written as SVG
 //! `<text>` (plotters without its `ttf` / `ab_glyph` features lays text out by estimate and
 //! needs no font file), so the viewer's sans-serif font renders it. Colours: `palette`.
-//! Boxes, bodies and intervals are drawn in their own files (`boxes_svg`, `bodies_svg`,
-//! `intervals_svg`), the frame every chart shares in `chart_frame`.
+//! Boxes, bodies and intervals are drawn in their own files (`boxes`, `bodies`,
+//! `intervals`), the frame every chart shares in `chart_frame`.
 
-use super::chart_frame::{chart, legend, marked, plot_error, range, Area, FINE_GRID, GRID};
-use super::palette::{looks, Look};
+mod bodies;
+mod boxes;
+mod chart_frame;
+mod intervals;
+mod palette;
+
+use chart_frame::{chart, legend, marked, plot_error, range, Area, FINE_GRID, GRID};
+use palette::{looks, Look};
 use plotters::prelude::*;
 use vsr::Result;
 use vsr_study::report::figures::{Band, Figure, Mark, Plot, Points};
@@ -42,7 +48,7 @@ fn width(plot: &Plot) -> u32 {
 /// The SVG text of `figure`.
 pub fn draw(figure: &Figure) -> Result<String> {
     if let Plot::Bodies(rows) = &figure.plot {
-        return Ok(super::bodies_svg::draw(figure, rows));
+        return Ok(bodies::draw(figure, rows));
     }
     let mut svg = String::new();
     {
@@ -62,11 +68,9 @@ pub fn draw(figure: &Figure) -> Result<String> {
         }
         match &figure.plot {
             Plot::Lines { bands, marks } => lines(&root, figure, bands, marks)?,
-            Plot::Boxes(boxes) => super::boxes_svg::draw(&root, figure, boxes)?,
+            Plot::Boxes(boxes) => boxes::draw(&root, figure, boxes)?,
             Plot::Versus(series) => versus(&root, figure, series)?,
-            Plot::Intervals { rows, marks } => {
-                super::intervals_svg::draw(&root, figure, rows, marks)?
-            }
+            Plot::Intervals { rows, marks } => intervals::draw(&root, figure, rows, marks)?,
             Plot::Bodies(_) => unreachable!("drawn above"),
         }
         root.present().map_err(plot_error)?;
