@@ -38,6 +38,7 @@ import { Tour } from './tour/tour.js';
 import { Viewer } from './viewer/viewer.js';
 import { editWalking } from './robot/walking-edit.js';
 import { familyName, hasAttention, isAnyBody } from './shared/families.js';
+import { SteadyRoom } from './shared/steady.js';
 
 const messages = new MessageBox(byId(document, 'message'), byId(document, 'shape-message'));
 const defaults = await ready.catch((error) => {
@@ -83,6 +84,8 @@ const keeper = new Keeper(defaults, {
   shared: (state) => challenge?.shared(state),
 });
 const speedNote = new SpeedNote(byId(document, 'speed-note'), new Measurer(defaults.viewNoiseSeed));
+// The lines over the run's buttons that a run's newest best writes again: their room kept while it runs (Stop stays put).
+const steady = new SteadyRoom(['live-figures', 'driver', 'speed-note', 'freeze-report'].map((id) => byId(document, id)));
 const modules = new ModuleList(document, {
   loadOnto: (module) => robot.loadModule(module),
   openOwn: (module) => robot.openModule(module),
@@ -105,6 +108,7 @@ const runs = new RunPanel(document, defaults, {
   generation: (top, generation, settings, kind, mode) => race.keepGeneration(top, generation, settings, kind, mode),
   running: (on) => {
     robot.running = on;
+    steady.hold(on);
     editor.setLocked(on);
     robot.updateButtons();
     if (!on) robot.remeasure(); // measured once the workers are free

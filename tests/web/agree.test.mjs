@@ -37,7 +37,7 @@ test('numbers that agree: a module stopped at 20,100 evaluations and the same ru
   assert.equal(module.validation.unseen.mean, stop20, 'the module is the 20,000-evaluation run of seed 1');
   await byTestId(page, 'pretrained').selectOption('pretrained/biped-6x4-attention.json');
   const chosen = byTestId(page, 'pretrained').locator('option:checked');
-  assert.equal(await chosen.textContent(), `attention on biped-6x4 · ${Number(stop20).toFixed(2)} m/s`, 'the list shows what it is and its speed');
+  assert.equal(await chosen.textContent(), `attention on biped-6x4 · ${Number(stop20).toFixed(2)} m/s average over 10 new terrains`, 'the list shows what it is, its speed and which speed that is: the mean over the unseen terrains');
   assert.equal(await chosen.evaluate((o) => /** @type {HTMLOptGroupElement} */ (o.parentElement).label), 'from scratch, 20,000 evaluations');
   const label = String(await chosen.getAttribute('title'));
   assert.match(label, new RegExp(`evolved with a budget of 20,000 evaluations, on average ${Number(stop20).toFixed(2)} m/s`));

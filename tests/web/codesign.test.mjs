@@ -269,7 +269,8 @@ test('a body the study\'s body search found is listed with the modules, describe
   await page.locator(`#module option[value="${key}"]`).waitFor({ state: 'attached' });
   const option = page.locator(`#module option[value="${key}"]`);
   assert.match(String(await option.getAttribute('title')), new RegExp(`^a body found by the body search: ${body.voxels} voxels`));
-  assert.match(String(await option.textContent()), new RegExp(`^${body.voxels} voxels, attention module, attention kept · \\d\\.\\d\\d m/s$`));
+  assert.equal(await option.textContent(), `${body.voxels} voxels, attention module, attention kept · ${Number(body.validation.unseen.mean).toFixed(2)} m/s average over 10 new terrains`,
+    'the list shows the body, its brain and its mean speed on the unseen terrains, said as such');
   assert.equal(await option.evaluate((o) => /** @type {HTMLOptGroupElement} */ (o.parentElement).label), 'found by a body search');
   await byTestId(page, 'pretrained').selectOption(key);
   await waitForText(page, 'module-details', new RegExp(`a body of ${body.voxels} voxels \\(rows ${body.rows}\\) found by a body search`));

@@ -242,6 +242,33 @@ test('Pause holds, Step runs one generation, Stop ends the run and keeps its run
   assert.equal(await figure(page, 'run-generation'), held + 1, 'one step, one generation');
   await byTestId(page, 'pause').click();
   await waitForFigure(page, 'run-generation', `v > ${held + 1}`, 120_000);
+  // Each newer best starts a walk of its own (the clock's note goes, the line under the robot is
+  // written again): the lines over the run's buttons keep their room, so Stop never moves up
+  // (it did by 50 px each generation, and the run's figures under it took the click).
+  const moves = await page.evaluate(() => new Promise((resolve, reject) => {
+    const stop = /** @type {HTMLElement} */ (document.getElementById('run-stop'));
+    const driver = /** @type {HTMLElement} */ (document.getElementById('driver'));
+    const said = driver.textContent;
+    let walks = 0; // newer bests that began walking: the line under the robot says each
+    /** @type {number[]} */ const tops = [];
+    // Measured after every change of the page's text (a line emptied for a moment counts) and every frame.
+    const measure = () => tops.push(Math.round(stop.getBoundingClientRect().top + window.scrollY));
+    const changes = new MutationObserver((records) => {
+      if (records.some((r) => driver.contains(r.target)) && driver.textContent !== said) walks++;
+      measure();
+    });
+    changes.observe(document.body, { subtree: true, childList: true, characterData: true });
+    const started = performance.now();
+    const frame = () => {
+      measure();
+      if (walks < 3 && performance.now() - started < 120_000) { requestAnimationFrame(frame); return; }
+      changes.disconnect();
+      if (walks < 3) reject(new Error(`${walks} newer bests walked in 2 min, not 3`));
+      else resolve({ tops: [...new Set(tops)], up: tops.some((t, i) => i > 0 && t < tops[i - 1]) });
+    };
+    requestAnimationFrame(frame);
+  }));
+  assert.equal(moves.up, false, `Stop moved up while the run went on: its tops ${moves.tops.join(', ')} px`);
   await byTestId(page, 'stop').click();
   await page.waitForFunction(() => document.body.dataset.run === 'stopped', undefined, { timeout: 60_000 });
   assert.equal(await byTestId(page, 'export').isEnabled(), true, 'the stopped run can be exported');

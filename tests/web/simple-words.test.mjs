@@ -102,17 +102,22 @@ test('the attention maps show at once after a voxel is added to the held robot',
     const canvas = /** @type {HTMLCanvasElement} */ (document.querySelector('[data-testid="viewer"]'));
     const data = canvas.getContext('2d')?.getImageData(0, 0, canvas.width, canvas.height).data ?? [];
     const b = { left: Infinity, right: -Infinity, top: Infinity, bottom: -Infinity };
+    /** @type {number[]} */ let atRight = []; // the rows of the robot's rightmost pixels
     for (let i = 0; i < data.length; i += 4) {
       if (Math.max(data[i], data[i + 1]) > 140 && data[i + 2] < 100 && Math.abs(data[i] - data[i + 1]) > 20) {
         const p = i / 4; const x = p % canvas.width; const y = Math.floor(p / canvas.width);
+        if (x > b.right) atRight = [y]; else if (x === b.right) atRight.push(y);
         b.left = Math.min(b.left, x); b.right = Math.max(b.right, x); b.top = Math.min(b.top, y); b.bottom = Math.max(b.bottom, y);
       }
     }
     const s = canvas.width / canvas.clientWidth;
-    return { left: b.left / s, right: b.right / s, top: b.top / s, bottom: b.bottom / s };
+    return { left: b.left / s, right: b.right / s, top: b.top / s, bottom: b.bottom / s, rightY: atRight[atRight.length >> 1] / s };
   });
   const cell = (box.right - box.left) / 4;
-  await byTestId(page, 'viewer').click({ position: { x: box.right + 0.45 * cell, y: box.top + 0.5 * cell } });
+  // Just right of the robot's rightmost point, at its height: held mid-stride the body leans, and a
+  // point beside its box's corner or middle could lie nearer a voxel whose neighbour there is taken
+  // (nothing added); beside the rightmost point, the nearest voxel is a right-hand one, its right free.
+  await byTestId(page, 'viewer').click({ position: { x: box.right + 0.3 * cell, y: box.rightY } });
   await waitForText(page, 'status', /^11 voxels/);
   assert.equal(await page.evaluate(() => document.body.dataset.running), 'false', 'still held');
   // The maps, as a person sees them: shown, with strong reds and blues (not white, blank squares).

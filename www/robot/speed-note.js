@@ -27,7 +27,9 @@ export class SpeedNote {
    */
   async show(brain, terrain, seconds, now = true) {
     const ticket = ++this.shown;
-    this.set(NaN, '');
+    // Its words stay until the new ones are written (below, at once or once known): an empty line,
+    // even for a moment, moves everything under it (a run's Stop, each time a newer best walks).
+    this.el.dataset.value = 'NaN';
     if (!brain) {
       this.set(NaN, `The phase gait has no brain: each voxel squeezes and swells on a clock. Its speed is measured as it walks, over a ${seconds}-s episode.`);
       return;

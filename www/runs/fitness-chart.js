@@ -21,6 +21,8 @@ export class FitnessChart {
     /** @type {Map<string, Series>} */
     this.series = new Map();
     this.maxX = 1;
+    /** The frame a requested draw waits for (0: none). */
+    this.pending = 0;
     new ResizeObserver(() => this.draw()).observe(canvas);
   }
 
@@ -48,8 +50,21 @@ export class FitnessChart {
     this.extend(x);
   }
 
+  /**
+   * Draws the chart at the next frame, once however many points came before it: a run of short
+   * episodes sends dozens of generations a second, and a redraw for each (every point again)
+   * took the page's whole time, so that a click on Stop waited for seconds. The series' names
+   * are said at once.
+   */
+  request() {
+    this.canvas.dataset.series = [...this.series.keys()].join(',');
+    if (this.pending) return;
+    this.pending = requestAnimationFrame(() => { this.pending = 0; this.draw(); });
+  }
+
   draw() {
     const { canvas, ctx } = this;
+    if (this.pending) { cancelAnimationFrame(this.pending); this.pending = 0; }
     canvas.dataset.series = [...this.series.keys()].join(',');
     const ratio = window.devicePixelRatio || 1;
     const width = canvas.clientWidth;

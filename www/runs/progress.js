@@ -91,7 +91,7 @@ export class RunProgress {
     } else {
       this.chart.add(mode, STYLE[mode], msg.evaluations, bestSoFar);
     }
-    this.chart.draw();
+    this.chart.request();
   }
 
   /** The run ended: how long it took (pauses excluded) beside its pace, on screen. */

@@ -76,8 +76,14 @@ export class AttentionPanel {
     return -1;
   }
 
-  /** A new episode: lays the maps out like its voxels. @param {Uint32Array} cells column, row per voxel */
-  setLayout(cells) {
+  /**
+   * A new episode: lays the maps out like its voxels. A brain with attention keeps the panel
+   * shown until its first frame brings the maps (hidden for that moment, the panel's room went to
+   * the robot's view, and everything under it moved up and back at every new walk: a run's Stop
+   * under the click of a newer best's walk); another brain's episode hides it at once.
+   * @param {Uint32Array} cells column, row per voxel @param {boolean} [attends] its brain has attention
+   */
+  setLayout(cells, attends = false) {
     this.cells = cells;
     this.columns = 0;
     this.rows = 0;
@@ -86,7 +92,7 @@ export class AttentionPanel {
       this.rows = Math.max(this.rows, cells[i + 1] + 1);
     }
     this.attention = new Float32Array(0);
-    this.show(false);
+    if (!attends) this.show(false);
   }
 
   /** @param {import('../workers/protocol.js').Frame} frame the latest frame (its `attention` may be empty) */

@@ -12,7 +12,7 @@ import { AttentionPanel } from './attention.js';
 import { AttentionReader } from './attention-reader.js';
 import { checkTerrain } from '../workers/core.js';
 import { byId } from '../shared/dom.js';
-import { familyName } from '../shared/families.js';
+import { familyName, hasAttention } from '../shared/families.js';
 import { FreezeControl } from './freeze.js';
 import { spawn } from '../workers/kit.js';
 import { FromWorker, ToWorker, frameIsConsistent } from '../workers/protocol.js';
@@ -158,7 +158,7 @@ export class Viewer {
       case FromWorker.LOADED:
         this.current = msg.params;
         this.renderer.setTerrain(msg.terrainXs, msg.terrainYs, !msg.carried);
-        this.attention.setLayout(msg.cells);
+        this.attention.setLayout(msg.cells, hasAttention(msg.controller));
         this.reader.setEpisode(msg.voxels, msg.attentionTerms);
         this.freeze.loaded(msg.controller);
         this.readout.reset(msg.params, msg.carried);
