@@ -63,7 +63,7 @@ test('a class challenge: ranked by the link the teacher made, duplicates, the sa
   const overBudget = links[1].replace(/budget=\d+/, 'budget=5000');
 
   // No challenge link yet: the form's rules, and the table says so. Nothing pasted: said what to do.
-  await byTestId(page, 'challenge').locator('summary').click();
+  await byTestId(page, 'challenge').locator('.challenge-teacher > summary').click();
   await page.locator('#challenge-rank').click();
   await waitForText(page, 'challenge-status', /^Paste your students' links in the box first/);
   assert.equal(await page.locator('#challenge-link-box').isVisible(), false, 'no link field before a link');
@@ -145,6 +145,9 @@ test('a class challenge: ranked by the link the teacher made, duplicates, the sa
   await waitForText(page, 'status', /voxels/);
   assert.equal(await page.locator('.challenge-teacher').getAttribute('open'), '', 'the teacher\'s part opens on what was kept');
   assert.equal(await page.locator('#challenge-link').inputValue(), challengeUrl);
+  assert.equal(await page.locator('#challenge-link').isVisible(), true, 'the link box shown again at once');
+  await page.waitForFunction(() => document.querySelectorAll('#challenge-qr svg path').length === 1); // its QR code drawn again
+  assert.equal(await page.locator('#challenge-qr').isVisible(), true, 'the QR code shown again at once');
   assert.match(String(await page.locator('#challenge-rules').textContent()), /^What your students will see: Challenge: the body 1111-1111-1001,/);
   assert.equal(await page.locator('#challenge-fixed').isChecked(), true);
   assert.equal(await byTestId(page, 'challenge-compare').inputValue(), pasted);
@@ -153,11 +156,22 @@ test('a class challenge: ranked by the link the teacher made, duplicates, the sa
   ({ rows, caption } = await rank(page));
   assert.match(caption, /^Ranked by the rules of the challenge link you made: the body 1111-1111-1001;/, 'ranked by the kept rules');
   assert.deepEqual(rows.map((r) => r[0]), ['1']);
+  // The teacher opens their own challenge link (on the projector's laptop): the link and its QR code are in sight at once.
+  await page.goto(challengeUrl.replace(/^https?:\/\/[^/]+\//, env.url));
+  await waitForText(page, 'status', /voxels/);
+  assert.equal(await page.locator('.challenge-teacher').getAttribute('open'), '', 'the teacher\'s part open on their own link');
+  await page.waitForFunction(() => document.querySelectorAll('#challenge-qr svg path').length === 1);
+  assert.equal(await page.locator('#challenge-qr').isVisible(), true, 'its QR code in sight');
   assert.deepEqual(problems, []);
   await page.context().close();
 
   const student = await openPage(env.browser, `${challengeUrl.replace(/^https?:\/\/[^/]+\//, env.url)}`, { width: 1400, height: 900 });
-  await waitForText(student.page, 'challenge-rules', /^Challenge: the body 1111-1111-1001, as fast as it can over 10 s on hilly-1-10-0\. 1 · Your body is drawn for you\. 2 · Evolve its brain: the run is set for you \(2,000 evaluations, seed 1, 10-s walks\), the same on every computer\. 3 · Press “Share link”/);
+  // The rules, short: the goal, three numbered steps, the run's details folded.
+  await waitForText(student.page, 'challenge-rules', /^Challenge: the body 1111-1111-1001, as fast as it can over 10 s on hilly-1-10-0\./);
+  assert.deepEqual(await student.page.locator('#challenge-rules ol > li').allTextContents(), ['Your body is drawn for you.',
+    'Press Evolve: the run is set for you, the same on every computer.', 'Press “Share link” and give your teacher the short code it shows.']);
+  assert.match(String(await student.page.locator('#challenge-rules details').textContent()), /The run: 2,000 evaluations, seed 1, 10-s walks\./);
+  assert.equal(await student.page.locator('#challenge-rules details > p').isVisible(), false, 'the details folded');
   await waitForText(student.page, 'message', /^Challenge: .*over 10 s on hilly-1-10-0\. .*further down/); // at the top, where a student looks first
   assert.equal(await student.page.locator('#terrain').inputValue(), 'hilly-1-10-0');
   assert.equal(await student.page.locator('#run-budget').inputValue(), '2000');
@@ -171,7 +185,7 @@ test('a challenge of at most 12 voxels: its run shown (locked) is the run the pa
   // Every setting other than the page's own defaults (20, 10 s, 2,000, seed 1, hilly-1-10), so that a default shown is seen.
   const query = '?challenge=1&terrain=hilly-1-10-0&seconds=5&voxels=12&budget=200&seed=3&population=10&train=flat';
   const small = await openPage(env.browser, `${env.url}${query}`, { width: 1400, height: 900 });
-  await waitForText(small.page, 'challenge-rules', /any body of at most 12 voxels, as fast as it can over 5 s on hilly-1-10-0\. .*\(200 evaluations, seed 3, 5-s walks\)/);
+  await waitForText(small.page, 'challenge-rules', /any body of at most 12 voxels, as fast as it can over 5 s on hilly-1-10-0\..*The run: 200 evaluations, seed 3, 5-s walks\./);
   /** The Run fieldset as a student sees it: each field's value, and whether it is locked. */
   const runForm = () => small.page.evaluate(() => Object.fromEntries(['population', 'seconds', 'budget', 'seed', 'terrain'].map((k) => {
     const input = /** @type {HTMLInputElement} */ (document.getElementById(`run-${k}`));
@@ -181,14 +195,14 @@ test('a challenge of at most 12 voxels: its run shown (locked) is the run the pa
   assert.deepEqual(await runForm(), challengeRun, 'the Run fieldset shows the challenge\'s run, locked');
   assert.match(String(await byTestId(small.page, 'run-fixed').textContent()), /^Set by the challenge \(greyed out\): the same on every computer/, 'and says why, in words (no hover on a touch screen)');
   // The teacher's part of this page: the form shows the challenge in force, not its defaults, and its link and QR code.
-  await byTestId(small.page, 'challenge').locator('summary').click();
+  await byTestId(small.page, 'challenge').locator('.challenge-teacher > summary').click();
   const teacherForm = await small.page.evaluate(() => ['terrain', 'seconds', 'voxels', 'budget', 'seed'].map((k) => /** @type {HTMLInputElement} */ (document.getElementById(`challenge-${k}`)).value));
   assert.deepEqual(teacherForm, ['hilly-1-10-0', '5', '12', '200', '3'], 'the challenge-making form holds the link\'s rules');
   assert.equal(await small.page.locator('#challenge-fixed').isChecked(), false);
   assert.equal(await small.page.locator('#challenge-link').inputValue(), `${env.url}?challenge=1&terrain=hilly-1-10-0&seconds=5&voxels=12&budget=200&seed=3&population=10&train=flat`,
     'the link in force, for the projector (its population and training terrain kept, though the form has no field for them)');
   await small.page.locator('#challenge-qr [data-testid="qr"]').waitFor();
-  await byTestId(small.page, 'challenge').locator('summary').click();
+  await byTestId(small.page, 'challenge').locator('.challenge-teacher > summary').click();
   await small.page.locator('#rows').fill('11111-11111-11100');
   await small.page.locator('#rows').press('Enter');
   const grid = await small.page.locator('#editor').boundingBox();

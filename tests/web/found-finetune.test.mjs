@@ -89,7 +89,7 @@ test('a body the search found fine-tunes with its own attention, as vsr finetune
 
   // A link keeps the robot, not the file its attention came from: said when it is made; reopened, Fine-tune is off and says why.
   await byTestId(page, 'share').click();
-  await waitForText(page, 'message', /Fine-tune will be off there: the file its attention came from does not travel in a link/);
+  await waitForText(page, 'message', /The robot and its brain open the same there, but Fine-tune will be off: the file its attention came from does not travel in a link/);
   const reopened = await openPage(env.browser, await page.locator('#share-link').inputValue());
   await waitForText(reopened.page, 'driver', /fine-tuned/);
   assert.equal(await byTestId(reopened.page, 'finetune').isDisabled(), true);

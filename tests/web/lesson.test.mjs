@@ -65,7 +65,7 @@ test('the 50-minute lesson: minute by minute in the page and in docs/teaching.md
 
 test('a challenge link: its QR code large for the projector, a warning on this computer\'s address, the run fixed and never lighter', async () => {
   const { page, problems, context } = await openPage(env.browser, env.url, { width: 1400, height: 900 });
-  await byTestId(page, 'challenge').locator('summary').click();
+  await byTestId(page, 'challenge').locator('.challenge-teacher > summary').click();
   await page.locator('#challenge-make').click();
   await page.locator('#challenge-qr [data-testid="qr"]').waitFor();
   const link = await page.locator('#challenge-link').inputValue();
@@ -144,7 +144,7 @@ test('a short code: the student\'s page shows it after Share link; the teacher\'
   await student.context.close();
 
   const teacher = await openPage(env.browser, link, { width: 1400, height: 900 });
-  await byTestId(teacher.page, 'challenge').locator('summary').click();
+  await byTestId(teacher.page, 'challenge').locator('.challenge-teacher > summary').click();
   const typo = `${code.slice(0, 6)}${code[6] === 'A' ? 'B' : 'A'}${code.slice(7)}`; // a letter of the body's cells typed wrong
   // Dan's code claims 9.99 m/s for a robot no run of the challenge makes: placed first as claimed, then found out.
   const forged = robotCode('1111-1111-1111', 'attention', new Float32Array([1, 2, 3]), 9.99);
@@ -175,7 +175,7 @@ test('a short code: the student\'s page shows it after Share link; the teacher\'
   await teacher.page.reload();
   await waitForText(teacher.page, 'status', /voxels/);
   assert.match(await byTestId(teacher.page, 'challenge-compare').inputValue(), /^Ana /);
-  await byTestId(teacher.page, 'challenge').locator('summary').click();
+  await byTestId(teacher.page, 'challenge').locator('.challenge-teacher > summary').click();
   await waitForText(teacher.page, 'challenge-estimate', /^5 lines: 4 short codes \(1 checked before\), 1 link or other line\./);
   await byTestId(teacher.page, 'challenge-rank').click();
   await teacher.page.locator('#challenge-panel[data-state="ranked"]').waitFor({ timeout: 60_000 });
@@ -201,7 +201,7 @@ test('ranking a class of codes on a slow challenge: claims at once, the time sai
   // A challenge of 20,000 evaluations of 30-s walks: a check would take minutes, so Stop is pressed while it runs.
   const link = `${env.url}?challenge=1&terrain=hilly-1-10-0&seconds=30&budget=20000&seed=1&population=20&train=hilly-1-10`;
   const teacher = await openPage(env.browser, link, { width: 1400, height: 1000 });
-  await byTestId(teacher.page, 'challenge').locator('summary').click();
+  await byTestId(teacher.page, 'challenge').locator('.challenge-teacher > summary').click();
   const bodies = ['1111-1111-1001', '1111-1111-1111', '11111-11111-10001', '111-111-101', '1111-1001', '11111-10001'];
   const claims = [3.1, 2.5, 4.2, 1.9, 0.7, 2.2];
   const lines = bodies.map((rows, i) => `Student ${i + 1} ${robotCode(rows, i % 2 ? 'mlp' : 'attention', new Float32Array([i]), claims[i])}`);

@@ -149,7 +149,7 @@ test('a transplant reloaded, or opened from its link, still says it walks one-sh
   await opened.context.close();
   const older = await openPage(env.browser, variant((p) => p.delete('one-shot')));
   const words = await speedNote(older.page);
-  assert.match(words, /^Speed here: .* over a 30-s episode on hilly-1-10-7 \(measured at once, on a walk with no freeze or edit\)\.$/, 'an older link: its speed, no one-shot note (not kept then)');
+  assert.match(words, /^Your robot's speed: .* over a 30-s episode on hilly-1-10-7 \(measured at once, on a walk with no freeze or edit; the short code and the class ranking use this one\)\.$/, 'an older link: its speed, no one-shot note (not kept then)');
   assert.deepEqual([...opened.problems, ...older.problems], []);
   await older.context.close();
   const bad = await openPage(env.browser, variant((p) => p.set('one-shot', 'yes')));

@@ -15,7 +15,21 @@ import assert from 'node:assert/strict';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 import { CHAPTERS } from '../../www/tour/chapters.js';
-import { SCREENSHOTS, byTestId, openBare, openPage, start, waitForText } from './harness.mjs';
+import { ROOT, SCREENSHOTS, byTestId, openBare, openPage, start, waitForText } from './harness.mjs';
+
+/** What a person sees of `selector` in simple words: its text with each explanation in brackets after its word (::after). @param {import('playwright-core').Page} page @param {string} selector */
+const seen = (page, selector) => page.locator(selector).first().evaluate((root) => {
+  const out = [];
+  const walk = (/** @type {Node} */ n) => {
+    if (n.nodeType === Node.TEXT_NODE) { out.push(n.textContent); return; }
+    if (!(n instanceof Element) || getComputedStyle(n).display === 'none') return;
+    for (const c of n.childNodes) walk(c);
+    const after = getComputedStyle(n, '::after').content;
+    if (after && after !== 'none' && after !== 'normal') out.push(after.replace(/^"|"$/g, ''));
+  };
+  walk(root);
+  return out.join('').replace(/\s+/g, ' ');
+});
 
 /** @type {Awaited<ReturnType<typeof start>>} */ let env;
 
@@ -60,7 +74,6 @@ test('simple words: the words a class did not know are explained where they stan
   await chapterReady(page);
   // Explained where they appear (in brackets after them).
   for (const [selector, words] of [
-    ['header dfn:has-text("fine-tune")', 'train a little more'], ['header a.term[href="#g-mlp"]', 'voxels send messages'],
     ['label:has(#run-population) > span', 'brains tried in each round'], ['.figures span.speed > span', 'the average since this walk began'],
     ['.figures span:has(#robot-v) > span', 'only the last second'],
   ]) {
@@ -72,7 +85,7 @@ test('simple words: the words a class did not know are explained where they stan
   assert.equal(await page.locator('header a.term[href="#g-vsr"]').isVisible(), false, 'VSR, voxel-based: gone from the simple view');
   assert.equal(await page.locator('#attention-matrix th.corner').innerText(), 'asks ↓ · listens to →');
   await page.waitForFunction(() => /genes/.test(document.getElementById('param-count')?.textContent ?? ''));
-  assert.equal(await page.locator('#param-count .gene-detail').isVisible(), false, 'the genes\' breakdown is the expert\'s');
+  assert.equal(await page.locator('#param-count .gene-detail.expert').isVisible(), false, 'the genes\' breakdown is the expert\'s');
   await page.waitForFunction(() => document.querySelector('#param-count [data-explain]') !== null);
   assert.match(await after_(page, '#param-count [data-explain]'), /the numbers evolution tunes/, '73 genes explained');
   // The module list's speed says it is the mean over ten new terrains.
@@ -80,7 +93,7 @@ test('simple words: the words a class did not know are explained where they stan
   await byTestId(page, 'tour-reveal').click();
   await page.waitForFunction(() => [...document.querySelectorAll('#module option')].some((o) => /m\/s/.test(o.textContent ?? '')));
   const options = await page.locator('#module option').evaluateAll((os) => os.map((o) => o.textContent ?? '').filter((t) => /m\/s/.test(t)));
-  assert.ok(options.length > 3 && options.every((t) => /\d m\/s (average over 10 new terrains|in training)$/.test(t)), `each listed speed says what it is: ${options.join(' | ')}`);
+  assert.ok(options.length > 3 && options.every((t) => /\d m\/s (on new ground|in training)$/.test(t)), `each listed speed says what it is, in simple words: ${options.join(' | ')}`);
   // The race's speeds say they are this race's, and its brains what they are.
   await waitForText(page, 'race-status', /Speeds: this race only \(one walk on this ground\), not the list's average over 10 new terrains/);
   await page.waitForFunction(() => document.querySelector('#race-lanes [data-explain]') !== null);
@@ -172,4 +185,100 @@ test('the lesson table fits 420 px, in the page\'s sheet (its bar covers nothing
   await guide.page.pdf({ path: path.join(SCREENSHOTS, 'simple-words-guide.pdf'), format: 'A4' });
   assert.deepEqual(guide.problems, []);
   await guide.context.close();
+});
+
+test('a teacher\'s review in simple words: the header, the brain\'s words, the settings, the three speeds, the glossary and the findings said plainly (1400 and 420 px)', async () => {
+  for (const width of [1400, 420]) {
+    const { page, problems, context } = await openPage(env.browser, env.url, { width, height: 900, init: SIMPLE, touch: width < 800 });
+    // 1. The header: no mlp-comm, GECCO, paper title or fine-tune; the same said in everyday words.
+    const header = await page.locator('header > p').innerText();
+    assert.doesNotMatch(header, /mlp-comm|GECCO|Evolving Modular|fine-tune/, `the header in simple words: ${header}`);
+    assert.match(header, /learn a little more for its new body/);
+    assert.match(header, /a study by four scientists, shown at a science meeting in 2022/);
+    await page.screenshot({ path: path.join(SCREENSHOTS, `simple-words-header-${width}.png`) });
+    // 2. The gene count's breakdown and the module list in plain words.
+    await page.waitForFunction(() => document.querySelector('#param-count .gene-plain[data-plain]') !== null);
+    const genes = await seen(page, '#param-count');
+    assert.match(genes, /^\d+ genes \(the numbers evolution tunes\): 32 shared by all the voxels \(how each one listens\), \d+ that belong to one voxel each \(4 for every voxel\), and 1 more$/, genes);
+    assert.doesNotMatch(genes, /attention block|weights|bias/);
+    await page.waitForFunction(() => [...document.querySelectorAll('#module option')].some((o) => /on new ground/.test(o.textContent ?? '')));
+    const names = await page.locator('#module option').allTextContents();
+    assert.ok(names.some((t) => /^a brain trained on the small walker, moved to the big walker: \d+\.\d\d m\/s on new ground$/.test(t)), names.join(' | '));
+    assert.ok(names.some((t) => /^an attention brain, trained on the small walker: \d+\.\d\d m\/s on new ground$/.test(t)), names.join(' | '));
+    assert.ok(!names.some((t) => /→|average over 10 new terrains/.test(t)), `no expert's name in simple words: ${names.join(' | ')}`);
+    // 3. The ground and the run's settings explained where they stand; the workers are the expert's.
+    for (const [selector, words] of [['label:has(#terrain) > span', 'hilly-1-10-0: hills about 1 m high every 10 m; the last number picks one ground, always the same'],
+      ['label:has(#run-terrain) > span', 'hilly-1-10: hills about 1 m high every 10 m'], ['label:has(#run-seed) > span:first-child', 'the same number gives the same run'],
+      ['label:has(#run-budget) > span', 'how many test walks the run may use']]) {
+      assert.ok((await seen(page, selector)).includes(words), `${selector}: ${await seen(page, selector)}`);
+    }
+    assert.equal(await page.locator('#run-export').innerText(), 'Save this run (a file)');
+    assert.equal(await page.locator('#run-csv').innerText(), 'Save the run as a table (for a spreadsheet)');
+    assert.equal(await page.locator('#run-workers').isVisible(), false);
+    // 4. Your robot's speed, said as the one that counts; training's two speeds said as not it (a module on its own body: both speeds).
+    await byTestId(page, 'pretrained').selectOption('pretrained/biped-4x3-attention.json');
+    await page.locator('#module-open').click();
+    await waitForText(page, 'speed-note', /^Your robot's speed: \d+\.\d\d m\/s .*the short code and the class ranking use this one\)\. In training: /, 30_000);
+    const note = await seen(page, '#speed-note');
+    assert.match(note, /^Your robot's speed \(the one that counts: your short code and the class ranking use it\): /, note);
+    assert.match(note, /In training \(how fast it walked while it learned, on other hills: not your robot's speed\): /, note);
+    assert.match(await seen(page, 'span:has(> #run-best)'), /best so far \(its one fastest walk while it learned, often a lucky one: not your robot's speed\)/);
+    // 5. The run's figures: the median explained, the computer's pace hidden.
+    assert.match(await seen(page, 'span:has(> #run-median)'), /median \(the middle one of this round: half walked faster, half slower\)/);
+    assert.equal(await page.locator('#engine-rate').isVisible(), false);
+    await page.locator('#watch-panel').screenshot({ path: path.join(SCREENSHOTS, `simple-words-speeds-${width}.png`) });
+    await page.locator('#brain-panel').screenshot({ path: path.join(SCREENSHOTS, `simple-words-brain-${width}.png`) });
+    // 6. The glossary's attention, tanh and saturate in everyday words.
+    await page.locator('#glossary-open').click();
+    const glossary = await page.locator('#glossary dl').innerText();
+    for (const word of ['attention matrix', 'query', 'keys', 'squashing function']) assert.ok(!glossary.includes(word), `the glossary in simple words: no “${word}”`);
+    assert.match(glossary, /The answers make a small table, 4 rows by 4 columns/);
+    // 7. The findings: the claim's test told without intervals or confidence.
+    await page.locator('#glossary').evaluate((d) => { /** @type {HTMLDetailsElement} */ (d).open = false; });
+    await byTestId(page, 'results-plain').scrollIntoViewIfNeeded();
+    await page.waitForFunction(() => /On the comb/.test(document.querySelector('[data-testid="claim-simple"]')?.textContent ?? ''), undefined, { timeout: 20_000 });
+    const found = await byTestId(page, 'results-plain').innerText();
+    assert.doesNotMatch(found, /95% confidence|allow a difference between|margin fixed in advance/, 'the exact statement is the expert\'s');
+    assert.match(found, /we wrote down a rule before we ran anything: attention passes if it is not slower than mlp-comm by 0\.5 m\/s or more/);
+    await byTestId(page, 'claim-simple').screenshot({ path: path.join(SCREENSHOTS, `simple-words-claim-${width}.png`) });
+    await byTestId(page, 'simple-words').uncheck();
+    assert.match(await byTestId(page, 'results-plain').innerText(), /with 95% confidence/, 'the exact statement back for the expert');
+    assert.ok((await page.locator('#module option').allTextContents()).some((t) => /^biped-4x3 → biped-6x4 · \d+\.\d\d m\/s average over 10 new terrains$/.test(t)), 'the expert\'s names back');
+    assert.match(await page.locator('header > p').innerText(), /GECCO/);
+    assert.deepEqual(problems, []);
+    await context.close();
+  }
+});
+
+test('Share link: the note that Fine-tune stays behind only for a transplanted brain, in plain words', async () => {
+  const { page, problems, context } = await openPage(env.browser, env.url, { width: 1400, height: 900, init: SIMPLE });
+  await byTestId(page, 'share').click();
+  await waitForText(page, 'message', /Link copied|Here is the link/);
+  assert.doesNotMatch(String(await byTestId(page, 'message').textContent()), /Fine-tune will be off/, 'a brain on its own body: nothing said');
+  // A pretrained module's file travels in a link by its name: a module imported from a file does not.
+  await page.locator('#run-import').setInputFiles(path.join(ROOT, 'pretrained/biped-6x4-attention.json'));
+  await page.waitForFunction(() => /** @type {HTMLSelectElement} */ (document.getElementById('module')).value.startsWith('disk:'));
+  await byTestId(page, 'load-pretrained').click();
+  await waitForText(page, 'driver', /a module transplanted from biped-6x4/);
+  await byTestId(page, 'share').click();
+  await waitForText(page, 'message', /The robot and its brain open the same there, but Fine-tune will be off: the file its attention came from does not travel in a link\./);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('a student\'s challenge rules on a phone: the goal, three numbered steps, the details folded', async () => {
+  const url = `${env.url}?challenge=1&terrain=hilly-1-10-0&seconds=10&budget=2000&seed=1&population=20&train=hilly-1-10`;
+  const { page, problems, context } = await openPage(env.browser, url, { width: 420, height: 860, touch: true });
+  await waitForText(page, 'challenge-rules', /^Challenge: any body, as fast as it can over 10 s on hilly-1-10-0\./);
+  const rules = page.locator('#challenge-rules');
+  assert.equal(await rules.locator('ol > li').count(), 3);
+  assert.equal(await rules.locator('details').getAttribute('open'), null, 'the details folded');
+  const height = await rules.evaluate((e) => e.getBoundingClientRect().height);
+  assert.ok(height < 200, `short on a 420-px screen: ${height} px`);
+  await rules.scrollIntoViewIfNeeded();
+  await page.screenshot({ path: path.join(SCREENSHOTS, 'simple-words-challenge-rules-420.png') });
+  await rules.locator('summary').click();
+  assert.match(await rules.locator('details').innerText(), /The run: 2,000 evaluations, seed 1, 10-s walks\./);
+  assert.deepEqual(problems, []);
+  await context.close();
 });

@@ -137,7 +137,13 @@ export class Classroom {
           make(doc, 'p', kind, `${mark} You said: ${yours}.`),
           make(doc, 'p', 'exercise-key', `The page's answer: ${key.shown}.`),
           make(doc, 'p', 'exercise-why'));
-        result.lastElementChild?.append(...withTerms(doc, key.why));
+        if (key.simpleWhy) { // both written, one shown (classroom.css): the expert's, or the same in simple words
+          const expert = make(doc, 'span', 'expert');
+          expert.append(...withTerms(doc, key.why));
+          result.lastElementChild?.append(expert, make(doc, 'span', 'simple-only', key.simpleWhy));
+        } else {
+          result.lastElementChild?.append(...withTerms(doc, key.why));
+        }
         if (ex.try) result.append(make(doc, 'p', 'exercise-try', `Now try it: ${ex.try}`));
         result.hidden = false;
         box.dataset.state = 'revealed';

@@ -18,6 +18,7 @@ export const SATURATED = 0.9;
  * @property {number} answer   the right choice's index, or the number
  * @property {string} shown    the answer in words
  * @property {string} why      why, with the numbers the page just ran and where they come from
+ * @property {string} [simpleWhy] the same in simple words (shown instead while “Simple words” is on)
  */
 /**
  * @typedef {object} Exercise
@@ -160,7 +161,10 @@ export const TASKS = [
       return { answer: Math.round(n), shown: `about ${decimal(n, 1)} of 16`,
         why: `The page just walked this robot for ${seconds} s and read every voxel's matrix at every decision (three a second): on average `
           + `${decimal(n, 1)} of the 16 values sat beyond ±${SATURATED}. Each value is a tanh (a squashing into −1 to +1) of numbers evolution made large, so it sits at −1 or +1 `
-          + `unless they nearly cancel. Share of each row's values that swung by more than 0.5 during the walk: ${moved.join(', ')}.` };
+          + `unless they nearly cancel. Share of each row's values that swung by more than 0.5 during the walk: ${moved.join(', ')}.`,
+        simpleWhy: `The page just walked this robot for ${seconds} s and looked at every voxel's table three times a second. `
+          + `On average ${decimal(n, 1)} of the 16 squares were fully on or fully turned around (nearly +1 or −1). `
+          + 'The brain\'s numbers are large, so most squares get pushed all the way to one end. When the foot lands or lifts, whole rows flip.' };
     },
   },
   {

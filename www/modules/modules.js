@@ -10,7 +10,7 @@ import { describeRun } from '../workers/core.js';
 import { byId } from '../shared/dom.js';
 import { fetchOk, messageOf } from '../workers/kit.js';
 import { keepModules, loadKeptModules } from '../keep/storage.js';
-import { SPEED_MARK, bodyWords, brainWords, shortLabel, unseenWords } from './names.js';
+import { LIST_SPEED_SIMPLE, SPEED_MARK, bodyWords, brainWords, shortLabel, simpleLabel, unseenWords } from './names.js';
 import { lineageNote } from './lineage.js';
 import { count, decimal } from '../shared/format.js';
 import { familyName, isAnyBody } from '../shared/families.js';
@@ -77,6 +77,9 @@ export class ModuleList {
     byId(doc, 'module-load', HTMLButtonElement).addEventListener('click', () => this.withSelected(hooks.loadOnto));
     byId(doc, 'module-open', HTMLButtonElement).addEventListener('click', () => this.withSelected(hooks.openOwn));
     this.select.addEventListener('change', () => this.describe());
+    // The switch “Simple words” names the study's modules in plain words (or back): each option written again.
+    new MutationObserver(() => { for (const option of this.select.options) this.name(option); })
+      .observe(doc.documentElement, { attributes: true, attributeFilter: ['data-words'] });
     this.fileInput.addEventListener('change', () => this.importFile());
   }
 
@@ -96,7 +99,7 @@ export class ModuleList {
         const label = `${m.controller} on ${m.shape}${from} (evolved with a budget of ${budget} evaluations${speed})`;
         const group = `${m.finetuned_from ? 'fine-tuned' : 'from scratch'}, ${budget} evaluations`;
         const short = shortLabel(m.finetuned_from ? `${m.finetuned_from} → ${m.shape}` : `${m.controller} on ${m.shape}`, mean);
-        this.list(PRETRAINED_DIR + m.file, label, short, group, mean);
+        this.list(PRETRAINED_DIR + m.file, label, short, group, mean, simpleLabel(m, mean));
         const run = /--out \S*?([^/\s]+)\.json/.exec(m.command ?? '')?.[1];
         if (run) this.studyRunOf.set(PRETRAINED_DIR + m.file, run);
       }
@@ -107,7 +110,8 @@ export class ModuleList {
         const how = brainWords(b.condition);
         const label = `a body found by the body search: ${b.voxels} voxels, ${b.controller} ${how.long}${speed}`;
         const short = shortLabel(`${b.voxels} voxels, ${b.controller} ${how.short}`, mean);
-        this.list(PRETRAINED_DIR + b.file, label, short, 'found by a body search', mean);
+        this.list(PRETRAINED_DIR + b.file, label, short, 'found by a body search', mean,
+          shortLabel(`a body of ${b.voxels} voxels found by a search`, mean, ` ${LIST_SPEED_SIMPLE}`).replace(SPEED_MARK, ': '));
       }
       if (!this.studyAnyBody) this.listPending();
       this.describe();
@@ -132,7 +136,8 @@ export class ModuleList {
     const name = familyName(m.controller);
     const label = `a brain for any body (${name}), trained on ${on} (evolved with a budget of ${count(m.budget ?? m.evaluations)} evaluations${speed})`;
     const key = PRETRAINED_DIR + m.file;
-    this.list(key, label, shortLabel(`${name}, trained on ${Number.isInteger(m.bodies) ? `${m.bodies} bodies` : m.shape}`, mean), ANY_BODY_GROUP, mean);
+    this.list(key, label, shortLabel(`${name}, trained on ${Number.isInteger(m.bodies) ? `${m.bodies} bodies` : m.shape}`, mean), ANY_BODY_GROUP, mean,
+      shortLabel(`one brain for any body, trained on ${Number.isInteger(m.bodies) ? `${m.bodies} bodies` : m.shape}`, mean, ` ${LIST_SPEED_SIMPLE}`).replace(SPEED_MARK, ': '));
     if (m.controller === 'attention-any' && !this.studyAnyBody) this.studyAnyBody = key;
   }
 
@@ -158,8 +163,9 @@ export class ModuleList {
    * `label` on hover (and in {@link labels}).
    * @param {string} key @param {string} label @param {string} short @param {string} group
    * @param {number} [mean] its mean speed on the unseen terrains (m/s), the number in `short`
+   * @param {string} [simple] its name in simple words (shown while “Simple words” is on), if it has one
    */
-  list(key, label, short, group, mean = NaN) {
+  list(key, label, short, group, mean = NaN, simple = '') {
     const groups = /** @type {HTMLOptGroupElement[]} */ ([...this.select.querySelectorAll('optgroup')]);
     let into = groups.find((g) => g.label === group);
     if (!into) {
@@ -170,6 +176,7 @@ export class ModuleList {
     const existing = [...this.select.options].find((o) => o.value === key);
     const option = existing ?? new Option(short, key);
     option.dataset.short = short;
+    if (simple) option.dataset.plain = simple;
     this.labels.set(key, label);
     if (Number.isFinite(mean)) this.unseen.set(key, mean);
     this.name(option);
@@ -190,8 +197,11 @@ export class ModuleList {
 
   /** Writes an option's name: its short name and full title, or, while {@link quiet}, both without speeds. @param {HTMLOptionElement} option */
   name(option) {
+    // In simple words, a study module by its plain name (the small walker, moved to the big walker: … on new ground).
+    const simple = option.ownerDocument.documentElement.dataset.words === 'simple' ? option.dataset.plain : undefined;
+    if (simple) { option.text = this.hushed ? simple.split(': ')[0] : simple; }
     const short = option.dataset.short ?? option.text;
-    option.text = this.hushed ? short.split(SPEED_MARK)[0] : short;
+    if (!simple) option.text = this.hushed ? short.split(SPEED_MARK)[0] : short;
     option.title = this.hushed ? HUSHED : this.labels.get(option.value) ?? short;
   }
 

@@ -61,3 +61,30 @@ export function brainWords(condition) {
   const { short } = BRAIN_WORDS[/** @type {keyof typeof BRAIN_WORDS} */ (kind)];
   return kind === 'scratch' ? { long: 'brain from scratch', short } : { long: `module, ${short}`, short: `module, ${short}` };
 }
+
+/** The study's bodies in everyday words, for the module list in simple words. @type {Record<string, string>} */
+const BODY_SIMPLE = {
+  'biped-4x3': 'the small walker', 'biped-6x4': 'the big walker', 'comb-7x2': 'the small comb', 'comb-14x2': 'the big comb',
+};
+/** The brains in everyday words. @type {Record<string, string>} */
+const BRAIN_SIMPLE = { attention: 'an attention brain', mlp: 'a plain brain', 'mlp-comm': 'a brain whose voxels send messages' };
+/** The list's speed in simple words: the mean over the study's ten unseen terrains. */
+export const LIST_SPEED_SIMPLE = 'on new ground';
+
+/** A body's name in everyday words (its own name when it has none). @param {string} shape */
+export function bodySimple(shape) {
+  return BODY_SIMPLE[shape] ?? shape;
+}
+
+/**
+ * A study module's name in simple words, with its speed (the list's, in simple words: the
+ * unseen terrains' mean), separated as {@link shortLabel} separates it.
+ * @param {{controller: string, shape: string, finetuned_from?: string}} m @param {number} mean
+ */
+export function simpleLabel(m, mean) {
+  const what = m.finetuned_from
+    ? `a brain trained on ${bodySimple(m.finetuned_from)}, moved to ${bodySimple(m.shape)}`
+    : `${BRAIN_SIMPLE[m.controller] ?? m.controller}, trained on ${bodySimple(m.shape)}`;
+  return shortLabel(what, mean, ` ${LIST_SPEED_SIMPLE}`).replace(SPEED_MARK, ': ');
+}
+

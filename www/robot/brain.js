@@ -23,6 +23,7 @@ import { familyName, hasAttention, isAnyBody } from '../shared/families.js';
  * @property {Trained | null} [trained] its training figure, if it walks as it was trained
  * @property {boolean} [oneShot]     a module put on a body it was not trained on, not fine-tuned yet
  * @property {boolean} [run]         it comes from the run in the run panel
+ * @property {boolean} [carried]     its attention came from another brain's file: transplanted, or fine-tuned from one (a link cannot bring that file)
  */
 
 /**
@@ -70,7 +71,7 @@ export async function transplanted(module, rows, origin, seed) {
     ? `a brain for any body (${familyName(info.controller)}) trained on ${from}, on your drawing with all its ${genome.length} genes as trained`
     : `a module transplanted from ${from}: its attention as evolved there, the rest of its brain new for this body, drawn with seed ${seed}`;
   return {
-    controller: info.controller, genome, rows, origin, module: pretrainedKey(module), source: attentionSource(info, module.text),
+    controller: info.controller, genome, rows, origin, module: pretrainedKey(module), source: attentionSource(info, module.text), carried: !own,
     seconds: info.seconds, trained: own ? { speed: info.fitness, terrain: info.terrain } : null, oneShot: !own,
     label: own ? `${module.label}, on its own body` : label,
   };
@@ -115,7 +116,7 @@ export async function followEdit(brain, rows, origin, seed, edit) {
  */
 export function bestSoFar(genome, fitness, settings, kind, finetuning, source, origin) {
   return {
-    controller: kind, genome, rows: settings.shape, origin, module: null, source: finetuning ? source : null,
+    controller: kind, genome, rows: settings.shape, origin, module: null, source: finetuning ? source : null, carried: finetuning,
     seconds: settings.seconds, trained: { speed: fitness, terrain: settings.terrain, single: true }, run: true,
     label: `the run's best when it began walking (${finetuning ? 'fine-tuning' : 'evolving'}): ${decimal(fitness)} m/s in one evaluation, seed ${settings.seed} `
       + `(a newer best takes over once its ${settings.seconds}-s episode is over)`,
@@ -126,10 +127,12 @@ export function bestSoFar(genome, fitness, settings, kind, finetuning, source, o
  * A finished run's result: its run file's best.
  * @param {{controller: string, genome: number[], fitness: number}} best @param {string} runFile
  * @param {import('../workers/protocol.js').EvolveSettings} settings @param {Origin} origin @param {string} label
+ * @param {boolean} [carried] a fine-tune's result (its attention from another brain's file)
  * @returns {Brain}
  */
-export function runResult(best, runFile, settings, origin, label) {
+export function runResult(best, runFile, settings, origin, label, carried = false) {
   return {
+    carried,
     controller: best.controller, genome: new Float32Array(best.genome), rows: settings.shape, origin, module: null,
     source: hasAttention(best.controller) ? { text: runFile, entry: null } : null, label,
     seconds: settings.seconds, trained: { speed: best.fitness, terrain: settings.terrain }, run: true,
@@ -170,11 +173,14 @@ export function whyNoFinetune(brain) {
 }
 
 /**
- * What a link to the robot leaves behind, in a sentence ('' if nothing): a brain fine-tunes
- * from a file that a link carries only when it is a pretrained module. @param {Brain | null} brain
+ * What a link to the robot leaves behind, in a sentence ('' if nothing): said only for a brain
+ * whose attention was carried over from another brain's file (transplanted, or fine-tuned from
+ * one), a file a link carries only when it is a pretrained module.
+ * @param {Brain | null} brain
  */
 export function lostInLink(brain) {
-  return brain?.source && !brain.module ? ' Fine-tune will be off there: the file its attention came from does not travel in a link.' : '';
+  return brain?.source && !brain.module && brain.carried
+    ? ' The robot and its brain open the same there, but Fine-tune will be off: the file its attention came from does not travel in a link.' : '';
 }
 
 /** @param {import('../modules/modules.js').Module} module */

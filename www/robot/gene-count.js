@@ -30,7 +30,15 @@ export function showGeneCount(el, check, kind, attentionGenes, walking = '') {
   const breakdown = el.ownerDocument.createElement('span');
   breakdown.className = 'gene-detail expert'; // in simple words the count alone, its genes explained (shared/simple-words.js)
   breakdown.append(...withTerms(el.ownerDocument, detail));
-  el.replaceChildren(...(n > 0 ? [...withTerms(el.ownerDocument, `${genes} genes${pending}`), breakdown] : []));
+  // The same breakdown in simple words (an attention brain's: which numbers all voxels share, which are one voxel's own).
+  // Shown by its style only (classroom.css), so that the count's text stays the expert's.
+  const plain = el.ownerDocument.createElement('span');
+  plain.className = 'gene-detail gene-plain';
+  if (kind === 'attention' && n > 0) {
+    plain.dataset.plain = `${attentionGenes} shared by all the voxels (how each one listens), ${genes - attentionGenes - 1} that belong to one voxel each `
+      + `(${SENSOR_NAMES.length} for every voxel), and 1 more`;
+  }
+  el.replaceChildren(...(n > 0 ? [...withTerms(el.ownerDocument, `${genes} genes${pending}`), breakdown, plain] : []));
   el.title = anyBody
     ? 'Genes: the numbers evolution changes. A brain for any body has no gene of its own per voxel: every voxel runs the same genes '
       + 'and works out its own weights from its place in the body (such as which neighbours it has), so one brain drives every body.'

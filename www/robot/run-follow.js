@@ -95,6 +95,6 @@ export class RunFollower {
         + `${run.mode === 'scratch' && run.follow ? '; the robot walks on with the fine-tuned result' : ''}.`, 'note');
       return;
     }
-    robot.drive(runResult(best, run.runFile, run.settings, robot.parts.drawing.origin(), `the ${what} run's result: ${result}`));
+    robot.drive(runResult(best, run.runFile, run.settings, robot.parts.drawing.origin(), `the ${what} run's result: ${result}`, run.mode === 'finetune'));
   }
 }

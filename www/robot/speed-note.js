@@ -60,7 +60,9 @@ export class SpeedNote {
    */
   async words(brain, speed, terrain, seconds) {
     // Measured at once, on a walk of its own: a freeze or an edit of the walk on screen changes that walk's figures, not this.
-    const here = `Speed here: ${decimal(speed)} m/s over a ${seconds}-s episode on ${terrain} (measured at once, on a walk with no freeze or edit).`;
+    // Your robot's speed: the one a challenge's short code and the class's ranking use (the other two are training's).
+    const here = `Your robot's speed: ${decimal(speed)} m/s over a ${seconds}-s episode on ${terrain} (measured at once, on a walk with no freeze or edit; `
+      + 'the short code and the class ranking use this one).';
     if (brain.oneShot && isAnyBody(brain.controller)) {
       return `${here} That is its speed on your body with no training for it: a brain for any body keeps all its genes on every body `
         + '(each voxel works out its own weights from its place in the body, such as which neighbours it has), so nothing was drawn at random for yours. '
@@ -75,7 +77,9 @@ export class SpeedNote {
     const trained = brain.trained;
     if (!trained || !Number.isFinite(trained.speed)) return here;
     const { where, why } = await training(trained, brain.seconds ?? seconds);
-    return `${here} In training: ${decimal(trained.speed)} m/s (${which(trained)} ${where}). ${why}`;
+    // The run's “best so far” is a third speed: said in one sentence, for a brain from the run.
+    const best = brain.run ? ' “Best so far”, under the run, is its single fastest walk in training, often a lucky one.' : '';
+    return `${here} In training: ${decimal(trained.speed)} m/s (${which(trained)} ${where}). ${why}${best}`;
   }
 
   /** @param {number} value @param {string} text */

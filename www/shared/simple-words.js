@@ -121,6 +121,10 @@ export const SIMPLER = [
   { pattern: /\bfine-tun(?:e|ed|ing)\b(?! \()/gi, explain: 'trained a little more for the new body' },
   { pattern: /\bquartiles?\b/g, explain: 'the edges of the middle half of the runs' },
   { pattern: /\bon \d+ workers?\b/g, explain: 'parts of this computer walking brains at the same time' },
+  // The three speeds of a brain: which one is your robot's, and what the other two are.
+  { pattern: /\bYour robot's speed(?=: )/g, explain: 'the one that counts: your short code and the class ranking use it' },
+  { pattern: /\bIn training(?=: )/g, explain: 'how fast it walked while it learned, on other hills: not your robot\'s speed' },
+  { pattern: /“Best so far”/g, explain: 'its one fastest walk while it learned' },
   // The matrix's expert names for its rows and columns: its plain words stand beside them.
   { pattern: /\s\((?:query|key)\)/g, hide: true },
 ];

@@ -63,6 +63,28 @@ export function claimWords(s) {
   return `${asks} ${s.shapes.map((shape) => answerWords(s, shape)).join(' ')}`;
 }
 
+/**
+ * The test in words for a 14-year-old (“Simple words”): the same facts, no interval or confidence,
+ * the margin as a rule chosen before the runs. @param {ClaimSummary} s @returns {string}
+ */
+export function claimSimpleWords(s) {
+  const perArm = count(s.planned_runs / (2 * s.shapes.length));
+  const margin = `${decimal(s.margin, 1)} m/s`;
+  const asks = `The paper says ${s.treatment} is at least about as fast as ${s.control}. To check this fairly, we wrote down a rule before we ran anything: `
+    + `${s.treatment} passes if it is not slower than ${s.control} by ${margin} or more. Then we trained ${perArm} new brains of each kind on each body.`;
+  if (!s.complete) return `${asks} The test is still running: ${count(s.finished_runs)} of ${count(s.planned_runs)} brains are done. The answer comes when all are in.`;
+  const each = s.shapes.map((shape) => {
+    const a = shape.answer;
+    if (!a) return '';
+    const body = bodyWords(shape.shape);
+    if (a.verdict === 'worse') return `On ${body}, ${s.treatment} failed: it was more than ${margin} slower.`;
+    if (a.verdict === 'not shown') return `On ${body}, there is no answer yet: ${s.treatment} might still be ${margin} slower or more.`;
+    return `On ${body}, ${s.treatment} passed: it is not ${margin} slower. `
+      + (a.superiority === 'better' ? 'It was even faster.' : 'It may be a little faster, but the test cannot be sure.');
+  });
+  return `${asks} ${each.filter(Boolean).join(' ')}`;
+}
+
 /** @type {Promise<ClaimSummary> | undefined} */
 let loaded;
 
@@ -75,11 +97,13 @@ export function loadClaim() {
 /**
  * Writes the test's state into `box` (a line that says why, if it cannot be read): in “What
  * our study found” and in the study panel.
- * @param {HTMLElement} box
+ * @param {HTMLElement} box @param {HTMLElement | null} [simple] where its simple words go (shown instead in simple words), if anywhere
  */
-export async function fillClaim(box) {
+export async function fillClaim(box, simple = null) {
   try {
-    box.textContent = claimWords(await loadClaim());
+    const s = await loadClaim();
+    box.textContent = claimWords(s);
+    if (simple) simple.textContent = claimSimpleWords(s);
   } catch (error) {
     box.textContent = `A larger test of the paper's own claim is under way; how far it has come could not be read (${messageOf(error)}).`;
   }

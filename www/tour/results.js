@@ -113,10 +113,13 @@ export function fillResults(box, show) {
     const item = doc.createElement('li');
     item.append(add('p', f.question, 'finding-question'), add('p', `The paper: ${f.paper}`), add('p', `Our study: ${f.ours}`));
     if (f.claim) {
-      const claim = add('p', 'A larger test of the paper\'s exact claim: reading its state…', 'claim');
+      const claim = add('p', 'A larger test of the paper\'s exact claim: reading its state…', 'claim expert');
       claim.dataset.testid = 'claim';
-      whenNear(claim, () => void fillClaim(claim), '300px'); // its file is fetched when the section can be seen
-      item.append(claim);
+      // In simple words the same test told for a 14-year-old (claim.js), the exact statement hidden.
+      const plain = add('p', '', 'claim simple-only');
+      plain.dataset.testid = 'claim-simple';
+      whenNear(item, () => void fillClaim(claim, plain), '300px'); // its file is fetched when the finding can be seen (one of the two is hidden)
+      item.append(claim, plain);
     }
     if (f.figure) {
       const button = add('button', figure(f.figure).runs.length ? 'See the figure and its robots' : 'See the figure');

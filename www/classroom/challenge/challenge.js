@@ -21,7 +21,7 @@ import { terrainRefused } from '../../viewer/terrain-words.js';
 import { checkCode, linesOf, order, rankEntries, unchecked } from './entries.js';
 import { EXAMPLE_CODE, looksLikeCode, normalCode, readCode, robotCode } from './code.js';
 import { evolveAgain } from './evolve.js';
-import { RUN_DEFAULTS, bodyProblem, challengeLink, rankingWords, rulesFrom, rulesOf, rulesWords, runOf, runSettings, sameRules } from './rules.js';
+import { RUN_DEFAULTS, bodyProblem, challengeLink, rankingWords, rulesFrom, rulesOf, rulesParts, rulesWords, runOf, runSettings, sameRules } from './rules.js';
 import { loadQr, qrBox } from '../qr.js';
 import { onlyHere } from '../sheet-address.js';
 import { durationWords } from '../../runs/progress.js';
@@ -162,6 +162,8 @@ export class Challenge {
     if (this.opened) {
       this.showInForm(this.opened);
       this.showLink(this.opened);
+      // The teacher's own link, opened again (on the projector's laptop): its QR code and link in sight at once.
+      if (made && sameRules(this.opened, made)) this.teacher.open = true;
     } else if (made) {
       this.showInForm(made);
       this.showMade(made);
@@ -193,8 +195,7 @@ export class Challenge {
     const r = this.opened;
     if (!r) return;
     this.section.dataset.mode = 'student';
-    this.rulesLine.textContent = rulesWords(r);
-    this.rulesLine.hidden = false;
+    this.showRules(r);
     // The rules at the top as well, where a student opening the link looks first (the panel is far down).
     this.page.pin(`${rulesWords(r)} (The rules are also under “Class challenge”, further down.)`);
     this.page.setView(r.terrain);
@@ -300,7 +301,30 @@ export class Challenge {
   /** Shows the made challenge's link, its QR code and rules. @param {Rules} r */
   showMade(r) {
     this.showLink(r);
-    this.rulesLine.textContent = `What your students will see: ${rulesWords(r)}`;
+    this.showRules(r, 'What your students will see: ');
+  }
+
+  /**
+   * The rules where a student reads them, short enough for a phone: the goal, three numbered
+   * steps, and the details folded. @param {Rules} r @param {string} [lead] words before them (the teacher's)
+   */
+  showRules(r, lead = '') {
+    const doc = this.section.ownerDocument;
+    const { goal, steps, details } = rulesParts(r);
+    const head = doc.createElement('p');
+    head.className = 'challenge-goal';
+    head.textContent = `${lead}${goal}`;
+    const list = doc.createElement('ol');
+    list.className = 'challenge-steps';
+    list.append(...steps.map((step) => { const li = doc.createElement('li'); li.textContent = step; return li; }));
+    const more = doc.createElement('details');
+    more.className = 'challenge-details';
+    const summary = doc.createElement('summary');
+    summary.textContent = 'The details';
+    const text = doc.createElement('p');
+    text.textContent = details;
+    more.append(summary, text);
+    this.rulesLine.replaceChildren(head, list, more);
     this.rulesLine.hidden = false;
   }
 

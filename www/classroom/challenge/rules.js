@@ -120,14 +120,30 @@ export function budgetWords(r) {
   return `${Number.isFinite(Number(r.budget)) ? count(Number(r.budget)) : r.budget} evaluations`;
 }
 
-/** The rules in words, for the student: what to do, in three steps. @param {Rules} r */
+/**
+ * The rules for the student, in parts: the goal, three short steps, and the details (folded on
+ * the page: challenge.js). @param {Rules} r
+ * @returns {{goal: string, steps: string[], details: string}}
+ */
+export function rulesParts(r) {
+  return {
+    goal: `Challenge: ${bodyWords(r)}, as fast as it can over ${r.seconds} s on ${r.terrain}.`,
+    steps: [
+      r.body ? 'Your body is drawn for you.' : 'Draw your robot.',
+      'Press Evolve: the run is set for you, the same on every computer.',
+      'Press “Share link” and give your teacher the short code it shows.',
+    ],
+    details: `The run: ${budgetWords(r)}, seed ${r.seed}, ${r.seconds}-s walks. `
+      + 'Your teacher\'s page ranks your code (or your link) by its speed and can check it by making your robot again the same way. '
+      + `The speed under the robot is over its own walk: ${r.seconds} s for a robot you evolve here; a brain from the list of modules walks `
+      + 'as long as it trained (its details, under “3 · Give it a brain”, say how long), so its speed is not one to compare with yours.',
+  };
+}
+
+/** The rules in words, in one line (the message at the top of a student's page, short: the steps are under “Class challenge”). @param {Rules} r */
 export function rulesWords(r) {
-  return `Challenge: ${bodyWords(r)}, as fast as it can over ${r.seconds} s on ${r.terrain}. `
-    + `1 · ${r.body ? 'Your body is drawn for you' : 'Draw your robot'}. `
-    + `2 · Evolve its brain: the run is set for you (${budgetWords(r)}, seed ${r.seed}, ${r.seconds}-s walks), the same on every computer. `
-    + '3 · Press “Share link” and give your teacher the short code it shows (or the link): their page ranks it and can check it by making your robot again the same way. '
-    + `The speed under the robot is over its own walk: ${r.seconds} s for a robot you evolve here; a brain from the list of modules walks `
-    + 'as long as it trained (its details, under “3 · Give it a brain”, say how long), so its speed is not one to compare with yours.';
+  const { goal, steps } = rulesParts(r);
+  return `${goal} ${steps.map((s, i) => `${i + 1} · ${s}`).join(' ')}`;
 }
 
 /** The rules in a line, for the teacher's table. @param {Rules} r */
