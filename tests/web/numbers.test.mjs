@@ -132,7 +132,7 @@ test('a transplant reloaded, or opened from its link, still says it walks one-sh
   await page.locator('#terrain').press('Enter');
   await attentionOnWorm(page); // the biped's attention on a 5-voxel worm
   const before = await speedNote(page);
-  assert.match(before, /over a 30-s episode on hilly-1-10-7 \(measured at once, on a walk with no freeze or edit\)\. That is its one-shot speed.*press Fine-tune/);
+  assert.match(before, /over a 30-s episode on hilly-1-10-7 \(measured at once, on a walk with no freeze or edit; the short code and the class ranking use this one\)\. That is its one-shot speed.*press Fine-tune/);
   await page.waitForFunction(() => /one-shot=1/.test(localStorage.getItem('vsr-playground/state/v1') ?? ''), undefined, { timeout: 20_000 });
   await page.reload();
   await waitForText(page, 'status', /^5 voxels, attention$/);
