@@ -174,7 +174,7 @@ test('the teacher\'s answer keys: every chapter\'s, the same as a student\'s rev
   assert.ok(rows[1].startsWith(`Answer: ${shown}.`), `the key of chapter 2 is the student's reveal: ${rows[1]} / ${shown}`);
   assert.match(rows[2], /^Answer: 4 genes\./);
   const plan = String(await keys.locator('.sheet-plan').textContent());
-  assert.match(plan, /First lesson \(45 min\): Open the page.*; chapter 1 \(A voxel and its colours\), 5 min;/, `a lesson plan by chapter: ${plan}`);
+  assert.match(plan, /^The plan: one lesson of 50 minutes .*If you have two lessons of 45 minutes instead.*First lesson \(45 min\): Open the page.*; chapter 1 \(A voxel and its colours\), 5 min;/, `the 50-minute lesson first, the two lessons as its alternative: ${plan}`);
   assert.ok(plan.includes(`each take ${RUN_TIME}`), 'a run\'s time as chapter 8 and docs/teaching.md say it');
   const guide = await page.request.get(new URL(GUIDE.href, env.url.replace(/\/?$/, '/')).href);
   assert.equal(guide.status(), 200, `the teachers' guide the plan links is served (${GUIDE.href})`);

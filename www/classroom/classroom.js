@@ -11,7 +11,7 @@ import { messageOf } from '../workers/kit.js';
 import { CHAPTERS } from '../tour/chapters.js';
 import { exerciseOf } from './exercises.js';
 import { keepGuess } from './guess-lock.js';
-import { LESSON, lessonPlanNodes, lessonStepWords, lessonTimes } from './lesson-plan.js';
+import { GUIDE, LESSON, LESSON_SHEET, lessonChapters, lessonChaptersWords, lessonPlanNodes, lessonStepWords, lessonTimes } from './lesson-plan.js';
 import { loadQr, qrBox } from './qr.js';
 import { addressField, chapterLink, onlyHere, pageAddress } from './sheet-address.js';
 import { EXAMPLE_CODE } from './challenge/code.js';
@@ -41,6 +41,8 @@ export class Classroom {
     this.answers = new Map();
     /** The chapters whose guess is locked (guess-lock.js). @type {Set<number>} */
     this.locked = new Set();
+    // “For teachers” in the page's header: the 50-minute lesson, with the way to the rest.
+    doc.getElementById('teacher-open')?.addEventListener('click', () => { void loadQr(); this.lesson(); });
   }
 
   /**
@@ -174,7 +176,7 @@ export class Classroom {
     // Folded and named for the teacher: the keys hold every chapter's answer.
     const fold = make(doc, 'details', 'tour-teacher');
     fold.addEventListener('toggle', () => void loadQr(), { once: true }); // the lesson sheet's QR code, drawn at once
-    const summary = make(doc, 'summary', '', 'For the teacher: worksheet, answer keys, lesson plan');
+    const summary = make(doc, 'summary', '', 'For the teacher: lesson plan, worksheet, keys');
     summary.dataset.testid = 'tour-teacher';
     const tools = make(doc, 'div', 'tour-teacher-tools');
     const print = /** @type {HTMLButtonElement} */ (make(doc, 'button', '', 'Print worksheet'));
@@ -187,7 +189,7 @@ export class Classroom {
     keys.dataset.testid = 'teacher-keys-open';
     keys.title = 'Every task\'s answer, computed by the page now, with why';
     keys.addEventListener('click', () => this.keys());
-    const lesson = /** @type {HTMLButtonElement} */ (make(doc, 'button', '', 'The 50-minute lesson'));
+    const lesson = /** @type {HTMLButtonElement} */ (make(doc, 'button', '', LESSON_SHEET));
     lesson.type = 'button';
     lesson.dataset.testid = 'lesson-open';
     lesson.title = 'One lesson for a class of 30, minute by minute: what you project, what the students do';
@@ -222,25 +224,32 @@ export class Classroom {
 
   /**
    * The worksheet, and the print dialog when `print` (not when the page's address opens only
-   * on this computer: the teacher types the class's first, sheet-address.js). @param {boolean} print
+   * on this computer: the teacher types the class's first, sheet-address.js): every chapter, or
+   * only the chapters `only` (0-based: the 50-minute lesson's). @param {boolean} print @param {number[]} [only]
    */
-  worksheet(print) {
+  worksheet(print, only) {
     const doc = this.doc;
-    const sheet = this.sheet('worksheet', 'VSR Playground: predict, then try');
+    const sheet = this.sheet('worksheet', only ? `VSR Playground: predict, then try (${lessonChaptersWords()}, then the class challenge)` : 'VSR Playground: predict, then try');
     sheet.dataset.testid = 'worksheet';
+    sheet.dataset.chapters = only ? 'lesson' : 'all';
     const base = pageAddress(location.href);
     /** @type {HTMLElement[]} */
     const links = [];
     sheet.querySelector('.class-sheet-bar')?.prepend(addressField(doc, base, (href) => {
-      links.forEach((link, i) => { link.textContent = chapterLink(i, href); });
+      links.forEach((link, i) => { link.textContent = chapterLink(shown[i], href); });
     }));
     sheet.append(make(doc, 'p', 'sheet-name', 'Name: ______________________________   Date: ______________'),
       make(doc, 'p', 'sheet-how', 'For each chapter: open its link, read it, write your prediction before you press Reveal, then try it and write what happened.'));
+    /** @type {number[]} */
+    const shown = [];
     CHAPTERS.forEach((chapter, i) => {
+      if (only && !only.includes(i)) return;
+      shown.push(i);
       const ex = exerciseOf(i);
       const part = make(doc, 'section', 'sheet-task');
-      links.push(make(doc, 'p', 'sheet-link', chapterLink(i, base)));
-      part.append(make(doc, 'h2', '', `Chapter ${i + 1}. ${chapter.title}`), links[i],
+      const link = make(doc, 'p', 'sheet-link', chapterLink(i, base));
+      links.push(link);
+      part.append(make(doc, 'h2', '', `Chapter ${i + 1}. ${chapter.title}`), link,
         make(doc, 'p', 'sheet-ask', ex?.ask ?? chapter.task));
       if (ex) part.append(make(doc, 'p', 'sheet-do', `Do: ${chapter.task}`));
       if (!ex) {
@@ -277,7 +286,7 @@ export class Classroom {
     const showQr = (/** @type {string} */ href) => qr.replaceChildren(qrBox(doc, href, 'Open this page'), make(doc, 'p', 'sheet-link', href));
     sheet.querySelector('.class-sheet-bar')?.prepend(addressField(doc, base, showQr));
     showQr(base);
-    sheet.append(make(doc, 'p', 'sheet-how', 'Before the lesson: open the page once on every laptop (it is then kept there and works without the network), '
+    sheet.append(this.teacherLinks(), make(doc, 'p', 'sheet-how', 'Before the lesson: open the page once on every laptop (it is then kept there and works without the network), '
       + 'and make the challenge link (Class challenge, For the teacher, at the bottom of the page) so that its QR code is ready.'), qr);
     const table = make(doc, 'table', 'lesson-table');
     table.dataset.testid = 'lesson-table';
@@ -294,9 +303,40 @@ export class Classroom {
     thead.append(head);
     table.append(thead, body);
     sheet.append(table, make(doc, 'p', 'sheet-how', 'Chapters 8 to 10 (a transplanted brain, a search for bodies, your own robot) are for another lesson or for home: '
-      + 'the worksheet has every chapter\'s link.'));
+      + 'the full worksheet has every chapter\'s link. Two lessons of 45 minutes instead? The answer keys\' sheet and the guide have that plan too.'));
     sheet.scrollIntoView({ block: 'start' });
     return sheet;
+  }
+
+  /**
+   * The way from the lesson's sheet to the rest of the teacher's material: the lesson's worksheet
+   * (its chapters only), the full one, the answer keys, the teachers' guide.
+   */
+  teacherLinks() {
+    const doc = this.doc;
+    const nav = make(doc, 'nav', 'lesson-links');
+    nav.setAttribute('aria-label', 'The teacher\'s material');
+    nav.dataset.testid = 'lesson-links';
+    /** @param {string} text @param {string} id @param {string} title @param {() => void} act */
+    const button = (text, id, title, act) => {
+      const b = /** @type {HTMLButtonElement} */ (make(doc, 'button', '', text));
+      b.type = 'button';
+      b.dataset.testid = id;
+      b.title = title;
+      b.addEventListener('click', act);
+      return b;
+    };
+    const guide = /** @type {HTMLAnchorElement} */ (make(doc, 'a', '', 'Teachers\' guide'));
+    guide.href = GUIDE.href;
+    guide.target = '_blank';
+    guide.rel = 'noopener';
+    guide.dataset.testid = 'lesson-guide';
+    nav.append(
+      button(`Worksheet for this lesson (${lessonChaptersWords()}, challenge)`, 'lesson-worksheet', 'The worksheet of this lesson\'s chapters and the challenge box, one per student', () => this.worksheet(true, lessonChapters())),
+      button(`Full worksheet (all ${CHAPTERS.length} chapters)`, 'lesson-worksheet-all', 'Every chapter\'s task, for another lesson or for home', () => this.worksheet(true)),
+      button('Answer keys', 'lesson-keys', 'Every task\'s answer, computed by the page now, with why', () => void this.keys()),
+      guide);
+    return nav;
   }
 
   /** The teacher view: every task with its key, computed one after another. */

@@ -193,7 +193,15 @@ export const TASKS = [
       // Which run the ratio is of, where it is said: the study's long run climbs far higher than a class's quick one.
       const whose = own.length >= 2 ? ', in your own run'
         : `, in the study's run of ${count(last.evaluations ?? NaN)} evaluations, not a class's quick run of ${count(Number(setup(EVOLUTION).run?.budget))}`;
-      return { answer, shown: `${['less than 2 times', '2 to 10 times', 'more than 10 times'][answer]} (${times})${whose}`,
+      // Beside the study's number, what a class's quick run gets to: the study's run after as many evaluations.
+      const budget = Number(setup(EVOLUTION).run?.budget);
+      const upTo = bests.filter((b) => (b.evaluations ?? Infinity) <= budget);
+      const soon = upTo[upTo.length - 1];
+      const early = soon && first.fitness > 0 ? soon.fitness / first.fitness : NaN;
+      const band = early > 10 ? 2 : early >= 2 ? 1 : 0;
+      const quick = own.length >= 2 || !Number.isFinite(early) ? ''
+        : `; what the class will see is nearer ${decimal(early, 1)} times (${['less than 2 times', '2 to 10 times', 'more than 10 times'][band]}), as the study's run stood after its first ${count(soon.evaluations ?? NaN)} evaluations, as many as the class's quick run: each student's Reveal says their own run's number`;
+      return { answer, shown: `${['less than 2 times', '2 to 10 times', 'more than 10 times'][answer]} (${times})${whose}${quick}`,
         why: `From ${source}: generation 0's best walked ${ms(first.fitness)} in training, the last generation's best (generation ${last.generation}) ${ms(last.fitness)}. `
           + 'Random brains barely move; each generation keeps the fastest and tries changed copies of them, and small gains pile up.'
           + (own.length >= 2 ? '' : ` A student's Reveal answers from their own quick run of ${count(Number(setup(EVOLUTION).run?.budget))} evaluations, which gets less far (it asks them to press Evolve first).`) };
@@ -280,7 +288,7 @@ export const TASKS = [
     ask: `This table (${voxels(/** @type {string} */ (setup(YOURS).rows))} voxels) has no brain: the phase gait drives it on hilly ground, on this chapter's clock (its f and φ are under the robot, in “Phase gait”; chapter 1's were ${clock(setup(GAIT))}). `
       + `Put chapter 1's biped of ${voxels(/** @type {string} */ (setup(GAIT).rows))} voxels here, on this hilly ground with this same clock: will the table be faster or slower than the biped?`,
     choices: ['faster', 'slower'],
-    try: 'Watch its speed under the robot; then draw your own and compare.',
+    try: `Read the table's speed under the robot, then type the biped's rows (${setup(GAIT).rows}) in “Rows” and read its speed on the same clock; then draw your own.`,
     async key(lab) {
       const terrain = setup(YOURS).terrain;
       const seconds = lab.defaults.quick.seconds;

@@ -1,12 +1,13 @@
 // @ts-check
 /**
- * The lesson plans. LESSON: one lesson of 50 minutes for a class of 30 (a laptop each, or one
- * per pair), minute by minute, what the teacher projects and what the students do, ending with
- * the class challenge; the teacher's “The 50-minute lesson” sheet shows it (classroom.js) and
- * docs/teaching.md gives it as a table. LESSONS: two lessons of 45 minutes, one device for every
- * two students, chapter by chapter with time to start and to compare; the answer keys' sheet
- * prints it and docs/teaching.md gives it as a table. The browser tests check that the page and
- * the guide say the same.
+ * The lesson plan. LESSON is THE plan: one lesson of 50 minutes for a class of 30 (a laptop
+ * each, or one per pair), minute by minute, what the teacher projects and what the students do,
+ * chapters 1 to 7 and then the class challenge; the teacher's “The 50-minute lesson” sheet shows
+ * it (classroom.js, opened by “For teachers” in the page's header) and docs/teaching.md gives it
+ * as a table. LESSONS is its alternative if you have two lessons of 45 minutes: the same chapters
+ * and the same challenge, with time for chapters 8 to 10; the answer keys' sheet names both and
+ * docs/teaching.md gives it as a second table. The browser tests check that the page and the
+ * guide say the same.
  */
 import { CHAPTERS, RUN_TIME } from '../tour/chapters.js';
 
@@ -59,31 +60,54 @@ export function lessonStepWords(step) {
   return n > 0 ? `Chapter ${n}: ${step.what}` : step.what;
 }
 
-/** @typedef {{what: string, minutes: number}} Step  a chapter (by title) or a step of the lesson (START, WRAP) */
+/**
+ * The chapters the 50-minute lesson uses (0-based, in order): what its worksheet prints.
+ * @returns {number[]}
+ */
+export function lessonChapters() {
+  return LESSON.steps.map((s) => CHAPTERS.findIndex((c) => c.title === s.what)).filter((i) => i >= 0);
+}
+
+/** The lesson's chapters in words, "chapters 1 to 7". */
+export function lessonChaptersWords() {
+  const n = lessonChapters().map((i) => i + 1);
+  const run = n.every((v, i) => i === 0 || v === n[i - 1] + 1);
+  return run ? `chapters ${n[0]} to ${n[n.length - 1]}` : `chapters ${n.join(', ')}`;
+}
+
+/** @typedef {{what: string, minutes: number}} Step  a chapter (by title) or a step of the lesson (START, CHALLENGE, RANK, WRAP) */
 
 /** The steps that are not chapters. */
-export const START = 'Open the page in pairs, press Learn';
+export const START = 'Open the page, press Learn';
+export const AGAIN = 'Open the page again, at chapter 8 (its link)';
+export const CHALLENGE = 'Class challenge';
+export const RANK = 'Rank, race, compare';
 export const WRAP = 'Compare predictions: who was right, and why?';
 
-/** The two lessons. @type {{name: string, steps: Step[]}[]} */
+/**
+ * If you have two lessons of 45 minutes instead: the 50-minute lesson's chapters 1 to 7 in the
+ * first, with a little more time each; chapters 8 to 10 and the same class challenge in the second.
+ * @type {{name: string, steps: Step[]}[]}
+ */
 export const LESSONS = [
   { name: 'First lesson', steps: [
     { what: START, minutes: 5 },
     { what: 'A voxel and its colours', minutes: 5 },
-    { what: 'A body', minutes: 5 },
-    { what: 'One small brain in every voxel', minutes: 5 },
-    { what: 'Attention, read on one voxel', minutes: 10 },
-    { what: 'Evolution', minutes: 10 },
-    { what: WRAP, minutes: 5 },
+    { what: 'A body', minutes: 4 },
+    { what: 'One small brain in every voxel', minutes: 3 },
+    { what: 'Attention, read on one voxel', minutes: 5 },
+    { what: 'Evolution', minutes: 9 },
+    { what: 'Three brains, side by side', minutes: 4 },
+    { what: 'Freeze the attention', minutes: 4 },
+    { what: WRAP, minutes: 6 },
   ] },
   { name: 'Second lesson', steps: [
-    { what: START, minutes: 5 },
-    { what: 'Three brains, side by side', minutes: 7 },
-    { what: 'Freeze the attention', minutes: 5 },
-    { what: 'Transplant a module', minutes: 8 },
-    { what: 'Which body for this brain?', minutes: 8 },
-    { what: 'Your turn', minutes: 7 },
-    { what: WRAP, minutes: 5 },
+    { what: AGAIN, minutes: 3 },
+    { what: 'Transplant a module', minutes: 7 },
+    { what: 'Which body for this brain?', minutes: 6 },
+    { what: 'Your turn', minutes: 4 },
+    { what: CHALLENGE, minutes: 15 },
+    { what: RANK, minutes: 10 },
   ] },
 ];
 
@@ -97,14 +121,18 @@ export function stepWords(step) {
  * The teachers' guide, docs/teaching.md as a web page (rendered by `make site`, and by
  * scripts/serve.mjs for /docs/teaching.html), relative to the page, and its words.
  */
-export const GUIDE = { href: 'docs/teaching.html', text: 'The teachers\' guide (teaching.md)', after: ' has this plan with what students see in each chapter.' };
+export const GUIDE = { href: 'docs/teaching.html', text: 'The teachers\' guide (teaching.md)', after: ' has these plans with what students see in each chapter.' };
+
+/** The name of the teacher's sheet with THE plan. */
+export const LESSON_SHEET = 'The 50-minute lesson';
 
 /** The plan in one paragraph, for the answer keys' sheet, up to the guide. */
 function planWords() {
   const lessons = LESSONS.map((l) => `${l.name} (${l.steps.reduce((sum, s) => sum + s.minutes, 0)} min): ${l.steps.map(stepWords).join('; ')}.`);
-  return `A plan, if you want one: one device for every two students. ${lessons.join(' ')} `
+  return `The plan: ${LESSON.name.toLowerCase()} (“${LESSON_SHEET}”, under “For teachers” at the top of the page), ${lessonChaptersWords()} and then the class challenge, for ${LESSON.who}. `
+    + `If you have two lessons of 45 minutes instead, the same chapters and the same challenge: ${lessons.join(' ')} `
     + `The quick evolution, the fine-tuning and the body search each take ${RUN_TIME}: start them, then talk. `
-    + 'Print the worksheet before the first lesson (one per student). ';
+    + 'Print the worksheet before the lesson (one per student). ';
 }
 
 /** The plan as text, the guide named. */

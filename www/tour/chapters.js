@@ -193,7 +193,7 @@ export const CHAPTERS = [
       `This table of ${voxels(TABLE)} voxels has no brain: the phase gait drives it, on this chapter's clock (f and φ under the robot, in “Phase gait”). Now draw a robot of your own: a long worm, a taller table, a creature with three legs.`,
       'Give it a brain: evolve one, or choose a module under “3 · Give it a brain”, load it onto your robot and fine-tune it. Every figure of the study is under “The study”, further down the page, each with its robots to watch.',
     ],
-    task: 'When your own robot walks, press “Share link” and send the link: it opens your robot, its brain and its settings.',
+    task: `Read the table's speed under the robot. Then put chapter 1's biped here: type ${BIPED} in “Rows” under the grid; the same clock drives it on the same hills: compare its speed. Then draw a robot of your own; when it walks, press “Share link” and send the link: it opens your robot, its brain and its settings.`,
     notice: 'This tour has a link for every chapter too (the address bar shows it), to send one chapter to a class.',
     setup: { rows: TABLE, brain: null, terrain: VIEW, run: QUICK, controller: 'attention' },
     target: '#share',
