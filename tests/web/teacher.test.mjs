@@ -123,6 +123,22 @@ test('the lesson\'s worksheet prints only the lesson\'s chapters and the challen
   await context.close();
 });
 
+test('the class\'s address typed once, in the lesson\'s sheet, is the one its worksheet prints', async () => {
+  const { page, problems, context } = await openPage(env.browser, env.url, {
+    width: 1400, height: 900, init: () => { window.print = () => {}; } });
+  await byTestId(page, 'teacher-open').click();
+  await byTestId(page, 'lesson').waitFor();
+  await byTestId(page, 'lesson').locator('[data-testid="worksheet-address"]').fill('https://school.example/vsr/');
+  await byTestId(page, 'lesson-worksheet').click();
+  const sheet = byTestId(page, 'worksheet');
+  await sheet.waitFor();
+  assert.equal(await byTestId(page, 'worksheet').locator('[data-testid="worksheet-address"]').inputValue(), 'https://school.example/vsr/');
+  const links = await sheet.locator('.sheet-task .sheet-link').allTextContents();
+  assert.ok(links.length > 0 && links.every((l) => l.startsWith('https://school.example/vsr/?chapter=')), `the worksheet's links: ${links.join(' ')}`);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
 test('chapter 10\'s “Do” does what its question asks; chapter 5\'s “Do” is clear of the teacher\'s line at 1400 px', async () => {
   const ten = CHAPTERS.findIndex((c) => c.title === 'Your turn');
   assert.match(String(exerciseOf(ten)?.ask), /faster or slower than the biped/);

@@ -41,6 +41,11 @@ export class Classroom {
     this.answers = new Map();
     /** The chapters whose guess is locked (guess-lock.js). @type {Set<number>} */
     this.locked = new Set();
+    /**
+     * The address the class opens, shared by the lesson's sheet and the worksheet: this page's,
+     * until the teacher types the class's in either (sheet-address.js). @type {string}
+     */
+    this.classAddress = pageAddress(location.href);
     // “For teachers” in the page's header: the 50-minute lesson, with the way to the rest.
     doc.getElementById('teacher-open')?.addEventListener('click', () => { void loadQr(); this.lesson(); });
   }
@@ -232,10 +237,11 @@ export class Classroom {
     const sheet = this.sheet('worksheet', only ? `VSR Playground: predict, then try (${lessonChaptersWords()}, then the class challenge)` : 'VSR Playground: predict, then try');
     sheet.dataset.testid = 'worksheet';
     sheet.dataset.chapters = only ? 'lesson' : 'all';
-    const base = pageAddress(location.href);
+    const base = this.classAddress;
     /** @type {HTMLElement[]} */
     const links = [];
     sheet.querySelector('.class-sheet-bar')?.prepend(addressField(doc, base, (href) => {
+      this.classAddress = href;
       links.forEach((link, i) => { link.textContent = chapterLink(shown[i], href); });
     }));
     sheet.append(make(doc, 'p', 'sheet-name', 'Name: ______________________________   Date: ______________'),
@@ -281,10 +287,10 @@ export class Classroom {
     const doc = this.doc;
     const sheet = this.sheet('lesson', `${LESSON.name}, for ${LESSON.who}`);
     sheet.dataset.testid = 'lesson';
-    const base = pageAddress(location.href);
+    const base = this.classAddress;
     const qr = make(doc, 'div', 'lesson-qr');
     const showQr = (/** @type {string} */ href) => qr.replaceChildren(qrBox(doc, href, 'Open this page'), make(doc, 'p', 'sheet-link', href));
-    sheet.querySelector('.class-sheet-bar')?.prepend(addressField(doc, base, showQr));
+    sheet.querySelector('.class-sheet-bar')?.prepend(addressField(doc, base, (href) => { this.classAddress = href; showQr(href); }));
     showQr(base);
     sheet.append(this.teacherLinks(), make(doc, 'p', 'sheet-how', 'Before the lesson: open the page once on every laptop (it is then kept there and works without the network), '
       + 'and make the challenge link (Class challenge, For the teacher, at the bottom of the page) so that its QR code is ready.'), qr);
