@@ -240,9 +240,16 @@ test('a teacher\'s review in simple words: the header, the brain\'s words, the s
     const found = await byTestId(page, 'results-plain').innerText();
     assert.doesNotMatch(found, /95% confidence|allow a difference between|margin fixed in advance/, 'the exact statement is the expert\'s');
     assert.match(found, /we wrote down a rule before we ran anything: attention passes if it is not slower than mlp-comm by 0\.5 m\/s or more/);
+    // Findings 2 and 5 in everyday words too (a teacher's review found them in the expert's): the same numbers, no jargon.
+    for (const n of [2, 5]) {
+      const said = await page.locator(`#results-plain ol.findings > li:nth-child(${n}) > p.simple-only:not(.claim)`).innerText();
+      assert.doesNotMatch(said, /mlp-comm|evaluations|module|detected/, `finding ${n} in simple words: ${said}`);
+      assert.match(said, n === 2 ? /3\.28 m\/s.*still we could not tell them apart/s : /3\.14 m\/s.*2\.03 m\/s: we could not tell them apart/s, `finding ${n}: ${said}`);
+    }
     await byTestId(page, 'claim-simple').screenshot({ path: path.join(SCREENSHOTS, `simple-words-claim-${width}.png`) });
     await byTestId(page, 'simple-words').uncheck();
     assert.match(await byTestId(page, 'results-plain').innerText(), /with 95% confidence/, 'the exact statement back for the expert');
+    assert.match(await page.locator('#results-plain ol.findings > li:nth-child(5)').innerText(), /the 30,100 that made the module/, 'finding 5 in the expert\'s words back');
     assert.ok((await page.locator('#module option').allTextContents()).some((t) => /^biped-4x3 → biped-6x4 · \d+\.\d\d m\/s average over 10 new terrains$/.test(t)), 'the expert\'s names back');
     assert.match(await page.locator('header > p').innerText(), /GECCO/);
     assert.deepEqual(problems, []);

@@ -19,6 +19,8 @@ import { figure } from './figures.js';
  * @property {string} ours      what our study found
  * @property {string} [figure]  a study figure (figures.js) that shows it
  * @property {boolean} [claim]  followed by the test of the paper's own claim (claim.js), read from its file
+ * @property {string} [simple]  what our study found for a 14-year-old (short sentences, everyday words), shown instead of
+ *   `ours` while “Simple words” is on; the same numbers
  */
 
 /** @type {Finding[]} */
@@ -37,6 +39,9 @@ export const FINDINGS = [
       + 'the typical gap, comparing every attention run with every mlp-comm run, was 0.70 m/s for attention, but ten runs of each are too few to rule out '
       + 'anything from attention being 0.30 m/s slower to 1.40 m/s faster (the larger test below has fresh runs of its own, so its middle speeds differ). On the comb they are closer still. Our first five runs of each on the comb (seeds 1-5, where mlp-comm was ahead overall) then went on '
       + 'to twice the evaluations (60,000): attention 3.28 m/s, mlp-comm 3.62 m/s, and still no difference detected.',
+    simple: 'We cannot tell them apart. On the small walker, attention was ahead by about 0.70 m/s, but with ten tries of each brain '
+      + 'that gap could be luck: attention could really be a little slower (0.30 m/s) or much faster (1.40 m/s). On the comb the two were closer still. '
+      + 'Five tries of each then learned on the comb twice as long: attention 3.28 m/s, the brain with messages 3.62 m/s, and still we could not tell them apart.',
     figure: 'validation-comb',
     claim: true,
   },
@@ -64,6 +69,11 @@ export const FINDINGS = [
       + '3.14 m/s on the unseen terrains, faster than searches that had to evolve a plain network (1.22 m/s) or a messaging one (1.96 m/s) along with the body. '
       + 'Against attention evolved from scratch with each body (2.03 m/s) no difference is detected, and that attention was already ahead of the plain network by about half as much '
       + '(a check made after the study, too few searches to be sure): much of the gain is attention itself, not the module. Every search used the same module.',
+    simple: 'Partly. We let the computer invent bodies too, starting from a 3 × 3 box: each search had one kind of brain and 6,000 test walks. '
+      + 'Some searches kept the attention of our best small walker, unchanged: only four numbers, while the rest of the brain still learned for each new body. '
+      + 'They found bodies that walked 3.14 m/s on new ground, faster than searches with a plain brain (1.22 m/s) or a brain whose voxels send messages (1.96 m/s). '
+      + 'But searches whose attention learned from nothing did about as well (2.03 m/s: we could not tell them apart), so much of the gain comes from attention itself, '
+      + 'not from the brain we moved. The 30,100 test walks that made that brain are not counted in the 6,000.',
     figure: 'codesign-unseen',
   },
 ];
@@ -111,7 +121,8 @@ export function fillResults(box, show) {
   list.className = 'findings';
   for (const f of FINDINGS) {
     const item = doc.createElement('li');
-    item.append(add('p', f.question, 'finding-question'), add('p', `The paper: ${f.paper}`), add('p', `Our study: ${f.ours}`));
+    item.append(add('p', f.question, 'finding-question'), add('p', `The paper: ${f.paper}`), add('p', `Our study: ${f.ours}`, f.simple ? 'expert' : ''));
+    if (f.simple) item.append(add('p', `Our study: ${f.simple}`, 'simple-only'));
     if (f.claim) {
       const claim = add('p', 'A larger test of the paper\'s exact claim: reading its state…', 'claim expert');
       claim.dataset.testid = 'claim';
