@@ -212,6 +212,11 @@ test('a teacher\'s review in simple words: the header, the brain\'s words, the s
       ['label:has(#run-budget) > span', 'how many test walks the run may use']]) {
       assert.ok((await seen(page, selector)).includes(words), `${selector}: ${await seen(page, selector)}`);
     }
+    // The plan line under the settings: rounds and test walks, no generations or evaluations.
+    await page.waitForFunction(() => /test walks/.test(document.getElementById('run-plan')?.innerText ?? ''));
+    const plan = await page.locator('#run-plan').innerText();
+    assert.match(plan, /^The run may use [\d,]+ test walks\. First \d+ random brains walk; then come \d+ rounds\./, plan);
+    assert.doesNotMatch(plan, /generation|evaluation|budget/, plan);
     assert.equal(await page.locator('#run-export').innerText(), 'Save this run (a file)');
     assert.equal(await page.locator('#run-csv').innerText(), 'Save the run as a table (for a spreadsheet)');
     assert.equal(await page.locator('#run-workers').isVisible(), false);
@@ -252,6 +257,7 @@ test('a teacher\'s review in simple words: the header, the brain\'s words, the s
     assert.match(await page.locator('#results-plain ol.findings > li:nth-child(5)').innerText(), /the 30,100 that made the module/, 'finding 5 in the expert\'s words back');
     assert.ok((await page.locator('#module option').allTextContents()).some((t) => /^biped-4x3 → biped-6x4 · \d+\.\d\d m\/s average over 10 new terrains$/.test(t)), 'the expert\'s names back');
     assert.match(await page.locator('header > p').innerText(), /GECCO/);
+    assert.match(await page.locator('#run-plan').innerText(), /^A budget of [\d,]+ evaluations: generation 0 measures/, 'the plan in the expert\'s words back');
     assert.deepEqual(problems, []);
     await context.close();
   }

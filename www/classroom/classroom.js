@@ -16,17 +16,7 @@ import { loadQr, qrBox } from './qr.js';
 import { addressField, chapterLink, onlyHere, pageAddress } from './sheet-address.js';
 import { EXAMPLE_CODE } from './challenge/code.js';
 import { withTerms } from '../shared/simple-words.js';
-
-/**
- * @param {Document} doc @param {string} tag @param {string} [className] @param {string} [text]
- * @returns {HTMLElement}
- */
-function make(doc, tag, className, text) {
-  const el = doc.createElement(tag);
-  if (className) el.className = className;
-  if (text !== undefined) el.textContent = text;
-  return el;
-}
+import { make } from '../shared/dom.js';
 
 /** How often a Reveal that had to wait checks whether it still must (ms), and what it says then. */
 const WAIT_CHECK_MS = 500;

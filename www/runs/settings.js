@@ -7,7 +7,7 @@
  * the plan line (and Evolve is off until they are fixed; their message goes once they are).
  */
 import { checkTrainingTerrain, freshSeed } from '../workers/core.js';
-import { byId } from '../shared/dom.js';
+import { byId, make } from '../shared/dom.js';
 import { messageOf } from '../workers/kit.js';
 import { planWords } from './plan.js';
 import { MAX_EVALUATORS } from '../workers/protocol.js';
@@ -85,7 +85,8 @@ export class RunSettings {
       if (ticket !== this.plans) return;
       this.planned = words?.planned ?? NaN;
       this.planChanged();
-      this.plan.textContent = problem ? `Not valid yet: ${problem}. Evolve is off until it is fixed.` : words?.text ?? '';
+      if (problem || !words) this.plan.textContent = problem ? `Not valid yet: ${problem}. Evolve is off until it is fixed.` : '';
+      else this.plan.replaceChildren(make(this.plan.ownerDocument, 'span', 'expert', words.text), make(this.plan.ownerDocument, 'span', 'simple-only', words.simple)); // one of the two shows (Simple words)
       this.plan.dataset.invalid = String(problem !== '');
       if (!problem) this.message('');
       if (this.invalid !== (problem !== '')) { this.invalid = problem !== ''; this.changed(); }

@@ -3,7 +3,8 @@
  * The page's one element lookup: the element with an id, of the kind the code uses it as, or an
  * Error that names what is missing. index.html and the code that wires it can drift apart (an
  * id renamed, an <input> made a <select>); this says so where the element is looked up, not
- * later as "cannot read properties of null" somewhere else.
+ * later as "cannot read properties of null" somewhere else. And its one way to make an element
+ * with a class and a text.
  */
 
 /**
@@ -38,4 +39,16 @@ export function whenNear(el, show, margin = '0px') {
     show();
   }, { rootMargin: `${margin} 0px ${margin} 0px` });
   seen.observe(el);
+}
+
+/**
+ * A new `tag` element of `doc`, with `className` and `text` when given.
+ * @param {Document} doc @param {string} tag @param {string} [className] @param {string} [text]
+ * @returns {HTMLElement}
+ */
+export function make(doc, tag, className, text) {
+  const el = doc.createElement(tag);
+  if (className) el.className = className;
+  if (text !== undefined) el.textContent = text;
+  return el;
 }
