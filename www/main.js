@@ -260,6 +260,7 @@ const playground = {
   module: (key, label, short) => modules.read(key, label, short),
   openModule: (module) => robot.openModule(module),
   loadModule: (module) => robot.loadModule(module),
+  studyAnyBody: () => modules.listed.then(() => modules.studyAnyBody),
   setView(terrain, gait) {
     viewer.terrain.value = terrain;
     viewer.gait.frequency.value = String(gait.frequency);
@@ -279,7 +280,12 @@ const playground = {
   quietModules: (on) => modules.quiet(on),
   message: showMessage,
 };
-const lab = new Lab({ defaults, latestRun: () => ({ ...race.run, running: robot.running }), raceSeconds: () => Number(race.seconds.value) });
+/** The classroom's measure of a brain on the robot walking, the one “Your robot's speed” uses (made when first asked). @type {Measurer | null} */
+let labMeasurer = null;
+const lab = new Lab({ defaults, latestRun: () => ({ ...race.run, running: robot.running }), raceSeconds: () => Number(race.seconds.value),
+  studyAnyBody: () => modules.studyAnyBody,
+  walkingBody: () => ({ rows: robot.walkingRows, terrain: viewer.terrain.value.trim() }),
+  measure: (what) => (labMeasurer ??= new Measurer(defaults.viewNoiseSeed)).measure(what) });
 const study = new StudyPanel(document, playground);
 // The module list's note on a study run's other stops needs the study's tables: read once the note can be seen (or the list is used),
 // watched from when the list is made (while the page fills in, the note passes through the first screen).

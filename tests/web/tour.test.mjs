@@ -17,9 +17,16 @@ import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 import { CHAPTERS } from '../../www/tour/chapters.js';
+import { NOT_YET } from '../../www/shared/families.js';
 import { ROOT, SCREENSHOTS, byTestId, openPage, start, waitForText } from './harness.mjs';
 
 const STORAGE_KEY = 'vsr-playground/state/v1';
+/**
+ * The study's brain for any body in pretrained/ (its run file), as the manifest lists it, or '' while the study trains it: a
+ * chapter with `anyBody` puts it on its body then, else says “not yet” (tour-any-body.test.mjs tests both with a routed manifest).
+ */
+const STUDY_ANY_BODY = (JSON.parse(readFileSync(path.join(ROOT, 'pretrained', 'manifest.json'), 'utf8')).modules ?? [])
+  .filter((/** @type {{controller: string}} */ m) => m.controller === 'attention-any').map((/** @type {{file: string}} */ m) => `pretrained/${m.file}`)[0] ?? '';
 
 /** @type {Awaited<ReturnType<typeof start>>} */ let env;
 
@@ -65,13 +72,19 @@ async function checkSetup(page, n) {
   const { setup, title } = CHAPTERS[n - 1];
   assert.equal(await byTestId(page, 'tour-chapter').textContent(), title);
   const rows = setup.brain?.on === 'own' ? best(setup.brain.module).shape : /** @type {string} */ (setup.rows);
-  const state = await kept(page, rows, setup.terrain, setup.brain !== null);
+  const anyBody = setup.anyBody ? STUDY_ANY_BODY : ''; // the study's brain for any body, on the chapter's body with all its genes
+  const state = await kept(page, rows, setup.terrain, setup.brain !== null || anyBody !== '');
   assert.equal(await page.locator('#rows').inputValue(), rows, `chapter ${n}: the body`);
   assert.equal(await page.locator('#terrain').inputValue(), setup.terrain, `chapter ${n}: the terrain`);
   const voxels = rows.split('').filter((c) => c === '1').length;
-  const controller = setup.brain ? best(setup.brain.module).controller : 'phase gait';
+  const controller = setup.brain ? best(setup.brain.module).controller : anyBody ? 'attention, any body' : 'phase gait';
   await page.waitForFunction((text) => document.getElementById('status')?.textContent === text, `${voxels} voxels, ${controller}`);
-  if (!setup.brain) {
+  if (setup.anyBody && !anyBody) {
+    assert.match(String(await byTestId(page, 'tour-pending').textContent()), new RegExp(`^The study's brain for any body: ${NOT_YET}\\.`), `chapter ${n}: not yet`);
+  }
+  if (anyBody) {
+    assert.deepEqual(genomeOf(String(state.get('genome'))), best(anyBody).genome.map((g) => Math.fround(g)), `chapter ${n}: all the module's genes`);
+  } else if (!setup.brain) {
     assert.equal(state.get('genome'), null, `chapter ${n}: no brain, the phase gait`);
   } else {
     const genome = genomeOf(String(state.get('genome')));

@@ -42,13 +42,13 @@ export class Classroom {
 
   /**
    * Chapter `index`'s task, to go under its text; `revealed` is called once its answer is
-   * shown (the tour then shows what it held back). Null for a chapter without a task.
+   * shown (the tour then shows what it held back). Null for a chapter without a task, or whose task cannot be asked yet.
    * @param {number} index @param {() => void} revealed @returns {HTMLElement | null}
    */
   exercise(index, revealed) {
     const doc = this.doc;
     const ex = exerciseOf(index);
-    if (!ex) return null;
+    if (!ex || ex.unavailable?.(this.lab)) return null;
     const box = make(doc, 'section', 'exercise');
     box.dataset.testid = 'tour-exercise';
     box.dataset.chapter = String(index + 1);
@@ -247,8 +247,10 @@ export class Classroom {
       links.push(link);
       part.append(make(doc, 'h2', '', `Chapter ${i + 1}. ${chapter.title}`), link,
         make(doc, 'p', 'sheet-ask', ex?.ask ?? chapter.task));
-      if (ex) part.append(make(doc, 'p', 'sheet-do', `Do: ${chapter.task}`));
-      if (!ex) {
+      const notYet = ex?.unavailable?.(this.lab) ?? '';
+      if (notYet) part.append(make(doc, 'p', 'sheet-do', `${notYet} Skip this chapter for now.`));
+      else if (ex) part.append(make(doc, 'p', 'sheet-do', `Do: ${chapter.task}`));
+      if (!ex || notYet) {
         // a chapter without a task: its “Do”, and room to write
       } else if (ex.choices) {
         const list = make(doc, 'ul', 'sheet-choices');
@@ -298,7 +300,7 @@ export class Classroom {
     const thead = make(doc, 'thead');
     thead.append(head);
     table.append(thead, body);
-    sheet.append(table, make(doc, 'p', 'sheet-how', 'Chapters 8 to 10 (a transplanted brain, a search for bodies, your own robot) are for another lesson or for home: '
+    sheet.append(table, make(doc, 'p', 'sheet-how', 'Chapters 8 to 11 (a transplanted brain, a search for bodies, your own robot, one brain for every body) are for another lesson or for home: '
       + 'the full worksheet has every chapter\'s link. Two lessons of 45 minutes instead? The answer keys\' sheet and the guide have that plan too.'));
     sheet.scrollIntoView({ block: 'start' });
     return sheet;
@@ -351,6 +353,7 @@ export class Classroom {
       const ex = exerciseOf(i);
       part.append(make(doc, 'h2', '', `Chapter ${i + 1}. ${chapter.title}`), make(doc, 'p', 'sheet-ask', ex?.ask ?? chapter.task));
       if (!ex) key.textContent = 'No task in this chapter: its “Do” above.';
+      else if (ex.unavailable?.(this.lab)) key.textContent = `${ex.unavailable(this.lab)} Its task is not asked yet.`;
       else if (ex.choices) part.append(make(doc, 'p', 'sheet-choices-inline', `Choices: ${ex.choices.join(' · ')}`));
       part.append(key);
       sheet.append(part);
@@ -358,7 +361,7 @@ export class Classroom {
     });
     for (const [i, row] of rows.entries()) {
       const ex = exerciseOf(i);
-      if (!ex) continue;
+      if (!ex || ex.unavailable?.(this.lab)) continue;
       try {
         const key = await ex.key(this.lab);
         row.replaceChildren(make(doc, 'b', '', `Answer: ${key.shown}. `), ...withTerms(doc, key.why));

@@ -9,6 +9,7 @@
  */
 import { CHAPTERS } from '../tour/chapters.js';
 import { count, decimal, plainNumber, size } from '../shared/format.js';
+import { NOT_YET } from '../shared/families.js';
 
 /** A value of an attention matrix beyond ±this counts as "at +1 or −1". */
 export const SATURATED = 0.9;
@@ -30,6 +31,8 @@ export const SATURATED = 0.9;
  * @property {string} [try]          what to do after answering, to see it happen
  * @property {(lab: import('./lab.js').Lab) => string} [wait]  why Reveal must wait (its answer is still being made), or ''
  * @property {boolean} [speedsShown]  its question is not about speeds: the page's speeds are not held back until Reveal
+ * @property {(lab: import('./lab.js').Lab) => string} [unavailable]  why the task cannot be asked now ('' when it can): its module
+ *   is not in pretrained/ yet; then the tour, the worksheet and the keys say so in its place
  * @property {(lab: import('./lab.js').Lab) => object | null} [lock]  what shows the answer now (a run), or null: a guess given before a new one comes is locked (guess-lock.js)
  * @property {(lab: import('./lab.js').Lab) => Promise<Key>} key
  */
@@ -51,6 +54,7 @@ const FREEZE = 'Freeze the attention';
 const TRANSPLANT = 'Transplant a module';
 const BODIES = 'Which body for this brain?';
 const YOURS = 'Your turn';
+const ANY_BODY = 'One brain for every body';
 
 /** @typedef {import('../tour/chapters.js').Chapter['setup']} Setup */
 /** @type {Setup} a chapter that is not there (its task is left out, see EXERCISES) */
@@ -93,6 +97,32 @@ const FREEZE_CHOICES = ['at least half as fast as before', 'between a tenth and 
 /** The freeze's choice a ratio falls in. @param {number} ratio */
 const freezeChoice = (ratio) => (ratio >= 0.5 ? 0 : ratio >= 0.1 ? 1 : 2);
 const TRANSPLANT_CHOICES = thirds('on its own body');
+const ANY_BODY_CHOICES = ['faster than 1 m/s', 'from 0.5 to 1 m/s', 'slower than 0.5 m/s'];
+/** The choice of {@link ANY_BODY_CHOICES} a speed (m/s) falls in. @param {number} speed */
+const anyBodyChoice = (speed) => (speed > 1 ? 0 : speed >= 0.5 ? 1 : 2);
+/** The held-out body set whose figures the chapter on the brain for any body quotes (campaigns/any-body.toml): random bodies. */
+const HELDOUT_RANDOM = 'heldout-random';
+
+/**
+ * What the study measured of its brain for any body on bodies it never trained on (the manifest's `any_body` record,
+ * `vsr campaign export`), in words and in simple words: the median of the bodies' mean speeds and the share of them above
+ * 1 m/s, on the held-out random bodies (else its first held-out set); null when the manifest gives none.
+ * @param {any} record the manifest entry's `any_body`
+ */
+function heldOutWords(record) {
+  const sets = /** @type {{name: string, heldout: boolean, set: string, median: number, walking_share: number, means: number[]}[]} */ (record?.sets ?? []);
+  const set = sets.find((s) => s.heldout && s.name === HELDOUT_RANDOM) ?? sets.find((s) => s.heldout);
+  if (!set || !Number.isFinite(set.median)) return null;
+  const n = set.means.length;
+  const above = Math.round(set.walking_share * n);
+  const bodies = set.name === HELDOUT_RANDOM ? `${count(n)} random bodies` : `the ${count(n)} bodies of the set ${set.name}`;
+  return {
+    words: `The study walked it on ${bodies} it never trained on, each on its ${set.set} terrains: the median of those bodies' mean speeds is `
+      + `${ms(set.median)}, and ${count(above)} of the ${count(n)} (${Math.round(100 * set.walking_share)}%) averaged more than 1 m/s.`,
+    simple: `The study tried it on ${bodies} it never saw. The middle speed of those bodies was ${ms(set.median)}. `
+      + `${count(above)} of the ${count(n)} walked faster than 1 m/s.`,
+  };
+}
 
 /** Rows with column `col` (0-based from the left) erased. @param {string} rows @param {number} col */
 const erase = (rows, col) => rows.split('-').map((r) => `${r.slice(0, col)}0${r.slice(col + 1)}`).join('-');
@@ -299,6 +329,31 @@ export const TASKS = [
       return { answer, shown: `${['faster', 'slower'][answer]}: ${ms(mine.speed)} against ${ms(biped.speed)}`,
         why: `The page just walked both with the phase gait (${clock({ gait })}) for ${seconds} s on ${terrain}: this robot ${ms(mine.speed)}, the biped ${ms(biped.speed)}. `
           + 'The same clock moves different bodies differently: that is why evolution tunes a brain for one body.' };
+    },
+  },
+  {
+    chapter: ANY_BODY,
+    ask: 'This brain was trained on other bodies, never on yours. Walked on the body you keep or draw, how fast will it go?',
+    simple: 'This brain learned on other bodies. It never saw yours. How fast will it walk on the body you keep or draw?',
+    choices: ANY_BODY_CHOICES,
+    try: 'Draw another body (the brain keeps walking as you draw) and read “Your robot\'s speed” under the robot.',
+    unavailable: (lab) => (lab.studyAnyBody() ? '' : `The study's brain for any body: ${NOT_YET}.`),
+    async key(lab) {
+      const key = lab.studyAnyBody();
+      if (!key) throw new Error(`the study's brain for any body: ${NOT_YET}`);
+      const [module, entry] = await Promise.all([lab.module(key), lab.manifestEntry(key)]);
+      const { rows, terrain } = lab.walkingBody();
+      const seconds = module.seconds;
+      const speed = await lab.measure({ rows, controller: module.controller, genome: module.genome, terrain, seconds });
+      const answer = anyBodyChoice(speed);
+      const study = heldOutWords(entry?.any_body);
+      return { answer, shown: `${ANY_BODY_CHOICES[answer]}: ${ms(speed)} on your body (${rows}, ${voxels(rows)} voxels)`,
+        why: `The page just walked the study's brain for any body, all its genes as trained, on your body for ${seconds} s on ${terrain}, `
+          + `as “Your robot's speed” under the robot measures it: ${ms(speed)}. `
+          + (study?.words ?? 'The manifest gives no figure of the study\'s for bodies it never trained on.')
+          + ' Your body is one body: another may walk faster or slower.',
+        simpleWhy: `The page just walked this brain on your body for ${seconds} s: ${ms(speed)}. Nothing was changed for your body. `
+          + `${study ? `${study.simple} ` : ''}Your body is one try: another body may walk faster or slower.` };
     },
   },
 ];

@@ -3,8 +3,8 @@
  * What a task's answer key may compute (exercises.js), each number run by the page or read
  * from a committed file at the moment it is asked: walks in the lab worker (lab-worker.js: the
  * core's own episode), the core's checks and transplant (workers/core.js), the committed run files
- * (pretrained/, study/), and the page's latest run (its best of every generation, kept by the
- * race).
+ * (pretrained/, study/), the page's latest run (its best of every generation, kept by the
+ * race), and a brain measured on the robot walking now, as “Your robot's speed” measures it (robot/measure.js).
  */
 import { checkShape, describeRun, runGenome, transplant } from '../workers/core.js';
 import { fetchOk, requester } from '../workers/kit.js';
@@ -14,11 +14,18 @@ const ask = requester('classroom/lab-worker.js', 'the classroom\'s measuring wor
 /** @typedef {import('./lab-worker.js').Walk} Walk */
 /** @typedef {{generation: number, fitness: number, evaluations?: number}} GenerationBest */
 /** @typedef {{bests: GenerationBest[], shape: string, controller: string, mode: string, running: boolean}} LatestRun  the page's latest run (viewer/race.js keeps it) and whether it is still going */
+/**
+ * @typedef {object} LabPage  what the lab asks the page (main.js)
+ * @property {import('../workers/core.js').Defaults} defaults
+ * @property {() => LatestRun} latestRun
+ * @property {() => number} raceSeconds
+ * @property {() => string} studyAnyBody  the study's brain for any body in pretrained/: its key ('' while the study trains it)
+ * @property {() => {rows: string, terrain: string}} walkingBody  the body the viewer walks now, and the viewer's terrain
+ * @property {(what: import('../robot/measure.js').Measured) => Promise<number>} measure  a brain's speed, measured as “Your robot's speed” is
+ */
 
 export class Lab {
-  /**
-   * @param {{defaults: import('../workers/core.js').Defaults, latestRun: () => LatestRun, raceSeconds: () => number}} page
-   */
+  /** @param {LabPage} page */
   constructor(page) {
     this.page = page;
     this.defaults = page.defaults;
@@ -77,4 +84,22 @@ export class Lab {
 
   /** How long the race lasts (s), as its form says. */
   raceSeconds() { return this.page.raceSeconds(); }
+
+  /** The study's brain for any body in pretrained/: its key, '' while the study still trains it. */
+  studyAnyBody() { return this.page.studyAnyBody(); }
+
+  /** The manifest's entry of the pretrained module `key` (its `any_body` figures among them), or null. @param {string} key */
+  async manifestEntry(key) {
+    const manifest = JSON.parse(await this.file('pretrained/manifest.json'));
+    return (manifest.modules ?? []).find((/** @type {{file: string}} */ m) => `pretrained/${m.file}` === key) ?? null;
+  }
+
+  /** The body the viewer walks now, and the viewer's terrain. */
+  walkingBody() { return this.page.walkingBody(); }
+
+  /**
+   * A brain's speed on a body, measured as the page measures “Your robot's speed” under the robot (the viewer's sensor noise).
+   * @param {import('../robot/measure.js').Measured} what
+   */
+  measure(what) { return this.page.measure(what); }
 }

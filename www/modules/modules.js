@@ -13,14 +13,14 @@ import { keepModules, loadKeptModules } from '../keep/storage.js';
 import { LIST_SPEED_SIMPLE, SPEED_MARK, bodyWords, brainWords, shortLabel, simpleLabel, unseenWords } from './names.js';
 import { lineageNote } from './lineage.js';
 import { count, decimal } from '../shared/format.js';
-import { familyName, isAnyBody } from '../shared/families.js';
+import { NOT_YET, familyName, isAnyBody } from '../shared/families.js';
 
 /** Where the served pretrained run files are (scripts/serve.mjs mounts pretrained/). */
 const PRETRAINED_DIR = 'pretrained/';
 /** The list's group of brains for any body (one genome drives every body). */
 export const ANY_BODY_GROUP = 'one brain for any body';
 /** The study's brain for any body, while pretrained/ has none: said in the list and under the family menu. */
-export const NOT_YET = 'not yet: the study is still training it';
+export { NOT_YET };
 /** The list's stand-in for the study's brain for any body until its manifest lists one (never chosen: disabled). */
 const PENDING = 'pending:attention-any';
 /** What the list and its details say in place of speeds while {@link ModuleList.quiet}. */

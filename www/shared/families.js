@@ -18,6 +18,13 @@ export const FAMILY_NAMES = Object.freeze({
   'mlp-comm-any': 'MLP-Comm, any body',
 });
 
+/**
+ * What the page says of the study's brain for any body (attention, trained on many bodies) while
+ * pretrained/ has none: the module list, the note under the family menu and the tour's chapter
+ * about it say it in these words.
+ */
+export const NOT_YET = 'not yet: the study is still training it';
+
 /** Families whose one genome drives every body (`ControllerKind::is_body_independent`). */
 const ANY_BODY = new Set(['attention-any', 'mlp-any', 'mlp-comm-any']);
 /** Families with the paper's attention block first in their genome (`ControllerKind::has_attention`). */

@@ -10,6 +10,8 @@
  * - terrain: the viewer's terrain; gait: the phase gait if not the page's default; run: the run settings (and `compare`: run from scratch after
  *   fine-tuning); controller: the family Evolve uses; race: the modules racing side by side;
  * - codesign: the body search's brain (frozen, finetune, scratch) and start body (box, drawing, module);
+ * - anyBody: the study's brain for any body goes onto `rows` with all its genes, once pretrained/ has one; until then
+ *   the chapter says it is not there yet (`pending`), its task is not offered, and the body walks on the phase gait;
  * - target: the control the visitor is asked to use (scrolled to and outlined);
  * - figure: a study figure shown beside the chapter (figures.js).
  *
@@ -21,6 +23,10 @@ import { RUN_TIME } from '../runs/time.js';
 const BIPED = '1111-1111-1001';
 const BIPED_LARGE = '111111-111111-100011-100011';
 const TABLE = '11111-10101';
+/** The last chapter's body: a taller table, none of the bodies the brain for any body was trained on. */
+const TALL_TABLE = '11111-11111-10101';
+/** How many bodies the study's brain for any body was trained on (campaigns/any-body.toml, its group any-train32). */
+const TRAINING_BODIES = 32;
 const ATTENTION = 'pretrained/biped-4x3-attention.json';
 const QUICK = { population: '20', seconds: '10', budget: '2000', seed: '1', terrain: 'hilly-1-10' };
 const VIEW = 'hilly-1-10-0';
@@ -39,11 +45,13 @@ const voxels = (rows) => rows.split('').filter((c) => c === '1').length;
  * @property {string} notice      what to notice
  * @property {{rows: string | null, brain: {module: string, on: 'own' | 'drawn'} | null, terrain: string,
  *   gait?: {frequency: number, phase: number}, run?: Record<string, string>, compare?: boolean, controller?: string, race?: string[],
- *   codesign?: {brain: string, from: string}}} setup
+ *   codesign?: {brain: string, from: string}, anyBody?: boolean}} setup
  * @property {string} target      CSS selector of the control the task is about
  * @property {string} [figure]    a study figure's id (figures.js)
- * @property {{text: string[], task: string, notice: string}} [simple]  the same facts for a 14-year-old: short sentences,
- *   everyday words, shown instead of text, task and notice while “Simple words” is on (tour.js)
+ * @property {{text: string[], task: string, notice: string, pending?: string}} [simple]  the same facts for a 14-year-old: short
+ *   sentences, everyday words, shown instead of text, task and notice while “Simple words” is on (tour.js)
+ * @property {string} [pending]   for a chapter whose brain the study has not finished (`setup.anyBody`): what to do meanwhile,
+ *   said after “not yet: the study is still training it” in place of the task and the notice (tour.js)
  */
 
 /** @type {Chapter[]} */
@@ -197,5 +205,33 @@ export const CHAPTERS = [
     notice: 'This tour has a link for every chapter too (the address bar shows it), to send one chapter to a class.',
     setup: { rows: TABLE, brain: null, terrain: VIEW, run: QUICK, controller: 'attention' },
     target: '#share',
+  },
+  {
+    title: 'One brain for every body',
+    text: [
+      'Every brain so far had genes tied to each voxel, to its place in one body: a new drawing had to wait for evolution before it walked well.',
+      'This brain\'s genes are the same for every voxel, whatever the body. Each voxel runs the same network on its four readings, with the paper\'s attention, '
+        + 'and also feels which of its four neighbours are there.',
+      `It was trained on ${TRAINING_BODIES} random bodies at once, never on yours. As before, no voxel sends messages to another.`,
+    ],
+    task: 'Keep this body, or draw your own on the grid of “1 · Draw”: the brain walks on it at once. Answer the question, then press Reveal: the page walks this brain on the body you drew.',
+    notice: 'Nothing was drawn at random for your body: every gene is the one training found. The answer puts your body\'s speed beside the study\'s figures for bodies this brain never trained on: '
+      + 'the median of their speeds, and the share of them above 1 m/s. One body is one sample: draw another and read “Your robot\'s speed” under the robot.',
+    pending: 'Until it is, this chapter has no brain to walk: its body walks on the phase gait. Evolve can train a brain of the same kind on your drawing '
+      + '(choose “attention, any body” in “Brain (controller)”, under “3 · Give it a brain”).',
+    setup: { rows: TALL_TABLE, brain: null, anyBody: true, terrain: VIEW },
+    target: '#scene, #editor',
+    simple: {
+      text: [
+        'Until now, every brain had numbers (genes) that belong to the voxels of one body. A new body had to wait for evolution before it could walk well.',
+        'This brain is different. Every voxel uses the very same numbers, on any body. Each voxel feels the same four things as before. It also feels which of its four sides touch another voxel.',
+        `It learned on ${TRAINING_BODIES} random bodies. It never saw yours. The voxels do not send messages to each other.`,
+      ],
+      task: 'Keep this body or draw your own. The brain walks on it at once. Choose your answer, then press Reveal. The page walks this brain on your body.',
+      notice: 'Nothing was changed for your body: every number is the one training found. The answer shows your body\'s speed next to what the study found on many bodies this brain never saw: '
+        + 'the middle speed, and how many of them were faster than 1 m/s. One body is one try: draw another and read “Your robot\'s speed” under the robot.',
+      pending: 'Until then, there is no brain to try here: the body moves on the clock. You can train a brain like it on your own drawing with Evolve '
+        + '(choose “attention, any body” in “Brain (controller)”, under “3 · Give it a brain”).',
+    },
   },
 ];

@@ -3,7 +3,8 @@
  * Sets the playground up as a chapter says (chapters.js), with the page's own functions
  * (main.js hands them over as a {@link Playground}; nothing here simulates, transplants or
  * draws): stops a run under way, sets the terrain, the phase gait, the run settings, the body
- * and its brain, the race and the body search's brain; then waits until the viewer walks exactly that robot.
+ * and its brain (the study's brain for any body, when the chapter asks for it and pretrained/ has it), the race and the
+ * body search's brain; then waits until the viewer walks exactly that robot.
  */
 import { messageOf } from '../workers/kit.js';
 
@@ -20,6 +21,8 @@ const WALK_TIMEOUT_MS = 10_000;
  *   chooses a module (one not listed yet is added under `label`, shown as `short`: modules/modules.js, read)
  * @property {(module: import('../modules/modules.js').Module) => Promise<void>} openModule   on its own body
  * @property {(module: import('../modules/modules.js').Module) => Promise<void>} loadModule   onto the drawn body
+ * @property {() => Promise<string>} studyAnyBody  the study's brain for any body: its key once pretrained/ is listed ('' while
+ *   the study still trains it)
  * @property {(terrain: string, gait: {frequency: number, phase: number}) => void} setView
  * @property {(values: Record<string, string>, compare: boolean) => void} setRun
  * @property {(kind: string) => Promise<unknown>} setController
@@ -47,6 +50,8 @@ export async function stage(page, chapter) {
   if (setup.controller) await page.setController(setup.controller);
   if (brain && setup.brain?.on === 'own') await page.openModule(brain);
   if (brain && setup.brain?.on === 'drawn') await page.loadModule(brain);
+  const anyBody = setup.anyBody ? await page.studyAnyBody() : '';
+  if (anyBody) await page.loadModule(await page.module(anyBody));
   if (setup.race) await race(page, setup.race);
   if (setup.codesign) page.setCodesign(setup.codesign);
   await walking(page);

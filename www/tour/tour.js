@@ -9,6 +9,7 @@
  */
 import { withStats } from '../shared/simple-words.js';
 import { byId } from '../shared/dom.js';
+import { NOT_YET } from '../shared/families.js';
 import { messageOf } from '../workers/kit.js';
 import { CHAPTERS } from './chapters.js';
 import { FIGURES, figureSrc } from './figures.js';
@@ -114,7 +115,10 @@ export class Tour {
     const started = performance.now();
     const ticket = ++this.opening;
     this.index = index;
-    this.show(CHAPTERS[index]);
+    // A chapter about the study's brain for any body first learns whether pretrained/ has it (the module list says).
+    const pending = CHAPTERS[index].setup.anyBody ? (await this.page.studyAnyBody()) === '' : false;
+    if (ticket !== this.opening) return;
+    this.show(CHAPTERS[index], pending);
     this.box.dataset.state = 'setting';
     this.page.race.hold(this.raceHeld);
     this.page.holdAtEpisodeEnd(true);
@@ -135,8 +139,11 @@ export class Tour {
     }
   }
 
-  /** Shows a chapter's words. @param {import('./chapters.js').Chapter} chapter */
-  show(chapter) {
+  /**
+   * Shows a chapter's words; a `pending` one (its brain not trained yet) says so in place of its task and notice, and asks nothing.
+   * @param {import('./chapters.js').Chapter} chapter @param {boolean} [pending]
+   */
+  show(chapter, pending = false) {
     const doc = this.doc;
     const i = this.index;
     this.box.hidden = false;
@@ -148,13 +155,33 @@ export class Tour {
     this.fold(false);
     body.scrollTop = 0;
     const { simple } = chapter; // its words for a 14-year-old, shown instead while “Simple words” is on (classroom.css)
-    const notice = paragraph(doc, chapter.notice, 'Notice', 'tour-notice', simple?.notice);
-    const figure = chapter.figure ? this.figure(chapter.figure) : null;
     // A chapter with a question holds back what would answer it (its notice, its figure, its
     // race) until the answer is revealed.
-    const held = figure ? [notice, figure] : [notice];
+    const notice = paragraph(doc, chapter.notice, 'Notice', 'tour-notice', simple?.notice);
+    const figure = chapter.figure ? this.figure(chapter.figure) : null;
     body.replaceChildren(...chapter.text.map((t) => paragraph(doc, t, undefined, simple ? 'expert' : undefined)),
       ...(simple?.text ?? []).map((t) => paragraph(doc, t, undefined, 'simple-only')));
+    if (pending) {
+      // No module, no number: nothing to predict or to hold back.
+      const words = (/** @type {string | undefined} */ then) => `The study's brain for any body: ${NOT_YET}. ${then ?? ''}`.trim();
+      const p = paragraph(doc, words(chapter.pending), undefined, 'tour-pending', simple ? words(simple.pending) : undefined);
+      p.dataset.testid = 'tour-pending';
+      body.append(p);
+      this.holdAnswers(false, false);
+      this.raceHeld = false;
+    } else this.showTask(chapter, notice, figure);
+    this.nav(i);
+  }
+
+  /**
+   * Shows a chapter's task: its question first when it has one (the notice and the figure held back until the answer is revealed).
+   * @param {import('./chapters.js').Chapter} chapter @param {HTMLElement} notice @param {HTMLElement | null} figure
+   */
+  showTask(chapter, notice, figure) {
+    const doc = this.doc;
+    const i = this.index;
+    const body = byId(doc, 'tour-body');
+    const held = figure ? [notice, figure] : [notice];
     const task = this.classroom?.exercise(i, () => {
       for (const el of held) el.hidden = false;
       if (this.index === i) this.holdAnswers(false);
@@ -164,7 +191,12 @@ export class Tour {
     this.holdAnswers(Boolean(task) && !this.classroom?.speedsShown(i), false);
     this.raceHeld = Boolean(task && chapter.setup.race);
     if (task) body.append(task);
-    body.append(paragraph(doc, chapter.task, 'Do', 'tour-task', simple?.task), ...held);
+    body.append(paragraph(doc, chapter.task, 'Do', 'tour-task', chapter.simple?.task), ...held);
+  }
+
+  /** Back, Next, the address and the chapter's link, for chapter `i` (0-based). @param {number} i */
+  nav(i) {
+    const doc = this.doc;
     byId(doc, 'tour-back', HTMLButtonElement).disabled = i === 0;
     const next = byId(doc, 'tour-next', HTMLButtonElement);
     next.disabled = i === CHAPTERS.length - 1;
