@@ -213,8 +213,10 @@ test('a brain for any body in the manifest is listed with the modules, loads ont
   const { page, problems } = await openBare(env.browser, 'about:blank', { width: 1400, height: 1100 });
   // The study's manifest with one more module, as `vsr campaign export` would list a brain for any body; its file the one made above.
   const manifest = JSON.parse(await readFile(path.join(ROOT, 'pretrained', 'manifest.json'), 'utf8'));
+  // Its any_body record names the plan's primary group, as the export writes it (no body set's figures: the list shows no speed).
   manifest.modules.push({ file: path.basename(MADE_KEY), shape: 'train-32', rows: made.run.best.shape, controller: 'attention-any', bodies: 32,
-    seed: 1, budget: 20, evaluations: 20, training_best: made.run.best.fitness });
+    seed: 1, budget: 20, evaluations: 20, training_best: made.run.best.fitness,
+    any_body: { group: 'any-train32', training_set: 'bodies/train-32.txt', per_evaluation: 2, chosen_by: 'this test', sets: [] } });
   await page.route('**/pretrained/manifest.json', (route) => route.fulfill({ json: manifest }));
   await page.route(`**/${MADE_KEY}`, (route) => route.fulfill({ body: made.text, contentType: 'application/json' }));
   await page.goto(env.url);

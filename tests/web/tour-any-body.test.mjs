@@ -125,7 +125,7 @@ test('with the study\'s brain for any body: predict, draw, then Reveal walks it 
   const manifest = await manifestWithout();
   manifest.modules.push({ file: path.basename(MADE_KEY), shape: 'train-32', rows: made.run.best.shape, controller: 'attention-any', bodies: 32,
     seed: 1, budget: 20, evaluations: 20, training_best: made.run.best.fitness,
-    any_body: { group: 'any-test', training_set: 'bodies/train-32.txt', per_evaluation: 2, chosen_by: 'this test', sets: [HELDOUT] } });
+    any_body: { group: 'any-train32', training_set: 'bodies/train-32.txt', per_evaluation: 2, chosen_by: 'this test', sets: [HELDOUT] } });
   await page.route('**/pretrained/manifest.json', (route) => route.fulfill({ json: manifest }));
   await page.route(`**/${MADE_KEY}`, (route) => route.fulfill({ body: made.text, contentType: 'application/json' }));
   await page.goto(`${env.url}?chapter=${N}`);
@@ -169,6 +169,10 @@ test('with the study\'s brain for any body: predict, draw, then Reveal walks it 
   const note = Number(await page.locator('#speed-note').getAttribute('data-value'));
   assert.equal(note.toFixed(2), speed.toFixed(2), `“Your robot's speed” (${note}) is the answer's`);
   assert.match(String(await page.locator('#speed-note').textContent()), new RegExp(`^Your robot's speed: ${speed.toFixed(2)} m/s`));
+  // The module list names it with the same held-out median (it has no one body: no mean over the unseen terrains).
+  const option = page.locator(`#module option[value="${MADE_KEY}"]`);
+  assert.equal(await option.textContent(), 'attention, any body, trained on 32 bodies · 1.10 m/s median on new bodies');
+  assert.match(String(await option.getAttribute('title')), /a median of 1\.10 m\/s over 4 bodies it never trained on \(each body's mean on its unseen terrains\), 2 of the 4 above 1 m\/s\)$/);
   await shoot(page, 'tour-any-body-revealed', 'tour-answer');
   assert.deepEqual(problems, []);
   await page.context().close();

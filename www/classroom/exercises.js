@@ -10,6 +10,7 @@
 import { CHAPTERS } from '../tour/chapters.js';
 import { count, decimal, plainNumber, size } from '../shared/format.js';
 import { NOT_YET } from '../shared/families.js';
+import { HELDOUT_RANDOM, heldOut } from '../shared/held-out.js';
 
 /** A value of an attention matrix beyond ±this counts as "at +1 or −1". */
 export const SATURATED = 0.9;
@@ -100,25 +101,19 @@ const TRANSPLANT_CHOICES = thirds('on its own body');
 const ANY_BODY_CHOICES = ['faster than 1 m/s', 'from 0.5 to 1 m/s', 'slower than 0.5 m/s'];
 /** The choice of {@link ANY_BODY_CHOICES} a speed (m/s) falls in. @param {number} speed */
 const anyBodyChoice = (speed) => (speed > 1 ? 0 : speed >= 0.5 ? 1 : 2);
-/** The held-out body set whose figures the chapter on the brain for any body quotes (campaigns/any-body.toml): random bodies. */
-const HELDOUT_RANDOM = 'heldout-random';
-
 /**
- * What the study measured of its brain for any body on bodies it never trained on (the manifest's `any_body` record,
- * `vsr campaign export`), in words and in simple words: the median of the bodies' mean speeds and the share of them above
- * 1 m/s, on the held-out random bodies (else its first held-out set); null when the manifest gives none.
+ * What the study measured of its brain for any body on bodies it never trained on (shared/held-out.js), in words and in
+ * simple words: the median of the bodies' mean speeds and the share of them above 1 m/s; null when the manifest gives none.
  * @param {any} record the manifest entry's `any_body`
  */
 function heldOutWords(record) {
-  const sets = /** @type {{name: string, heldout: boolean, set: string, median: number, walking_share: number, means: number[]}[]} */ (record?.sets ?? []);
-  const set = sets.find((s) => s.heldout && s.name === HELDOUT_RANDOM) ?? sets.find((s) => s.heldout);
-  if (!set || !Number.isFinite(set.median)) return null;
-  const n = set.means.length;
-  const above = Math.round(set.walking_share * n);
+  const set = heldOut(record);
+  if (!set) return null;
+  const { bodies: n, above } = set;
   const bodies = set.name === HELDOUT_RANDOM ? `${count(n)} random bodies` : `the ${count(n)} bodies of the set ${set.name}`;
   return {
-    words: `The study walked it on ${bodies} it never trained on, each on its ${set.set} terrains: the median of those bodies' mean speeds is `
-      + `${ms(set.median)}, and ${count(above)} of the ${count(n)} (${Math.round(100 * set.walking_share)}%) averaged more than 1 m/s.`,
+    words: `The study walked it on ${bodies} it never trained on, each on its ${set.terrains} terrains: the median of those bodies' mean speeds is `
+      + `${ms(set.median)}, and ${count(above)} of the ${count(n)} (${Math.round(100 * set.share)}%) averaged more than 1 m/s.`,
     simple: `The study tried it on ${bodies} it never saw. The middle speed of those bodies was ${ms(set.median)}. `
       + `${count(above)} of the ${count(n)} walked faster than 1 m/s.`,
   };

@@ -10,10 +10,11 @@ import { describeRun } from '../workers/core.js';
 import { byId } from '../shared/dom.js';
 import { fetchOk, messageOf } from '../workers/kit.js';
 import { keepModules, loadKeptModules } from '../keep/storage.js';
-import { LIST_SPEED_SIMPLE, SPEED_MARK, bodyWords, brainWords, shortLabel, simpleLabel, unseenWords } from './names.js';
+import { HELDOUT_SHORT, HELDOUT_SIMPLE, LIST_SPEED_SIMPLE, SPEED_MARK, bodyWords, brainWords, heldOutLong, shortLabel, simpleLabel, unseenWords } from './names.js';
 import { lineageNote } from './lineage.js';
 import { count, decimal } from '../shared/format.js';
 import { NOT_YET, familyName, isAnyBody } from '../shared/families.js';
+import { heldOut, isStudyAnyBody } from '../shared/held-out.js';
 
 /** Where the served pretrained run files are (scripts/serve.mjs mounts pretrained/). */
 const PRETRAINED_DIR = 'pretrained/';
@@ -130,15 +131,18 @@ export class ModuleList {
    * @param {any} m the manifest's entry
    */
   listAnyBody(m) {
-    const mean = Number(m.validation?.unseen?.mean);
-    const speed = Number.isFinite(mean) ? `, ${unseenWords(mean)}` : '';
+    // Its speed: the median over the held-out bodies the study walked it on (it has no one body, so no `validation`).
+    const set = heldOut(m.any_body);
+    const median = set ? set.median : NaN;
+    const speed = set ? `, ${heldOutLong(set)}` : '';
     const on = Number.isInteger(m.bodies) ? `${m.bodies} bodies at once` : `the bodies of ${m.shape}`;
     const name = familyName(m.controller);
     const label = `a brain for any body (${name}), trained on ${on} (evolved with a budget of ${count(m.budget ?? m.evaluations)} evaluations${speed})`;
     const key = PRETRAINED_DIR + m.file;
-    this.list(key, label, shortLabel(`${name}, trained on ${Number.isInteger(m.bodies) ? `${m.bodies} bodies` : m.shape}`, mean), ANY_BODY_GROUP, mean,
-      shortLabel(`one brain for any body, trained on ${Number.isInteger(m.bodies) ? `${m.bodies} bodies` : m.shape}`, mean, ` ${LIST_SPEED_SIMPLE}`).replace(SPEED_MARK, ': '));
-    if (m.controller === 'attention-any' && !this.studyAnyBody) this.studyAnyBody = key;
+    const trained = Number.isInteger(m.bodies) ? `${m.bodies} bodies` : m.shape;
+    this.list(key, label, shortLabel(`${name}, trained on ${trained}`, median, ` ${HELDOUT_SHORT}`), ANY_BODY_GROUP, median,
+      shortLabel(`one brain for any body, trained on ${trained}`, median, ` ${HELDOUT_SIMPLE}`).replace(SPEED_MARK, ': '));
+    if (isStudyAnyBody(m) && !this.studyAnyBody) this.studyAnyBody = key;
   }
 
   /** The study's brain for any body is not in pretrained/ yet: the list says so, in its place (it cannot be chosen). */

@@ -70,6 +70,19 @@ const BODY_SIMPLE = {
 const BRAIN_SIMPLE = { attention: 'an attention brain', mlp: 'a plain brain', 'mlp-comm': 'a brain whose voxels send messages' };
 /** The list's speed in simple words: the mean over the study's ten unseen terrains. */
 export const LIST_SPEED_SIMPLE = 'on new ground';
+/** Which measurement a brain for any body's list speed is: the median over held-out bodies (shared/held-out.js). */
+export const HELDOUT_SHORT = 'median on new bodies';
+/** The same in simple words. */
+export const HELDOUT_SIMPLE = 'on new bodies (the middle one)';
+
+/**
+ * A brain for any body's speed on the bodies it never trained on, in the module list's details.
+ * @param {import('../shared/held-out.js').HeldOut} set
+ */
+export function heldOutLong(set) {
+  return `a median of ${decimal(set.median)} m/s over ${set.bodies} bodies it never trained on (each body's mean on its ${set.terrains} terrains), `
+    + `${set.above} of the ${set.bodies} above 1 m/s`;
+}
 
 /** A body's name in everyday words (its own name when it has none). @param {string} shape */
 export function bodySimple(shape) {

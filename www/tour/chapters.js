@@ -19,14 +19,15 @@
  */
 import { count, plainNumber, size } from '../shared/format.js';
 import { RUN_TIME } from '../runs/time.js';
+import { STUDY_ANY_BODY } from '../shared/held-out.js';
 
 const BIPED = '1111-1111-1001';
 const BIPED_LARGE = '111111-111111-100011-100011';
 const TABLE = '11111-10101';
 /** The last chapter's body: a taller table, none of the bodies the brain for any body was trained on. */
 const TALL_TABLE = '11111-11111-10101';
-/** How many bodies the study's brain for any body was trained on (campaigns/any-body.toml, its group any-train32). */
-const TRAINING_BODIES = 32;
+/** How many bodies the study's brain for any body was trained on (shared/held-out.js: its group of campaigns/any-body.toml). */
+const TRAINING_BODIES = STUDY_ANY_BODY.bodies;
 const ATTENTION = 'pretrained/biped-4x3-attention.json';
 const QUICK = { population: '20', seconds: '10', budget: '2000', seed: '1', terrain: 'hilly-1-10' };
 const VIEW = 'hilly-1-10-0';
