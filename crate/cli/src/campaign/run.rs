@@ -63,6 +63,7 @@ pub fn run(args: Args) -> Result<()> {
         );
     }
     let jobs = args.only.plan(&campaign, &out)?;
+    super::target::check_modules(&campaign)?;
     create_folders(&out, &jobs)?;
     let program = std::env::current_exe()
         .map_err(|e| Error::Io(format!("cannot find the vsr binary: {e}")))?;

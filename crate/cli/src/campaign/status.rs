@@ -41,6 +41,10 @@ pub fn run(args: Args) -> Result<()> {
         None => std::thread::available_parallelism().map_or(1, |n| n.get()),
     };
     say!("{}", status(&jobs, cores).trim_end_matches('\n'));
+    // A module made elsewhere (`[[from_module]]`): what makes it, before its runs can start.
+    if let Err(why) = super::target::check_modules(&campaign) {
+        say!("not ready: {why}");
+    }
     Ok(())
 }
 

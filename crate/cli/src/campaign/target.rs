@@ -151,6 +151,7 @@ pub fn load_results(campaign: Campaign, out: &Path) -> Result<Results> {
             }
         }
     }
+    load_from_module(&mut results, out)?;
     for i in 0..results.codesign.len() {
         let spec = results.codesign[i].0.clone();
         let path = spec.run_path(out);
@@ -168,6 +169,63 @@ pub fn load_results(campaign: Campaign, out: &Path) -> Result<Results> {
         }
     }
     Ok(results)
+}
+
+/// The `[[from_module]]` groups' runs, their modules and the runs of their compared
+/// campaigns that exist (read from each compared campaign's own output folder).
+fn load_from_module(results: &mut Results, out: &Path) -> Result<()> {
+    for (spec, data) in &mut results.from_module {
+        data.run = read_json(&spec.run_path(out), RunFile::from_json)?;
+        for set in ValidationSet::ALL {
+            if let Some(v) = read_json(&spec.validation_path(out, set), json)? {
+                data.validation.insert(set, v);
+            }
+        }
+    }
+    for g in results.campaign.from_module.clone() {
+        if let Some(module) = read_json(Path::new(&g.module), RunFile::from_json)? {
+            results.modules.insert(g.name.clone(), module);
+        }
+        for set in ValidationSet::ALL {
+            let Some(path) = g.one_shot_path(out, set) else {
+                break;
+            };
+            if let Some(v) = read_json(&path, json)? {
+                results.one_shot.insert((g.name.clone(), set), v);
+            }
+        }
+        let Some(compare) = &g.compare else {
+            continue;
+        };
+        let target = Target {
+            file: PathBuf::from(compare),
+            out_dir: None,
+        };
+        let (compared, compared_out) = target.load()?;
+        for (group, spec) in vsr_study::campaign::from_module::compared_runs(&compared, &g.shapes) {
+            let run = read_json(&spec.run_path(&compared_out), RunFile::from_json)?;
+            let mut data = vsr_study::campaign::RunData::default();
+            for set in ValidationSet::ALL {
+                let path = spec.validation_path(&compared_out, set);
+                if let Some(v) = read_json(&path, json)? {
+                    data.validation.insert(set, v);
+                }
+            }
+            data.run = run;
+            results.compared.push((g.name.clone(), group, spec, data));
+        }
+    }
+    Ok(())
+}
+
+/// Checks every `[[from_module]]` group's module before any job runs: it exists (else what
+/// makes it) and its controller can be fine-tuned as planned.
+pub fn check_modules(campaign: &Campaign) -> Result<()> {
+    for g in &campaign.from_module {
+        let module = read_json(Path::new(&g.module), RunFile::from_json)?;
+        g.check_module(module.as_ref())?;
+    }
+    Ok(())
 }
 
 /// Whether a body search's run file is the finished run its name plans: its brain,

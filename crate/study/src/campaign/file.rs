@@ -33,6 +33,13 @@
 //! evals = 10000
 //! scratch_evals = 30000          # from-scratch runs on each target shape, for comparison
 //!
+//! [[from_module]]                # a module file fine-tuned on shapes (`from_module`)
+//! name = "ft-any-train32"
+//! module = "../pretrained/any-train32-attention-any.json"
+//! controller = "attention-any"
+//! shapes = ["biped-4x3", "comb-7x2"]
+//! evals = 2500
+//!
 //! [[fidelity]]                   # the simulator against the reference's gait ensembles
 //! reference = "../tests/fixtures/gaits-comb-flat.json"   # relative to the campaign file
 //! ```
@@ -84,6 +91,9 @@ pub struct Campaign {
     /// Body searches (`vsr codesign`).
     #[serde(default)]
     pub codesign: Vec<super::codesign::CodesignGroup>,
+    /// Fine-tunings of a module file on target shapes (`vsr finetune --from MODULE`).
+    #[serde(default)]
+    pub from_module: Vec<super::from_module::FromModuleGroup>,
 }
 
 /// The frozen-attention ablation's settings.
@@ -146,6 +156,9 @@ impl Campaign {
         for g in &mut self.any_body {
             g.relative_to(dir);
         }
+        for g in &mut self.from_module {
+            g.relative_to(dir);
+        }
         for g in &mut self.codesign {
             if let Some(module) = &g.module {
                 g.module = Some(path_clean::clean(dir.join(module)).display().to_string());
@@ -203,6 +216,9 @@ impl Campaign {
         for g in &self.any_body {
             g.check()?;
         }
+        for g in &self.from_module {
+            g.check()?;
+        }
         for g in &self.fidelity {
             if !g.reference.ends_with(".json") {
                 return bad(format!(
@@ -222,7 +238,8 @@ impl Campaign {
             let budgets = [Some(g.source_evals), Some(g.evals), g.scratch_evals];
             (&g.name, budgets.into_iter().flatten().collect())
         });
-        for (name, budgets) in evolve.chain(finetune) {
+        let from_module = self.from_module.iter().map(|g| (&g.name, vec![g.evals]));
+        for (name, budgets) in evolve.chain(finetune).chain(from_module) {
             for budget in budgets {
                 check_budget(budget, self.population)
                     .map_err(|e| e.about(format!("group '{name}'")))?;

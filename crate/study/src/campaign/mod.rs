@@ -8,6 +8,7 @@ pub mod any_body;
 pub mod codesign;
 pub mod export;
 pub mod file;
+pub mod from_module;
 pub mod groups;
 pub mod job;
 pub mod merge;

@@ -6,7 +6,9 @@
 //!   `SOURCESHAPE-CONTROLLER-SOURCEEVALS-to-SHAPE-EVALS-sSEED` for fine-tuning;
 //! - `validation/STEM.SET.json`: `vsr validate --json` of a run's best on a set;
 //! - `ablation/STEM.json`: `vsr ablate --json` of a run's best;
-//! - `fidelity/NAME.json`: `vsr fidelity` of the reference file NAME.json (stage 1).
+//! - `fidelity/NAME.json`: `vsr fidelity` of the reference file NAME.json (stage 1);
+//! - the `[[any_body]]`, `[[codesign]]` and `[[from_module]]` groups' outputs: their modules'
+//!   docs.
 //!
 //! Stages: a run that needs no other run is stage 1; a fine-tuning run (it needs its source
 //! run) or a run that continues a shorter one is one stage after the run it needs; a run's
@@ -181,6 +183,10 @@ pub fn plan(c: &Campaign, out: &Path) -> Vec<Job> {
         c.seconds,
         out,
     ));
+    for g in &c.from_module {
+        let settings = (c.seconds, c.population, c.terrain.as_str());
+        jobs.extend(g.jobs(&c.seeds, settings, &c.validate, out));
+    }
     jobs.sort_by_key(|j| j.stage);
     jobs
 }

@@ -2,7 +2,8 @@
 //! and ablation when they exist, and the same for every planned body search. The command
 //! line reads the files; this module only holds them and says what is missing.
 
-use super::file::Campaign;
+use super::file::{Campaign, FinetuneGroup};
+use super::from_module::FromModuleSpec;
 use super::plan::{earlier_runs, known_runs, runs, RunSpec};
 use crate::fidelity::Fidelity;
 use std::collections::BTreeMap;
@@ -148,6 +149,16 @@ pub struct Results {
     /// The floor of the `[[any_body]]` groups: each random brain (family, seed) with its
     /// validations found, per (body-set stem, terrain set) (`any_body::floor_jobs`).
     pub floor: Vec<((vsr::controllers::ControllerKind, u64), BodySetValidations)>,
+    /// Data of every planned fine-tuning from a module file, in campaign order (group,
+    /// shape, seed).
+    pub from_module: Vec<(FromModuleSpec, RunData)>,
+    /// The `[[from_module]]` groups' module files that exist, by group name.
+    pub modules: BTreeMap<String, RunFile>,
+    /// The `[[from_module]]` groups' one-shot walks found, by (group name, terrain set).
+    pub one_shot: BTreeMap<(String, ValidationSet), vsr::experiment::body_set::BodiesValidation>,
+    /// The runs of the `[[from_module]]` groups' compared campaigns (`compare`) that exist:
+    /// the group it is shown beside, the compared `[[finetune]]` group, the run and its data.
+    pub compared: Vec<(String, FinetuneGroup, RunSpec, RunData)>,
     /// Planned output files not found.
     pub missing: Vec<PathBuf>,
     /// The fidelity measurements found, with their reference files, in campaign order.
@@ -259,7 +270,17 @@ impl Results {
             .into_iter()
             .map(|b| (b, BTreeMap::new()))
             .collect();
+        let from_module = campaign
+            .from_module
+            .iter()
+            .flat_map(|g| g.specs(&campaign.seeds))
+            .map(|s| (s, RunData::default()))
+            .collect();
         Results {
+            from_module,
+            modules: BTreeMap::new(),
+            one_shot: BTreeMap::new(),
+            compared: Vec::new(),
             campaign,
             data,
             earlier,

@@ -32,6 +32,7 @@ mod families;
 mod fidelity;
 pub mod figures;
 mod finetune;
+mod from_module;
 pub mod noninferiority;
 mod plateau;
 mod samples;
@@ -95,6 +96,7 @@ pub fn report(results: &Results) -> Report {
     }
     codesign::codesign_sections(results, &mut r);
     any_body::any_body_section(results, &mut r);
+    from_module::from_module_sections(results, &mut r);
     fidelity::fidelity_section(results, &mut r);
     r
 }
@@ -108,8 +110,12 @@ fn missing_section(results: &Results, md: &mut String) {
         .count();
     let bodies = results.codesign.iter().filter(|(_, d)| d.run.is_some());
     let any_body = results.any_body.iter().filter(|(_, d)| d.run.is_some());
-    let found = found + bodies.count() + any_body.count();
-    let planned = results.data.len() + results.codesign.len() + results.any_body.len();
+    let tuned = results.from_module.iter().filter(|(_, d)| d.run.is_some());
+    let found = found + bodies.count() + any_body.count() + tuned.count();
+    let planned = results.data.len()
+        + results.codesign.len()
+        + results.any_body.len()
+        + results.from_module.len();
     let _ = writeln!(md, "Run files found: {found} of {planned}.");
     if results.missing.is_empty() {
         md.push_str("Every planned output exists.\n\n");
