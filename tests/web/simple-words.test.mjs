@@ -231,6 +231,7 @@ test('a teacher\'s review in simple words: the header, the brain\'s words, the s
     // 5. The run's figures: the median explained, the computer's pace hidden.
     assert.match(await seen(page, 'span:has(> #run-median)'), /median \(the middle one of this round: half walked faster, half slower\)/);
     assert.equal(await page.locator('#engine-rate').isVisible(), false);
+    assert.equal(await page.locator('#run-gen-best').isVisible(), false, 'one speed fewer: this generation\'s best is the expert\'s (best so far and the median stay)');
     await page.locator('#watch-panel').screenshot({ path: path.join(SCREENSHOTS, `simple-words-speeds-${width}.png`) });
     await page.locator('#brain-panel').screenshot({ path: path.join(SCREENSHOTS, `simple-words-brain-${width}.png`) });
     // 6. The glossary's attention, tanh and saturate in everyday words.
