@@ -140,5 +140,11 @@ fn on_bodies(args: &Args, best: &Best, path: &std::path::Path, seconds: f64) -> 
         validation.median,
         100.0 * validation.walking_share
     );
+    if validation.exploded > 0 {
+        say!(
+            "{} episodes exploded (non-finite), each counted as 0 m/s",
+            validation.exploded
+        );
+    }
     Ok(())
 }

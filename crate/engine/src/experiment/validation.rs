@@ -147,32 +147,54 @@ pub fn validate(best: &Best, seconds: f64) -> Result<Validation> {
 /// Validates `best` on `set` with episodes of `seconds`; an episode that becomes unstable is
 /// an error naming its terrain.
 pub fn validate_on(best: &Best, set: ValidationSet, seconds: f64) -> Result<Validation> {
+    let terrains = episodes_on(best, set, seconds)?
+        .into_iter()
+        .map(|(terrain, velocity)| {
+            let velocity = velocity
+                .map_err(|e| Error::Unstable(format!("{e} (validation terrain {terrain})")))?;
+            Ok(TerrainVelocity { terrain, velocity })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    Ok(Validation::of(set, terrains))
+}
+
+/// Every episode of `best` on `set`, in terrain order: the terrain's name and the episode's
+/// velocity, or the error that stopped it (an unstable episode). A genome that does not fit
+/// is an error before any episode.
+pub(crate) fn episodes_on(
+    best: &Best,
+    set: ValidationSet,
+    seconds: f64,
+) -> Result<Vec<(String, Result<f64>)>> {
     best.validate("the genome")?;
-    let mut terrains = Vec::new();
+    let mut out = Vec::new();
     for (name, noise) in set.episodes() {
         let terrain = Terrain::parse(&name)?;
-        let noise = Some(noise);
-        let outcome = evaluate(
+        let velocity = evaluate(
             &best.shape,
             terrain,
             best.controller,
             &best.genome,
-            noise,
+            Some(noise),
             seconds,
         )
-        .map_err(|e| Error::Unstable(format!("{e} (validation terrain {name})")))?;
-        terrains.push(TerrainVelocity {
-            terrain: name,
-            velocity: outcome.velocity,
-        });
+        .map(|o| o.velocity);
+        out.push((name, velocity));
     }
-    let velocities: Vec<f64> = terrains.iter().map(|t| t.velocity).collect();
-    Ok(Validation {
-        set,
-        median: median(&velocities),
-        mean: velocities.iter().sum::<f64>() / velocities.len() as f64,
-        terrains,
-    })
+    Ok(out)
+}
+
+impl Validation {
+    /// The validation of these episodes on `set`: their median and mean.
+    pub(crate) fn of(set: ValidationSet, terrains: Vec<TerrainVelocity>) -> Validation {
+        let velocities: Vec<f64> = terrains.iter().map(|t| t.velocity).collect();
+        Validation {
+            set,
+            median: median(&velocities),
+            mean: velocities.iter().sum::<f64>() / velocities.len() as f64,
+            terrains,
+        }
+    }
 }
 
 #[cfg(test)]
