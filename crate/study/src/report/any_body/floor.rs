@@ -27,6 +27,18 @@ pub(super) fn floor_values(
         .collect()
 }
 
+/// The exploded episodes (each counted as 0 m/s) of `controller`'s random brains on (`stem`,
+/// `set`).
+fn floor_exploded(
+    results: &Results,
+    controller: ControllerKind,
+    (stem, set): (&str, vsr::experiment::ValidationSet),
+) -> u32 {
+    let mine = results.floor.iter().filter(|((c, _), _)| *c == controller);
+    let each = mine.filter_map(|(_, found)| found.get(&(stem.to_string(), set)));
+    each.map(|v| v.exploded).sum()
+}
+
 /// The floor's table: per family, the median [q1, q3] over seeds of each held-out set's
 /// median, once every seed of the family has it (before, how many have).
 pub(super) fn floor_section(results: &Results, md: &mut String) {
@@ -47,7 +59,7 @@ pub(super) fn floor_section(results: &Results, md: &mut String) {
          range; seeds {seeds_text}), walked as the runs' bests are. Random attention-any is the \
          plan's reference (shown beside, not tested); the other families' random brains are \
          exploratory, not in the plan. Median [q1, q3] over the seeds of each set's median \
-         (m/s).\n"
+         (m/s; \"k exploded\": episodes counted as 0 m/s).\n"
     );
     let mut header = String::from("| random brain |");
     for (bodies, set) in &sets {
@@ -73,7 +85,13 @@ pub(super) fn floor_section(results: &Results, md: &mut String) {
             let v = floor_values(results, c, (&set_stem(bodies), *set));
             let cell = if v.len() == seeds.len() {
                 let s = Summary::of(&v);
-                format!("{:.2} [{:.2}, {:.2}]", s.median, s.q1, s.q3)
+                let n = floor_exploded(results, c, (&set_stem(bodies), *set));
+                let exploded = if n > 0 {
+                    format!(", {n} exploded")
+                } else {
+                    String::new()
+                };
+                format!("{:.2} [{:.2}, {:.2}]{exploded}", s.median, s.q1, s.q3)
             } else {
                 format!("{} of {} seeds", v.len(), seeds.len())
             };

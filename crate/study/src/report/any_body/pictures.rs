@@ -59,7 +59,7 @@ pub(super) fn figures(results: &Results, all: &[Condition], ready: bool, r: &mut
 }
 
 /// The rows of the bodies of `stem` in `c`'s training set (none when no run file is read).
-fn trained_on(c: &Condition) -> Vec<String> {
+pub(super) fn trained_on(c: &Condition) -> Vec<String> {
     let run = c.runs.iter().find_map(|d| d.run.as_ref());
     let set = run.and_then(|r| r.config.bodies.as_ref());
     set.map_or(Vec::new(), |b| {
