@@ -57,6 +57,20 @@ fn vsr(dir: &Path, args: &[&str]) -> String {
     String::from_utf8_lossy(&o.stdout).into_owned()
 }
 
+/// A manifest beside `module.json` naming it, chosen among `n` runs (the pretrained folder's
+/// manifest with its first entry renamed).
+fn chosen_among(dir: &Path, n: usize) {
+    let pretrained = Path::new(env!("CARGO_MANIFEST_DIR")).join("pretrained/manifest.json");
+    let mut manifest: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(pretrained).unwrap()).unwrap();
+    let mut entry = manifest["modules"][0].clone();
+    entry["file"] = "module.json".into();
+    entry["chosen_from"] = n.into();
+    manifest["modules"] = serde_json::Value::Array(vec![entry]);
+    let text = serde_json::to_string_pretty(&manifest).unwrap();
+    std::fs::write(dir.join("manifest.json"), text).unwrap();
+}
+
 fn module(dir: &Path, controller: &str, out: &str) {
     vsr(
         dir,
@@ -157,5 +171,22 @@ fn a_module_fine_tuned_on_shapes_is_reported_beside_the_compared_runs() {
     }
     assert!(cells[6].ends_with("(n=2)"), "{row}");
     assert!(report.contains("rq2: transplant from comb-7x2 after 10 evaluations"));
+    assert!(report.contains("each run's `unseen` mean |"), "{report}");
+    // The cost, read from the files: the transplants' two source runs (seeds 1 and 2) ...
+    assert!(
+        report.contains("A transplant's source run: 10 evaluations (generation 0 included) of one body each, read from its 2 source run files"),
+        "{report}"
+    );
+    // ... and, with no manifest beside the module, the choice's size is said to be unknown.
+    assert!(report.contains("is not known"), "{report}");
+    chosen_among(&dir, 10);
+    vsr(&dir, &["report", "c.toml", "--dir", "report"]);
+    let report = std::fs::read_to_string(dir.join("report/report.md")).unwrap();
+    assert!(
+        report.contains(
+            "chosen among 10 such runs (its manifest entry), so 200 body-episodes in all"
+        ),
+        "{report}"
+    );
     std::fs::remove_dir_all(&dir).unwrap();
 }

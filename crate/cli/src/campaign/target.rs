@@ -186,6 +186,9 @@ fn load_from_module(results: &mut Results, out: &Path) -> Result<()> {
         if let Some(module) = read_json(Path::new(&g.module), RunFile::from_json)? {
             results.modules.insert(g.name.clone(), module);
         }
+        if let Some(n) = chosen_from(Path::new(&g.module)) {
+            results.chosen_from.insert(g.name.clone(), n);
+        }
         for set in ValidationSet::ALL {
             let Some(path) = g.one_shot_path(out, set) else {
                 break;
@@ -212,10 +215,34 @@ fn load_from_module(results: &mut Results, out: &Path) -> Result<()> {
                 }
             }
             data.run = run;
+            if let Some(source) = spec.source.as_deref() {
+                let sources = results
+                    .source_evaluations
+                    .entry(g.name.clone())
+                    .or_default();
+                if !sources.iter().any(|(s, _)| s == source) {
+                    let path = source.run_path(&compared_out);
+                    if let Some(run) = read_json(&path, RunFile::from_json)? {
+                        let evaluations = run.generations.last().map_or(0, |g| g.evaluations);
+                        sources.push((source.clone(), evaluations));
+                    }
+                }
+            }
             results.compared.push((g.name.clone(), group, spec, data));
         }
     }
     Ok(())
+}
+
+/// How many runs the module at `module` was chosen among: its entry's `chosen_from` in the
+/// `manifest.json` beside it, if there is one naming it (`None` otherwise: not known).
+fn chosen_from(module: &Path) -> Option<usize> {
+    let manifest = module.parent()?.join("manifest.json");
+    let text = fs::read_to_string(manifest).ok()?;
+    let manifest: vsr_study::campaign::export::Manifest = serde_json::from_str(&text).ok()?;
+    let name = module.file_name()?.to_str()?;
+    let entry = manifest.modules.iter().find(|m| m.file == name)?;
+    Some(entry.provenance.chosen_from)
 }
 
 /// Checks every `[[from_module]]` group's module before any job runs: it exists (else what

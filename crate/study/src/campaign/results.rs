@@ -154,6 +154,12 @@ pub struct Results {
     pub from_module: Vec<(FromModuleSpec, RunData)>,
     /// The `[[from_module]]` groups' module files that exist, by group name.
     pub modules: BTreeMap<String, RunFile>,
+    /// How many runs each `[[from_module]]` group's module was chosen among (its manifest
+    /// entry's `chosen_from`, when the module's folder has a manifest naming it), by group name.
+    pub chosen_from: BTreeMap<String, usize>,
+    /// The transplants' source runs of each group's compared campaign that exist: per group
+    /// name, each source run once with its evaluations (generation 0 included).
+    pub source_evaluations: BTreeMap<String, Vec<(RunSpec, u64)>>,
     /// The `[[from_module]]` groups' one-shot walks found, by (group name, terrain set).
     pub one_shot: BTreeMap<(String, ValidationSet), vsr::experiment::body_set::BodiesValidation>,
     /// The runs of the `[[from_module]]` groups' compared campaigns (`compare`) that exist:
@@ -279,6 +285,8 @@ impl Results {
         Results {
             from_module,
             modules: BTreeMap::new(),
+            chosen_from: BTreeMap::new(),
+            source_evaluations: BTreeMap::new(),
             one_shot: BTreeMap::new(),
             compared: Vec::new(),
             campaign,

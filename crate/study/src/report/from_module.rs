@@ -2,7 +2,9 @@
 //! one-shot speed, the median generation best at the group's budget of the runs fine-tuned
 //! from the module against the compared campaign's fine-tunings of a transplanted module and
 //! its runs from scratch on the same shape, with two-sided Mann-Whitney p values (exact where
-//! both samples have at most 20 values and no ties, unadjusted), and what each module cost.
+//! both samples have at most 20 values and no ties, unadjusted), and what each module cost,
+//! read from the files: its run, how many runs it was chosen among (its manifest entry) and
+//! the transplants' source runs.
 
 use super::Report;
 use crate::campaign::file::FinetuneGroup;
@@ -10,7 +12,7 @@ use crate::campaign::from_module::FromModuleGroup;
 use crate::campaign::{Results, RunData, RunSpec};
 use crate::statistics::{mann_whitney, Summary};
 use std::fmt::Write;
-use vsr::experiment::{RunFile, ValidationSet};
+use vsr::experiment::ValidationSet;
 use vsr::simulation::Shape;
 
 /// The sections of every `[[from_module]]` group.
@@ -26,7 +28,7 @@ fn section(results: &Results, g: &FromModuleGroup, md: &mut String) {
         "## {} · fine-tuning the module {} (exploratory)\n",
         g.name, g.module
     );
-    let _ = writeln!(md, "{}\n", module_cost(results.modules.get(&g.name)));
+    let _ = writeln!(md, "{}\n", module_cost(results, g));
     let mine: Vec<&RunData> = results
         .from_module
         .iter()
@@ -44,7 +46,7 @@ fn section(results: &Results, g: &FromModuleGroup, md: &mut String) {
         md,
         "| target | one-shot, `{set}` mean | at {at}: from the module / transplant fine-tuned \
          / from scratch | p: module vs transplant | p: module vs scratch | from the module, \
-         end `{set}` median |\n|---|---|---|---|---|---|"
+         at the end: median over seeds of each run's `{set}` mean |\n|---|---|---|---|---|---|"
     );
     for shape in &g.shapes {
         let tuned: Vec<&RunData> = results
@@ -129,23 +131,56 @@ fn one_shot(results: &Results, g: &FromModuleGroup, shape: &str, set: Validation
     found.map_or("-".into(), |b| format!("{:.2}", b.validation.mean))
 }
 
-/// What the module cost: its run's evaluations x the bodies each walked.
-fn module_cost(module: Option<&RunFile>) -> String {
-    let Some(run) = module else {
+/// What the module cost, read from the files: its run's evaluations x the bodies each walked,
+/// how many such runs it was chosen among (its manifest entry), and what a transplant's
+/// source runs of the compared campaign cost.
+fn module_cost(results: &Results, g: &FromModuleGroup) -> String {
+    let Some(run) = results.modules.get(&g.name) else {
         return "The module file does not exist yet: no cost to state.".into();
     };
     let evaluations = run.generations.last().map_or(0, |g| g.evaluations);
     let per = run.config.bodies.as_ref().map_or(1, |b| b.per_evaluation);
+    let episodes = evaluations * per as u64;
+    let chosen = match results.chosen_from.get(&g.name) {
+        Some(&n) => format!(
+            "chosen among {n} such run{} (its manifest entry), so {} body-episodes in all",
+            if n == 1 { "" } else { "s" },
+            episodes * n as u64
+        ),
+        None => "how many runs it was chosen among is not known (no manifest entry names it \
+                 beside the module)"
+            .into(),
+    };
     format!(
         "The module: {}, one run of {evaluations} evaluations (generation 0 included) of {per} \
-         bod{} each, {} body-episodes of {} s, before any fine-tuning (if it was chosen among \
-         several runs, as `vsr campaign export` chooses, the choice cost all of them). A \
-         transplant's source run costs its evaluations on one body each (its budget plus \
-         generation 0).",
+         bod{} each, {episodes} body-episodes of {} s, before any fine-tuning; {chosen}. {}",
         run.config.controller,
         if per == 1 { "y" } else { "ies" },
-        evaluations * per as u64,
-        run.config.seconds
+        run.config.seconds,
+        source_cost(results.source_evaluations.get(&g.name))
+    )
+}
+
+/// The transplants' source runs' evaluations (one body each), as read from their files.
+fn source_cost(sources: Option<&Vec<(RunSpec, u64)>>) -> String {
+    let Some(sources) = sources.filter(|s| !s.is_empty()) else {
+        return "No transplant's source run file was found: its cost is not stated.".into();
+    };
+    let counts: Vec<u64> = sources.iter().map(|(_, e)| *e).collect();
+    let (low, high) = (
+        counts.iter().min().copied().unwrap_or(0),
+        counts.iter().max().copied().unwrap_or(0),
+    );
+    let each = if low == high {
+        format!("{low} evaluations")
+    } else {
+        format!("{low} to {high} evaluations")
+    };
+    format!(
+        "A transplant's source run: {each} (generation 0 included) of one body each, read from \
+         its {} source run file{} of the compared campaign.",
+        sources.len(),
+        if sources.len() == 1 { "" } else { "s" }
     )
 }
 
