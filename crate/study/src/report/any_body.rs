@@ -251,3 +251,62 @@ pub fn any_body_section(results: &Results, r: &mut Report) {
     floor::floor_section(results, md);
     pictures::figures(results, &all, ready, r);
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::campaign::Campaign;
+    use vsr::experiment::body_set::BodiesValidation;
+
+    const GROUP: &str = r#"
+output = "out"
+seeds = [1, 2]
+[[any_body]]
+name = "a"
+bodies = "train.txt"
+controllers = ["attention-any"]
+evals = 20
+heldout = ["heldout-random.txt"]
+"#;
+
+    fn run(median: f64, exploded: u32) -> AnyBodyData {
+        let mut d = AnyBodyData::default();
+        let v = BodiesValidation {
+            bodies: "heldout-random.txt".into(),
+            set: ValidationSet::Unseen,
+            seconds: 30.0,
+            median,
+            walking_share: 0.0,
+            per_body: Vec::new(),
+            exploded,
+        };
+        d.validation
+            .insert((PRIMARY.to_string(), ValidationSet::Unseen), v);
+        d
+    }
+
+    /// A run whose primary median is not a number is neither found nor silently left out of
+    /// a test: the condition stays incomplete, so its family waits; exploded episodes add up.
+    #[test]
+    fn a_nan_primary_is_counted_apart_and_keeps_the_family_waiting() {
+        let campaign = Campaign::parse(GROUP).unwrap();
+        let (a, b) = (run(0.5, 2), run(f64::NAN, 1));
+        let c = Condition {
+            label: "attention-any on train".into(),
+            controller: ControllerKind::AttentionAny,
+            group: &campaign.any_body[0],
+            runs: vec![&a, &b],
+            planned: 2,
+        };
+        assert_eq!(c.primary(), [0.5]);
+        assert_eq!(c.not_a_number(), 1);
+        assert!(!c.complete());
+        assert_eq!(exploded(&c, PRIMARY), 3);
+        let c = Condition {
+            runs: vec![&a],
+            planned: 1,
+            ..c
+        };
+        assert!(c.complete());
+    }
+}
