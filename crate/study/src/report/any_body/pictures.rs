@@ -7,6 +7,9 @@
 //! - `any-body-bodies-GROUP-CONTROLLER.svg`, one per condition: every held-out body drawn
 //!   with the speed of the condition's chosen module on it (the run chosen by its
 //!   training-set median, as `vsr campaign export` chooses), sorted fastest first.
+//!
+//! Exploded episodes (each counted as 0 m/s) are said in a figure's notes, and under a body
+//! that had some.
 
 use super::floor::{floor_label, floor_values};
 use super::Condition;
@@ -111,6 +114,16 @@ fn strata_figure(
             ));
         }
     }
+    for c in all {
+        let runs = c.runs.iter().filter_map(|d| d.validation.get(&key));
+        let n: u32 = runs.map(|v| v.exploded).sum();
+        if n > 0 {
+            notes.push(format!(
+                "{}: {n} episodes on {stem} exploded, each counted as 0 m/s",
+                c.label
+            ));
+        }
+    }
     let file = strata_file(stem, set);
     let _ = writeln!(r.markdown, "![held-out speed on {stem}]({file})\n");
     r.figures.push(Figure {
@@ -148,10 +161,10 @@ fn bodies_figure(results: &Results, c: &Condition, r: &mut Report) {
         let Some(v) = choice.data.validation.get(&(stem.clone(), set)) else {
             continue;
         };
-        let mut bodies: Vec<(f64, String)> = v
+        let mut bodies: Vec<(f64, String, u32)> = v
             .per_body
             .iter()
-            .map(|b| (b.validation.mean, b.body.to_rows()))
+            .map(|b| (b.validation.mean, b.body.to_rows(), b.exploded))
             .collect();
         let key = |m: f64| if m.is_nan() { f64::NEG_INFINITY } else { m };
         bodies.sort_by(|a, b| key(b.0).total_cmp(&key(a.0)));
@@ -161,10 +174,15 @@ fn bodies_figure(results: &Results, c: &Condition, r: &mut Report) {
                 (
                     format!("{controller}, {stem}"),
                     format!(
-                        "median {:.2} m/s; {} of {} above 1 m/s",
+                        "median {:.2} m/s; {} of {} above 1 m/s{}",
                         v.median,
                         walking.round(),
-                        v.per_body.len()
+                        v.per_body.len(),
+                        if v.exploded > 0 {
+                            format!("; {} episodes exploded (0 m/s)", v.exploded)
+                        } else {
+                            String::new()
+                        }
                     ),
                 )
             } else {
@@ -172,11 +190,12 @@ fn bodies_figure(results: &Results, c: &Condition, r: &mut Report) {
             };
             let pictures = chunk
                 .iter()
-                .map(|(mean, rows)| BodyPicture {
-                    caption: if trained.contains(rows) {
-                        format!("{mean:.2} (trained)")
-                    } else {
-                        format!("{mean:.2}")
+                .map(|(mean, rows, exploded)| BodyPicture {
+                    caption: match (trained.contains(rows), *exploded) {
+                        (true, 0) => format!("{mean:.2} (trained)"),
+                        (false, 0) => format!("{mean:.2}"),
+                        (true, k) => format!("{mean:.2} (trained, {k} exploded)"),
+                        (false, k) => format!("{mean:.2} ({k} exploded)"),
                     },
                     rows: rows.clone(),
                 })
