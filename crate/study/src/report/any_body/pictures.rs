@@ -114,6 +114,18 @@ fn strata_figure(
             ));
         }
     }
+    let most = all
+        .iter()
+        .map(|c| c.group.per_evaluation)
+        .max()
+        .unwrap_or(1);
+    for c in all.iter().filter(|c| c.group.per_evaluation < most) {
+        notes.push(format!(
+            "{}: {} bodies per evaluation against {most} for the others, so {}/{most} of their \
+             training episodes (stated, not corrected)",
+            c.label, c.group.per_evaluation, c.group.per_evaluation
+        ));
+    }
     for c in all {
         let runs = c.runs.iter().filter_map(|d| d.validation.get(&key));
         let n: u32 = runs.map(|v| v.exploded).sum();
