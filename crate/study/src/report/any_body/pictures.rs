@@ -121,9 +121,16 @@ fn strata_figure(
         .unwrap_or(1);
     for c in all.iter().filter(|c| c.group.per_evaluation < most) {
         notes.push(format!(
-            "{}: {} bodies per evaluation against {most} for the others, so {}/{most} of their \
+            "{}: {} bod{} per evaluation against {most} for the others, so {}/{most} of their \
              training episodes (stated, not corrected)",
-            c.label, c.group.per_evaluation, c.group.per_evaluation
+            c.label,
+            c.group.per_evaluation,
+            if c.group.per_evaluation == 1 {
+                "y"
+            } else {
+                "ies"
+            },
+            c.group.per_evaluation
         ));
     }
     for c in all {
