@@ -107,15 +107,24 @@ pub(super) fn estimates(all: &[Condition], md: &mut String) {
     );
 }
 
-/// A sentence per condition trained on fewer bodies per evaluation than the most: the same
-/// evaluations, that fraction of the episodes (stated, not corrected).
-pub(super) fn fewer_episodes(all: &[&Condition], md: &mut String) {
+/// The conditions trained on fewer bodies per evaluation than the most of `all`, each with
+/// that most: the same evaluations, a fraction of the episodes.
+pub(super) fn fewer_bodies<'a, 'b>(all: &[&'a Condition<'b>]) -> Vec<(&'a Condition<'b>, usize)> {
     let most = all
         .iter()
         .map(|c| c.group.per_evaluation)
         .max()
         .unwrap_or(1);
-    for c in all.iter().filter(|c| c.group.per_evaluation < most) {
+    all.iter()
+        .filter(|c| c.group.per_evaluation < most)
+        .map(|&c| (c, most))
+        .collect()
+}
+
+/// A sentence per condition trained on fewer bodies per evaluation than the most: the same
+/// evaluations, that fraction of the episodes (stated, not corrected).
+pub(super) fn fewer_episodes(all: &[&Condition], md: &mut String) {
+    for (c, most) in fewer_bodies(all) {
         let per = c.group.per_evaluation;
         let _ = writeln!(
             md,

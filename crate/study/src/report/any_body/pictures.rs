@@ -114,12 +114,8 @@ fn strata_figure(
             ));
         }
     }
-    let most = all
-        .iter()
-        .map(|c| c.group.per_evaluation)
-        .max()
-        .unwrap_or(1);
-    for c in all.iter().filter(|c| c.group.per_evaluation < most) {
+    let refs: Vec<&Condition> = all.iter().collect();
+    for (c, most) in super::estimates::fewer_bodies(&refs) {
         notes.push(format!(
             "{}: {} bod{} per evaluation against {most} for the others, so {}/{most} of their \
              training episodes (stated, not corrected)",
