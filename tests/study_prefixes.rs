@@ -21,7 +21,10 @@ fn runs_from_scratch(dir: &Path) -> Runs {
         let text = std::fs::read_to_string(&path).expect("readable");
         let run: Value = serde_json::from_str(&text).expect("a run file");
         let config = &run["config"];
-        if !config["source"].is_null() {
+        // Fine-tunings start from a source; a run on a body set trains on many bodies (its
+        // `shape` is only the set's first body, the same for train-32 and train-128): neither
+        // is a single body's run from scratch.
+        if !config["source"].is_null() || !config["bodies"].is_null() {
             continue;
         }
         let key = (
