@@ -160,7 +160,7 @@ test('with the study\'s brain for any body: predict, draw, then Reveal walks it 
   assert.equal(said[1], band, 'the range the measured speed falls in');
   assert.match(text, /You said: from 0\.5 to 1 m\/s\./, 'the prediction beside the measurement');
   assert.equal(await task.getAttribute('data-right'), String(band === 'from 0.5 to 1 m/s'));
-  assert.match(text, /The study walked it on 4 random bodies it never trained on, each on its unseen terrains: the median of those bodies' mean speeds is 1\.10 m\/s, and 2 of the 4 \(50%\) averaged more than 1 m\/s\./,
+  assert.match(text, /The study walked it on 4 random bodies it never trained on, each on 10 new terrains: the median of those bodies' mean speeds is 1\.10 m\/s, and 2 of the 4 \(50%\) averaged more than 1 m\/s\./,
     'the study\'s figures, from the manifest');
   // Revealed: the page shows its own measure of the same walk, the number the answer gave.
   assert.equal(await page.locator('.tour-notice').isVisible(), true);
@@ -172,7 +172,7 @@ test('with the study\'s brain for any body: predict, draw, then Reveal walks it 
   // The module list names it with the same held-out median (it has no one body: no mean over the unseen terrains).
   const option = page.locator(`#module option[value="${MADE_KEY}"]`);
   assert.equal(await option.textContent(), 'attention, any body, trained on 32 bodies · 1.10 m/s median on new bodies');
-  assert.match(String(await option.getAttribute('title')), /a median of 1\.10 m\/s over 4 bodies it never trained on \(each body's mean on its unseen terrains\), 2 of the 4 above 1 m\/s\)$/);
+  assert.match(String(await option.getAttribute('title')), /a median of 1\.10 m\/s over 4 bodies it never trained on \(each body's mean on 10 new terrains\), 2 of the 4 above 1 m\/s\)$/);
   await shoot(page, 'tour-any-body-revealed', 'tour-answer');
   assert.deepEqual(problems, []);
   await page.context().close();

@@ -112,7 +112,7 @@ function heldOutWords(record) {
   const { bodies: n, above } = set;
   const bodies = set.name === HELDOUT_RANDOM ? `${count(n)} random bodies` : `the ${count(n)} bodies of the set ${set.name}`;
   return {
-    words: `The study walked it on ${bodies} it never trained on, each on its ${set.terrains} terrains: the median of those bodies' mean speeds is `
+    words: `The study walked it on ${bodies} it never trained on, each on ${set.terrains}: the median of those bodies' mean speeds is `
       + `${ms(set.median)}, and ${count(above)} of the ${count(n)} (${Math.round(100 * set.share)}%) averaged more than 1 m/s.`,
     simple: `The study tried it on ${bodies} it never saw. The middle speed of those bodies was ${ms(set.median)}. `
       + `${count(above)} of the ${count(n)} walked faster than 1 m/s.`,

@@ -80,7 +80,7 @@ export const HELDOUT_SIMPLE = 'on new bodies (the middle one)';
  * @param {import('../shared/held-out.js').HeldOut} set
  */
 export function heldOutLong(set) {
-  return `a median of ${decimal(set.median)} m/s over ${set.bodies} bodies it never trained on (each body's mean on its ${set.terrains} terrains), `
+  return `a median of ${decimal(set.median)} m/s over ${set.bodies} bodies it never trained on (each body's mean on ${set.terrains}), `
     + `${set.above} of the ${set.bodies} above 1 m/s`;
 }
 

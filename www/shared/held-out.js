@@ -18,7 +18,7 @@ export const HELDOUT_RANDOM = 'heldout-random';
 /**
  * @typedef {object} HeldOut  a held-out body set's figures
  * @property {string} name       the set (its file's stem)
- * @property {string} terrains   the terrain set its bodies walked (e.g. unseen)
+ * @property {string} terrains   the terrain set its bodies walked, in words (e.g. “10 new terrains”)
  * @property {number} median     the median of the bodies' mean speeds (m/s)
  * @property {number} share      the share of the bodies above 1 m/s (0 to 1)
  * @property {number} bodies     how many bodies
@@ -35,10 +35,15 @@ export function heldOut(record) {
   const set = sets.find((s) => s.heldout && s.name === HELDOUT_RANDOM) ?? sets.find((s) => s.heldout);
   if (!set || !Number.isFinite(set.median) || !Array.isArray(set.means)) return null;
   const bodies = set.means.length;
-  return { name: set.name, terrains: set.set, median: set.median, share: set.walking_share, bodies, above: Math.round(set.walking_share * bodies) };
+  return { name: set.name, terrains: terrainWords(set.set), median: set.median, share: set.walking_share, bodies, above: Math.round(set.walking_share * bodies) };
 }
 
 /** Whether a manifest entry is the study's brain for any body ({@link STUDY_ANY_BODY}). @param {any} entry */
 export function isStudyAnyBody(entry) {
   return entry?.controller === STUDY_ANY_BODY.controller && entry?.any_body?.group === STUDY_ANY_BODY.group;
+}
+
+/** The study's terrain sets in a newcomer's words (its own name for another). @param {string} set */
+function terrainWords(set) {
+  return { unseen: '10 new terrains', paper: 'the paper\'s 10 test terrains' }[set] ?? `the terrains ${set}`;
 }
