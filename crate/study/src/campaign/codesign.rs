@@ -112,16 +112,8 @@ impl CodesignGroup {
                     needs: vec![],
                 });
                 for &set in sets {
-                    jobs.push(Job {
-                        stage: 2,
-                        task: Task::Validate {
-                            genome: run.clone(),
-                            set,
-                            seconds,
-                        },
-                        out: out.join("validation").join(format!("{stem}.{set}.json")),
-                        needs: vec![run.clone()],
-                    });
+                    let file = out.join("validation").join(format!("{stem}.{set}.json"));
+                    jobs.push(Job::validate(2, &run, set, seconds, file));
                 }
             }
         }

@@ -204,16 +204,13 @@ impl FromModuleGroup {
                 needs: vec![],
             });
             for &set in sets {
-                jobs.push(Job {
-                    stage: 2,
-                    task: Task::Validate {
-                        genome: run.clone(),
-                        set,
-                        seconds,
-                    },
-                    out: spec.validation_path(out, set),
-                    needs: vec![run.clone()],
-                });
+                jobs.push(Job::validate(
+                    2,
+                    &run,
+                    set,
+                    seconds,
+                    spec.validation_path(out, set),
+                ));
             }
         }
         jobs

@@ -2,7 +2,7 @@
 //! files it needs; and the selection of a part of a plan (`--only`). The command line turns a
 //! job into a `vsr` command.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use vsr::controllers::ControllerKind;
 use vsr::experiment::ValidationSet;
 
@@ -136,6 +136,21 @@ pub struct CodesignTask {
 }
 
 impl Job {
+    /// The validation of the run file `run` on `set` with episodes of `seconds`, written to
+    /// `out` once `run` exists.
+    pub fn validate(stage: u32, run: &Path, set: ValidationSet, seconds: f64, out: PathBuf) -> Job {
+        Job {
+            stage,
+            task: Task::Validate {
+                genome: run.to_path_buf(),
+                set,
+                seconds,
+            },
+            out,
+            needs: vec![run.to_path_buf()],
+        }
+    }
+
     /// True when the job is an evolution or a fine-tuning (it takes `--threads`; minutes, where
     /// an assessment takes seconds).
     pub fn threaded(&self) -> bool {

@@ -132,16 +132,13 @@ pub fn plan(c: &Campaign, out: &Path) -> Vec<Job> {
         let keep = all.iter().any(|q| prefix_of(&all, q) == Some(r));
         jobs.push(run_job(c, r, out, stage, (prefix, keep)));
         for &set in &c.validate {
-            jobs.push(Job {
-                stage: stage + 1,
-                task: Task::Validate {
-                    genome: run_path.clone(),
-                    set,
-                    seconds: c.seconds,
-                },
-                out: r.validation_path(out, set),
-                needs: vec![run_path.clone()],
-            });
+            jobs.push(Job::validate(
+                stage + 1,
+                &run_path,
+                set,
+                c.seconds,
+                r.validation_path(out, set),
+            ));
         }
         let sets = if ablated(c, r) {
             &c.ablation.sets[..]
