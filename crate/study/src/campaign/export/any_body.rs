@@ -246,11 +246,14 @@ pub fn any_body_table(modules: &[Entry]) -> String {
             .map(|s| format!("{} {:.2}", s.name, s.median))
             .collect();
         md += &format!(
-            "| {} | {} | {} ({} bodies, {} per evaluation) | {} | {} | {:.2} | {} | {} runs |\n",
+            "| {} | {} | {} ({}, {} per evaluation) | {} | {} | {:.2} | {} | {} runs |\n",
             m.file,
             m.controller,
             m.shape,
-            m.bodies.unwrap_or(0),
+            match m.bodies.unwrap_or(0) {
+                1 => "1 body".to_string(),
+                n => format!("{n} bodies"),
+            },
             a.per_evaluation,
             m.provenance.seed,
             m.provenance.evaluations,

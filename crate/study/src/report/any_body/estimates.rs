@@ -129,10 +129,14 @@ pub(super) fn fewer_episodes(all: &[&Condition], md: &mut String) {
         let _ = writeln!(
             md,
             "{} walked {per} bod{} per evaluation against {most} for the others: the same \
-             evaluations, {per}/{most} of their training episodes{} (stated, not corrected).\n",
+             evaluations, {} of their training episodes (stated, not corrected).\n",
             c.label,
             if per == 1 { "y" } else { "ies" },
-            if most == 4 * per { ", a quarter" } else { "" }
+            if most == 4 * per {
+                "a quarter".to_string()
+            } else {
+                format!("{per}/{most}")
+            }
         );
     }
 }
