@@ -2,7 +2,8 @@
 /**
  * Browser test of the brains for any body in the page (node --test):
  *  - the family menu names them for a newcomer ("attention, any body", ...), their gene count
- *    is the same for any drawing, and where the page would need the study's brain for any body
+ *    is the same for any drawing, and, while the manifest lists no brain for any body of the
+ *    study's (served here as the committed manifest without one), where the page would need it
  *    (the module list, the note under the menu) it says "not yet: the study is still training
  *    it", and offers nothing in its place;
  *  - "attention, any body" evolves on the drawn body in the run panel; the walking robot edited
@@ -13,9 +14,14 @@
  *    fly by `vsr evolve --bodies`, served in place of pretrained/'s files, never written there):
  *    it loads onto a drawing with all its genes, and the body search with it kept whole
  *    evolves bodies only (every entry's genome is the module's), as `vsr codesign` does bit for
- *    bit; a search from scratch of a family for any body runs too.
+ *    bit; a search from scratch of a family for any body runs too;
+ *  - the study's own brain for any body, as pretrained/ holds it (the committed manifest, not
+ *    routed): listed with its held-out median, it walks at once on a drawing it never trained
+ *    on, at the speed `vsr evaluate --shape` gives that body, and keeps walking, with the same
+ *    genes, through an erased and an added voxel.
  * Needs target/release/vsr (VSR_BIN). Saves screenshots/any-body-1400.png, any-body-420.png,
- * any-body-search-1400.png and any-body-search-420.png (whole pages; in /tmp, the screen at the part they show).
+ * any-body-search-1400.png, any-body-search-420.png, any-body-study-1400.png and any-body-study-420.png
+ * (whole pages; in /tmp, the screen at the part they show).
  */
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
@@ -50,6 +56,13 @@ after(async () => {
   await env?.close();
   await rm(tmp, { recursive: true, force: true });
 });
+
+/** The committed manifest, without any brain for any body (the page as it was before the study exported one). */
+async function manifestWithout() {
+  const manifest = JSON.parse(await readFile(path.join(ROOT, 'pretrained', 'manifest.json'), 'utf8'));
+  manifest.modules = manifest.modules.filter((/** @type {any} */ m) => !m.any_body);
+  return manifest;
+}
 
 /** Float32 values of a run file's genome (its JSON numbers are f32 values written out). @param {number[]} genes */
 const f32 = (genes) => Array.from(Float32Array.from(genes));
@@ -129,7 +142,10 @@ async function shoot(page, name, selector) {
 
 test('“attention, any body”: named for a newcomer, one gene count for any drawing, the study\'s module “not yet”; it evolves, '
   + 'keeps its genome through edits of the walking robot, and fine-tunes from its whole genome as vsr finetune does', async () => {
-  const { page, problems } = await openBare(env.browser, env.url, { width: 1400, height: 1000 });
+  const { page, problems } = await openBare(env.browser, 'about:blank', { width: 1400, height: 1000 });
+  const without = await manifestWithout();
+  await page.route('**/pretrained/manifest.json', (route) => route.fulfill({ json: without }));
+  await page.goto(env.url);
   await waitForText(page, 'status', /voxels/);
   const names = await byTestId(page, 'controller').locator('option').allTextContents();
   for (const name of ['attention, any body', 'MLP, any body', 'MLP-Comm, any body']) assert.ok(names.includes(name), `${name} in ${names}`);
@@ -208,11 +224,11 @@ test('“attention, any body”: named for a newcomer, one gene count for any dr
   await page.context().close();
 });
 
-test('a brain for any body in the manifest is listed with the modules, loads onto a drawing whole, and a body search with it '
+test('a brain for any body in a manifest is listed with the modules, loads onto a drawing whole, and a body search with it '
   + 'kept whole evolves bodies only, as vsr codesign does bit for bit', async () => {
   const { page, problems } = await openBare(env.browser, 'about:blank', { width: 1400, height: 1100 });
   // The study's manifest with one more module, as `vsr campaign export` would list a brain for any body; its file the one made above.
-  const manifest = JSON.parse(await readFile(path.join(ROOT, 'pretrained', 'manifest.json'), 'utf8'));
+  const manifest = await manifestWithout();
   // Its any_body record names the plan's primary group, as the export writes it (no body set's figures: the list shows no speed).
   manifest.modules.push({ file: path.basename(MADE_KEY), shape: 'train-32', rows: made.run.best.shape, controller: 'attention-any', bodies: 32,
     seed: 1, budget: 20, evaluations: 20, training_best: made.run.best.fitness,
@@ -290,6 +306,75 @@ test('a brain for any body in the manifest is listed with the modules, loads ont
   await byTestId(page, 'codesign').click();
   await page.waitForFunction(() => document.body.dataset.codesign === 'finished', undefined, { timeout: 120_000 });
   await waitForText(page, 'codesign-summary', /^Brain: attention, any body from scratch, bodies from a 3 × 3 box · /);
+  assert.deepEqual(problems, []);
+  await page.context().close();
+});
+
+test('the study\'s brain for any body, as pretrained/ holds it: listed with its held-out median, it walks at once on a drawing it '
+  + 'never trained on, at vsr evaluate\'s speed for that body, and keeps walking with the same genes through an erased and an added voxel', async () => {
+  const manifest = JSON.parse(await readFile(path.join(ROOT, 'pretrained', 'manifest.json'), 'utf8'));
+  const study = manifest.modules.find((/** @type {any} */ m) => m.controller === 'attention-any' && m.any_body?.group === 'any-train32');
+  assert.ok(study, 'pretrained/manifest.json lists the study\'s brain for any body (vsr campaign export campaigns/any-body.toml)');
+  const key = `pretrained/${study.file}`;
+  const run = JSON.parse(await readFile(path.join(ROOT, key), 'utf8'));
+  const heldout = study.any_body.sets.find((/** @type {any} */ s) => s.name === 'heldout-random');
+  const { page, problems } = await openBare(env.browser, env.url, { width: 1400, height: 1000 });
+  await waitForText(page, 'status', /voxels/);
+  const terrain = 'hilly-1-10-7';
+  await page.locator('#terrain').fill(terrain);
+  await page.locator('#terrain').press('Enter');
+  const option = page.locator(`#module option[value="${key}"]`);
+  await option.waitFor({ state: 'attached' });
+  assert.equal(await option.textContent(), `attention, any body, trained on ${study.bodies} bodies · ${heldout.median.toFixed(2)} m/s median on new bodies`);
+  assert.equal(await page.locator('#module option[value="pending:attention-any"]').count(), 0, 'no “not yet”');
+  await byTestId(page, 'controller').selectOption('attention-any');
+  await waitForText(page, 'any-body-note', /is in the module list, under “one brain for any body”: choose it and press “Load onto my robot”, and it walks on your drawing at once/);
+
+  // A table with four legs: not in its training set nor in any held-out set.
+  const bodySets = ['train-32', 'train-128', 'heldout-random', 'heldout-mutants', 'heldout-combs', 'heldout-paper'];
+  for (const set of bodySets) {
+    const text = await readFile(path.join(ROOT, 'campaigns', 'bodies', `${set}.txt`), 'utf8');
+    assert.ok(!text.split('\n').some((l) => l.trim() === '11111-11111-10101'), `the table is not in ${set}`);
+  }
+  await page.locator('#clear').click();
+  await clickCells(page, /** @type {[number, number][]} */ (TABLE));
+  await waitForText(page, 'shape-status', /^13 voxels · 11111-11111-10101$/);
+  await byTestId(page, 'pretrained').selectOption(key);
+  const set = `${heldout.means.length} bodies it never trained on, each on 10 new terrains: the median of their mean speeds is ${heldout.median.toFixed(2)} m/s`;
+  await waitForText(page, 'module-details', new RegExp(`The study walked it on ${set}, the speed beside it in the list; \\d+ of the ${heldout.means.length} averaged more than 1 m/s\\.$`));
+  await byTestId(page, 'load-pretrained').click();
+  const genes = run.best.genome.length;
+  await waitForText(page, 'driver', new RegExp(`^Driven by: a brain for any body \\(attention, any body\\) trained on ${study.bodies} bodies, on your drawing with all its ${genes} genes as trained`));
+  await waitForText(page, 'status', /^13 voxels, attention, any body$/);
+  assert.deepEqual((await sharedBrain(page)).genome, f32(run.best.genome), 'all its genes, as trained');
+  await walksOn(page);
+  /** vsr's speed for the module on `rows` over its 30-s episode, on the viewer's terrain. @param {string} rows */
+  const native = (rows) => JSON.parse(execFileSync(BIN, ['evaluate', '--genome', path.join(ROOT, key), '--shape', rows,
+    '--terrain', terrain], { encoding: 'utf8' })).velocity;
+  /** “Your robot's speed” once measured for `rows`. @param {string} rows */
+  const measured = async (rows) => {
+    await page.waitForFunction((r) => document.getElementById('speed-note')?.dataset.rows === r
+      && Number.isFinite(Number(document.getElementById('speed-note')?.dataset.value)), rows, { timeout: 60_000 });
+    return figure(page, 'speed-note');
+  };
+  const onTable = native('11111-11111-10101');
+  assert.ok(Math.abs(await measured('11111-11111-10101') - onTable) <= 1e-9, `the page's speed on the table is vsr evaluate's (${onTable} m/s)`);
+  console.log(`# the study's brain for any body on a table it never saw: ${onTable.toFixed(2)} m/s on ${terrain}`);
+  await shoot(page, 'any-body-study-1400.png', '#brain-panel');
+
+  // Erase a leg, then add a voxel, while it walks: the same genes walk on, at vsr's speed for each new body.
+  await byTestId(page, 'editor').scrollIntoViewIfNeeded();
+  await clickCells(page, [[2, 0]], 'right');
+  await waitForText(page, 'status', /^12 voxels, attention, any body$/);
+  await walksOn(page);
+  assert.deepEqual((await sharedBrain(page)).genome, f32(run.best.genome), 'the same genes after an erased voxel');
+  assert.ok(Math.abs(await measured('11111-11111-10001') - native('11111-11111-10001')) <= 1e-9, 'three legs: vsr evaluate\'s speed');
+  await clickCells(page, [[0, 3]]);
+  await waitForText(page, 'status', /^13 voxels, attention, any body$/);
+  await walksOn(page);
+  assert.deepEqual((await sharedBrain(page)).genome, f32(run.best.genome), 'the same genes after an added voxel');
+  await page.setViewportSize({ width: 420, height: 900 });
+  await shoot(page, 'any-body-study-420.png', '#brain-panel');
   assert.deepEqual(problems, []);
   await page.context().close();
 });

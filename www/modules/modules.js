@@ -10,7 +10,7 @@ import { describeRun } from '../workers/core.js';
 import { byId } from '../shared/dom.js';
 import { fetchOk, messageOf } from '../workers/kit.js';
 import { keepModules, loadKeptModules } from '../keep/storage.js';
-import { HELDOUT_SHORT, HELDOUT_SIMPLE, LIST_SPEED_SIMPLE, SPEED_MARK, bodyWords, brainWords, heldOutLong, shortLabel, simpleLabel, unseenWords } from './names.js';
+import { HELDOUT_SHORT, HELDOUT_SIMPLE, LIST_SPEED_SIMPLE, SPEED_MARK, bodySimple, bodyWords, brainWords, heldOutLong, shortLabel, simpleLabel, unseenWords } from './names.js';
 import { lineageNote } from './lineage.js';
 import { count, decimal } from '../shared/format.js';
 import { NOT_YET, familyName, isAnyBody } from '../shared/families.js';
@@ -65,6 +65,8 @@ export class ModuleList {
     this.hushed = false;
     /** Each pretrained module's mean speed on the study's unseen terrains (m/s), by key: the list's number. @type {Map<string, number>} */
     this.unseen = new Map();
+    /** A brain for any body's figures on the held-out bodies the study walked it on, by key: the list's number is their median. @type {Map<string, import('../shared/held-out.js').HeldOut>} */
+    this.heldOuts = new Map();
     /** The study run each pretrained module is (its name in the study's tables), by key. @type {Map<string, string>} */
     this.studyRunOf = new Map();
     /** The study's runs, once listed (study.js), to say beside a module where its run stopped at another budget. */
@@ -135,13 +137,17 @@ export class ModuleList {
     const set = heldOut(m.any_body);
     const median = set ? set.median : NaN;
     const speed = set ? `, ${heldOutLong(set)}` : '';
-    const on = Number.isInteger(m.bodies) ? `${m.bodies} bodies at once` : `the bodies of ${m.shape}`;
+    // One training body (the study's biped-only condition) is named, as the other modules' bodies are.
+    const one = m.bodies === 1 ? this.presets.find((p) => p.rows === m.rows)?.name : undefined;
+    const on = one ? `one body alone, ${one}` : Number.isInteger(m.bodies) ? `${m.bodies} bodies at once` : `the bodies of ${m.shape}`;
     const name = familyName(m.controller);
     const label = `a brain for any body (${name}), trained on ${on} (evolved with a budget of ${count(m.budget ?? m.evaluations)} evaluations${speed})`;
     const key = PRETRAINED_DIR + m.file;
-    const trained = Number.isInteger(m.bodies) ? `${m.bodies} bodies` : m.shape;
+    if (set) this.heldOuts.set(key, set);
+    const trained = one ?? (Number.isInteger(m.bodies) ? `${m.bodies} bodies` : m.shape);
+    const simple = one ? `${bodySimple(one)} alone` : trained;
     this.list(key, label, shortLabel(`${name}, trained on ${trained}`, median, ` ${HELDOUT_SHORT}`), ANY_BODY_GROUP, median,
-      shortLabel(`one brain for any body, trained on ${trained}`, median, ` ${HELDOUT_SIMPLE}`).replace(SPEED_MARK, ': '));
+      shortLabel(`one brain for any body, trained on ${simple}`, median, ` ${HELDOUT_SIMPLE}`).replace(SPEED_MARK, ': '));
     if (isStudyAnyBody(m) && !this.studyAnyBody) this.studyAnyBody = key;
   }
 
@@ -285,7 +291,9 @@ export class ModuleList {
         + (this.hushed ? `. ${HUSHED}.` : `; in training it walked ${decimal(info.fitness)} m/s${walked}.`);
       const lineage = lineageNote(this.studyRuns, this.studyRunOf.get(module?.key ?? '') ?? '');
       const unseen = this.unseen.get(module?.key ?? '');
-      const where = unseen === undefined ? '' : ` On ten terrains it never trained on, it averages ${decimal(unseen)} m/s, the speed beside it in the list.`;
+      const set = this.heldOuts.get(module?.key ?? '');
+      const where = set ? ` The study walked it on ${set.bodies} bodies it never trained on, each on ${set.terrains}: the median of their mean speeds is ${decimal(set.median)} m/s, the speed beside it in the list; ${set.above} of the ${set.bodies} averaged more than 1 m/s.`
+        : unseen === undefined ? '' : ` On ten terrains it never trained on, it averages ${decimal(unseen)} m/s, the speed beside it in the list.`;
       if (!this.hushed) this.details.textContent += lineage ? ` ${lineage}` : where;
       this.loadButton.title = info.anyBody
         ? 'Put it on your robot: all its genes, as trained (a brain for any body: every voxel works out its own weights from its place in the body)'

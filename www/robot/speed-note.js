@@ -4,7 +4,8 @@
  * viewer's terrain over the viewer's episode, measured at once (measure.js, the fitness's own
  * evaluation), beside what training measured and why the two differ; for a module just
  * transplanted, that this one-shot speed is expected to be poor and what to do next.
- * Its raw number is in `data-value` (NaN while measuring or with no brain).
+ * Its raw number is in `data-value` (NaN while measuring or with no brain), the body it is
+ * measured on in `data-rows`.
  */
 import { checkTerrain } from '../workers/core.js';
 import { messageOf } from '../workers/kit.js';
@@ -30,6 +31,7 @@ export class SpeedNote {
     // Its words stay until the new ones are written (below, at once or once known): an empty line,
     // even for a moment, moves everything under it (a run's Stop, each time a newer best walks).
     this.el.dataset.value = 'NaN';
+    this.el.dataset.rows = brain?.rows ?? '';
     if (!brain) {
       this.set(NaN, `The phase gait has no brain: each voxel squeezes and swells on a clock. Its speed is measured as it walks, over a ${seconds}-s episode.`);
       return;
