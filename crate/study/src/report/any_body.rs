@@ -14,7 +14,8 @@
 //! conditions has its primary validation: before that, only how many runs each condition has
 //! (no interim result is read). Secondary measures (each held-out set, the training-to-held-out
 //! gap, the share of held-out bodies above 1 m/s) are estimates (`estimates`), printed with
-//! the tests, and so are the figures (`pictures`). An episode that exploded in a validation
+//! the tests, and so are the figures (`pictures`) and the paper's four shapes one by one
+//! (`shapes`). An episode that exploded in a validation
 //! counts as 0 m/s (the plan's amendment 1); every table says how many its figures include.
 //! A run whose primary median is not a number is not counted as found: it is said, and the
 //! families wait. The floor (random brains, `floor`) is printed whenever its
@@ -24,6 +25,7 @@ mod estimates;
 mod family;
 mod floor;
 mod pictures;
+mod shapes;
 
 use super::Report;
 use crate::campaign::any_body::{set_stem, AnyBodyGroup};
@@ -247,6 +249,7 @@ pub fn any_body_section(results: &Results, r: &mut Report) {
     let ready = all.iter().all(|c| c.complete());
     if ready {
         estimates::estimates(&all, md);
+        shapes::paper_shapes(&all, md);
     }
     floor::floor_section(results, md);
     pictures::figures(results, &all, ready, r);
