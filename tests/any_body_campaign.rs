@@ -224,6 +224,13 @@ fn figures_floor_merge_and_export(dir: &Path, report: &str) {
             v["median"].as_f64().unwrap()
         };
         let best = if train(2) > train(1) { 2 } else { 1 };
+        // Beside the chosen run's figure, the typical run's: the median of the two runs' medians.
+        assert_eq!(
+            record.sets.last().unwrap().median_of_runs,
+            Some((train(1) + train(2)) / 2.0),
+            "{}: the training set's median over the runs",
+            m.file
+        );
         assert_eq!(
             m.provenance.seed, best,
             "{}: by training-set median",

@@ -18,6 +18,7 @@ use std::path::Path;
 use vsr::controllers::ControllerKind;
 use vsr::experiment::body_set::{validate_bodies, BodiesValidation};
 use vsr::experiment::{Best, BodySet, ValidationSet};
+use vsr::quantiles::median;
 
 /// How a brain for any body is chosen, in words (the manifest's record says it).
 pub const CHOSEN_BY: &str = "of the condition's runs, the one whose best has the highest \
@@ -43,6 +44,11 @@ pub struct BodySetFigures {
     pub walking_share: f64,
     /// Each body's mean speed over the terrains, in the set's order (m/s).
     pub means: Vec<f64>,
+    /// The typical run beside the chosen one: the median over the condition's runs (those
+    /// it was chosen from) of each run's `median` on this set (m/s). Absent in a manifest
+    /// written before it was recorded.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub median_of_runs: Option<f64>,
 }
 
 /// What the manifest says of a brain for any body beyond a module's provenance.
@@ -70,6 +76,8 @@ pub struct AnyBodyChoice {
     pub data: AnyBodyData,
     /// Finished, validated runs of its condition it was chosen from.
     pub candidates: usize,
+    /// Each of those runs' median on every (body set, terrain set) it was walked on.
+    pub run_medians: Vec<BTreeMap<(String, ValidationSet), f64>>,
 }
 
 /// A condition's choice: (group, controller), the chosen run (`None` until every planned
@@ -122,27 +130,35 @@ pub fn choose_any_body(results: &Results, controllers: &[ControllerKind]) -> Vec
                 choice: None,
                 runs: (0, 0),
             };
+            let mut run_medians = Vec::new();
             for (spec, data) in mine {
                 chosen.runs.0 += 1;
                 if !complete(g, data) {
                     continue;
                 }
                 chosen.runs.1 += 1;
+                let medians = data.validation.iter().map(|(k, v)| (k.clone(), v.median));
+                let medians: BTreeMap<_, _> = medians.collect();
                 let score = training_median(g, data).unwrap_or(f64::NEG_INFINITY);
                 let slot = &mut chosen.choice;
                 let candidates = slot.as_ref().map_or(0, |c| c.candidates) + 1;
                 let better = slot.as_ref().map_or(true, |c| {
                     score > training_median(g, &c.data).unwrap_or(f64::NEG_INFINITY)
                 });
+                run_medians.push(medians);
                 if better {
                     *slot = Some(AnyBodyChoice {
                         spec: spec.clone(),
                         data: data.clone(),
                         candidates,
+                        run_medians: Vec::new(),
                     });
                 } else if let Some(c) = slot.as_mut() {
                     c.candidates = candidates;
                 }
+            }
+            if let Some(c) = chosen.choice.as_mut() {
+                c.run_medians = run_medians;
             }
             if chosen.runs.1 < chosen.runs.0 {
                 chosen.choice = None;
@@ -167,7 +183,13 @@ pub fn any_body_entry(choice: &AnyBodyChoice, g: &AnyBodyGroup, origin: Origin) 
     let mut sets = Vec::new();
     for (i, bodies) in g.validated_on().into_iter().enumerate() {
         for &set in &g.sets {
-            let v = choice.data.validation.get(&(set_stem(bodies), set))?;
+            let key = (set_stem(bodies), set);
+            let v = choice.data.validation.get(&key)?;
+            let of_runs: Vec<f64> = choice
+                .run_medians
+                .iter()
+                .filter_map(|m| m.get(&key).copied())
+                .collect();
             sets.push(BodySetFigures {
                 name: set_stem(bodies),
                 file: bodies.to_string(),
@@ -177,6 +199,7 @@ pub fn any_body_entry(choice: &AnyBodyChoice, g: &AnyBodyGroup, origin: Origin) 
                 median: v.median,
                 walking_share: v.walking_share,
                 means: v.per_body.iter().map(|b| b.validation.mean).collect(),
+                median_of_runs: (!of_runs.is_empty()).then(|| median(&of_runs)),
             });
         }
     }
