@@ -171,6 +171,29 @@ fn a_module_fine_tuned_on_shapes_is_reported_beside_the_compared_runs() {
     }
     assert!(cells[6].ends_with("(n=2)"), "{row}");
     assert!(report.contains("rq2: transplant from comb-7x2 after 10 evaluations"));
+    // Generation 0's best in training, from the module: the run files' own, slowest to fastest.
+    let zero: Vec<f64> = [1, 2]
+        .iter()
+        .map(|seed| {
+            let path = format!("out/runs/ft-to-biped-4x3-40-s{seed}.json");
+            let run: serde_json::Value =
+                serde_json::from_str(&std::fs::read_to_string(dir.join(path)).unwrap()).unwrap();
+            run["generations"][0]["best"].as_f64().unwrap()
+        })
+        .collect();
+    let (low, high) = (zero[0].min(zero[1]), zero[0].max(zero[1]));
+    let row = report
+        .lines()
+        .rfind(|l| l.starts_with("| biped-4x3 |"))
+        .unwrap();
+    assert!(
+        row.starts_with(&format!("| biped-4x3 | {low:.2} to {high:.2} (n=2) | ")),
+        "generation 0: {row}"
+    );
+    assert!(
+        row.ends_with("(n=2) |"),
+        "the transplants' generation 0: {row}"
+    );
     assert!(report.contains("each run's `unseen` mean |"), "{report}");
     // The cost, read from the files: the transplants' two source runs (seeds 1 and 2) ...
     assert!(

@@ -341,7 +341,8 @@ test('the study\'s brain for any body, as pretrained/ holds it: listed with its 
   await waitForText(page, 'shape-status', /^13 voxels · 11111-11111-10101$/);
   await byTestId(page, 'pretrained').selectOption(key);
   const set = `${heldout.means.length} bodies it never trained on, each on 10 new terrains: the median of their mean speeds is ${heldout.median.toFixed(2)} m/s`;
-  await waitForText(page, 'module-details', new RegExp(`The study walked it on ${set}, the speed beside it in the list; \\d+ of the ${heldout.means.length} averaged more than 1 m/s\\.$`));
+  await waitForText(page, 'module-details', new RegExp(`The study walked it on ${set}, the speed beside it in the list; \\d+ of the ${heldout.means.length} averaged more than 1 m/s\\. `
+    + `It is the study's choice of ${study.chosen_from} runs \\(by their speed on their own training bodies\\): the middle run's brain walked ${heldout.median_of_runs.toFixed(2)} m/s there\\.$`));
   await byTestId(page, 'load-pretrained').click();
   const genes = run.best.genome.length;
   await waitForText(page, 'driver', new RegExp(`^Driven by: a brain for any body \\(attention, any body\\) trained on ${study.bodies} bodies, on your drawing with all its ${genes} genes as trained`));

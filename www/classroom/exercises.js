@@ -103,19 +103,26 @@ const ANY_BODY_CHOICES = ['faster than 1 m/s', 'from 0.5 to 1 m/s', 'slower than
 const anyBodyChoice = (speed) => (speed > 1 ? 0 : speed >= 0.5 ? 1 : 2);
 /**
  * What the study measured of its brain for any body on bodies it never trained on (shared/held-out.js), in words and in
- * simple words: the median of the bodies' mean speeds and the share of them above 1 m/s; null when the manifest gives none.
- * @param {any} record the manifest entry's `any_body`
+ * simple words: the median of the bodies' mean speeds and the share of them above 1 m/s, then, where the manifest gives
+ * it, the typical run's median beside this module's (it is the best of its runs); null when the manifest gives none.
+ * @param {any} entry the manifest's entry of the module
  */
-function heldOutWords(record) {
-  const set = heldOut(record);
+function heldOutWords(entry) {
+  const set = heldOut(entry?.any_body);
   if (!set) return null;
   const { bodies: n, above } = set;
   const bodies = set.name === HELDOUT_RANDOM ? `${count(n)} random bodies` : `the ${count(n)} bodies of the set ${set.name}`;
+  const runs = Number.isInteger(entry?.chosen_from) && entry.chosen_from > 1 ? entry.chosen_from : 0;
+  const typical = runs > 0 && Number.isFinite(set.typical);
+  const slow = typical && set.typical < 1 ? ', below the 1 m/s the study calls walking' : '';
   return {
     words: `The study walked it on ${bodies} it never trained on, each on ${set.terrains}: the median of those bodies' mean speeds is `
-      + `${ms(set.median)}, and ${count(above)} of the ${count(n)} (${Math.round(100 * set.share)}%) averaged more than 1 m/s.`,
+      + `${ms(set.median)}, and ${count(above)} of the ${count(n)} (${Math.round(100 * set.share)}%) averaged more than 1 m/s.`
+      + (typical ? ` This brain is the one the study chose of its ${count(runs)} runs of this kind (by their speed on their own training bodies); `
+        + `the middle run's brain walked ${ms(set.typical)} there${slow}.` : ''),
     simple: `The study tried it on ${bodies} it never saw. The middle speed of those bodies was ${ms(set.median)}. `
-      + `${count(above)} of the ${count(n)} walked faster than 1 m/s.`,
+      + `${count(above)} of the ${count(n)} walked faster than 1 m/s.`
+      + (typical ? ` It is the best of ${count(runs)} tries: the middle try walked ${ms(set.typical)}.` : ''),
   };
 }
 
@@ -341,7 +348,7 @@ export const TASKS = [
       const seconds = module.seconds;
       const speed = await lab.measure({ rows, controller: module.controller, genome: module.genome, terrain, seconds });
       const answer = anyBodyChoice(speed);
-      const study = heldOutWords(entry?.any_body);
+      const study = heldOutWords(entry);
       return { answer, shown: `${ANY_BODY_CHOICES[answer]}: ${ms(speed)} on your body (${rows}, ${voxels(rows)} voxels)`,
         why: `The page just walked the study's brain for any body, all its genes as trained, on your body for ${seconds} s on ${terrain}, `
           + `as “Your robot's speed” under the robot measures it: ${ms(speed)}. `

@@ -65,7 +65,10 @@ export class ModuleList {
     this.hushed = false;
     /** Each pretrained module's mean speed on the study's unseen terrains (m/s), by key: the list's number. @type {Map<string, number>} */
     this.unseen = new Map();
-    /** A brain for any body's figures on the held-out bodies the study walked it on, by key: the list's number is their median. @type {Map<string, import('../shared/held-out.js').HeldOut>} */
+    /**
+     * A brain for any body's figures on the held-out bodies the study walked it on (the list's number is their median),
+     * with how many runs it was chosen from, by key. @type {Map<string, {set: import('../shared/held-out.js').HeldOut, runs: number}>}
+     */
     this.heldOuts = new Map();
     /** The study run each pretrained module is (its name in the study's tables), by key. @type {Map<string, string>} */
     this.studyRunOf = new Map();
@@ -143,7 +146,7 @@ export class ModuleList {
     const name = familyName(m.controller);
     const label = `a brain for any body (${name}), trained on ${on} (evolved with a budget of ${count(m.budget ?? m.evaluations)} evaluations${speed})`;
     const key = PRETRAINED_DIR + m.file;
-    if (set) this.heldOuts.set(key, set);
+    if (set) this.heldOuts.set(key, { set, runs: Number.isInteger(m.chosen_from) ? m.chosen_from : 0 });
     const trained = one ?? (Number.isInteger(m.bodies) ? `${m.bodies} bodies` : m.shape);
     const simple = one ? `${bodySimple(one)} alone` : trained;
     this.list(key, label, shortLabel(`${name}, trained on ${trained}`, median, ` ${HELDOUT_SHORT}`), ANY_BODY_GROUP, median,
@@ -291,8 +294,10 @@ export class ModuleList {
         + (this.hushed ? `. ${HUSHED}.` : `; in training it walked ${decimal(info.fitness)} m/s${walked}.`);
       const lineage = lineageNote(this.studyRuns, this.studyRunOf.get(module?.key ?? '') ?? '');
       const unseen = this.unseen.get(module?.key ?? '');
-      const set = this.heldOuts.get(module?.key ?? '');
-      const where = set ? ` The study walked it on ${set.bodies} bodies it never trained on, each on ${set.terrains}: the median of their mean speeds is ${decimal(set.median)} m/s, the speed beside it in the list; ${set.above} of the ${set.bodies} averaged more than 1 m/s.`
+      const { set, runs } = this.heldOuts.get(module?.key ?? '') ?? { set: null, runs: 0 };
+      const typical = set && Number.isFinite(set.typical) && runs > 1
+        ? ` It is the study's choice of ${runs} runs (by their speed on their own training bodies): the middle run's brain walked ${decimal(set.typical)} m/s there.` : '';
+      const where = set ? ` The study walked it on ${set.bodies} bodies it never trained on, each on ${set.terrains}: the median of their mean speeds is ${decimal(set.median)} m/s, the speed beside it in the list; ${set.above} of the ${set.bodies} averaged more than 1 m/s.${typical}`
         : unseen === undefined ? '' : ` On ten terrains it never trained on, it averages ${decimal(unseen)} m/s, the speed beside it in the list.`;
       if (!this.hushed) this.details.textContent += lineage ? ` ${lineage}` : where;
       this.loadButton.title = info.anyBody

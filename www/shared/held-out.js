@@ -23,6 +23,8 @@ export const HELDOUT_RANDOM = 'heldout-random';
  * @property {number} share      the share of the bodies above 1 m/s (0 to 1)
  * @property {number} bodies     how many bodies
  * @property {number} above      how many of them averaged more than 1 m/s
+ * @property {number} typical    the typical run's figure beside this module's: the median over the runs it was chosen
+ *   from of each run's median on the same set (m/s; NaN when the manifest does not give it)
  */
 
 /**
@@ -30,12 +32,13 @@ export const HELDOUT_RANDOM = 'heldout-random';
  * held-out set's), or null when it gives none. @param {any} record @returns {HeldOut | null}
  */
 export function heldOut(record) {
-  const sets = /** @type {{name: string, heldout: boolean, set: string, median: number, walking_share: number, means: number[]}[]} */ (
+  const sets = /** @type {{name: string, heldout: boolean, set: string, median: number, walking_share: number, means: number[], median_of_runs?: number}[]} */ (
     Array.isArray(record?.sets) ? record.sets : []);
   const set = sets.find((s) => s.heldout && s.name === HELDOUT_RANDOM) ?? sets.find((s) => s.heldout);
   if (!set || !Number.isFinite(set.median) || !Array.isArray(set.means)) return null;
   const bodies = set.means.length;
-  return { name: set.name, terrains: terrainWords(set.set), median: set.median, share: set.walking_share, bodies, above: Math.round(set.walking_share * bodies) };
+  const typical = Number.isFinite(set.median_of_runs) ? Number(set.median_of_runs) : NaN;
+  return { name: set.name, terrains: terrainWords(set.set), median: set.median, share: set.walking_share, bodies, above: Math.round(set.walking_share * bodies), typical };
 }
 
 /** Whether a manifest entry is the study's brain for any body ({@link STUDY_ANY_BODY}). @param {any} entry */

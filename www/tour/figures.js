@@ -29,6 +29,7 @@ export const CLAIM_TABLE = 'noninferiority.csv';
  * @property {RunFilter[]} runs  the campaign rows it is drawn from: those that match one filter
  * @property {string} [table]   the table those rows are in (default: TABLES[0], the paper study's)
  * @property {boolean} [claim]  a figure of the test of the paper's own claim: listed only once that test is complete
+ * @property {string} [elsewhere]  where a person finds what it shows, when its runs are not listed here (no `runs`)
  */
 /**
  * @typedef {{kind: string, shape: string, evals: number, controllers?: string[], source?: string}} RunFilter
@@ -40,6 +41,8 @@ const BOX = 'Each box holds the runs of one brain (one dot per run, each with it
 /** How to read a box plot with the tests of each pair under it (their numbers: the glossary and "What our study found"). */
 const BOXES = `${BOX} The small print under the plot compares pairs of brains, its numbers saying how sure each comparison is: "no difference detected" means the runs drawn are too few to be sure the two brains differ, `
   + 'not that they are equal (see the glossary).';
+/** Where a body search's results are, since its runs are not listed in the study panel. */
+const SEARCH_ELSEWHERE = 'These runs are not listed here: the fastest body each brain found is in the list of modules, in the playground above.';
 /** Where the study's tests of ten runs are, in words (a heading of the page: captions hold no links). */
 const FOUND = '“What our study found”, further down the page';
 
@@ -115,6 +118,7 @@ export const FIGURES = [
       + 'finetune, started from the same module, every gene evolving with the body, its attention too (a name from our study\'s files: not what the Fine-tune button does); '
       + 'scratch-attention, scratch-mlp and scratch-mlp-comm, each brain evolved from scratch along with the body. The figure\'s title calls this search "rq3": only its name in our files.',
     runs: [],
+    elsewhere: SEARCH_ELSEWHERE,
   },
   {
     id: 'codesign-bodies',
@@ -126,6 +130,33 @@ export const FIGURES = [
       + 'The top row, for reference, is the module on the small biped it was evolved on, measured the same way: after its 30,100 evaluations on that body it walks faster than every body the searches found in 6,000. '
       + 'The fastest body of each brain is in the playground\'s list of modules: choose it there to watch it walk.',
     runs: [],
+    elsewhere: SEARCH_ELSEWHERE,
+  },
+  {
+    id: 'any-body-heldout',
+    report: 'report-any-body/',
+    file: 'any-body-heldout-random-unseen.svg',
+    title: 'One brain for every body: speed on 32 random bodies no brain trained on',
+    paper: 'Our own question: the paper moved only the attention between bodies, and the rest of each brain was drawn new for the new body. '
+      + 'Here every brain is one set of genes for any body (each voxel works out its own weights from which neighbours it has), trained on random bodies, then walked on 32 random bodies it never saw. '
+      + 'Attention trained on 32 bodies: its middle run walks 0.83 m/s, below the 1 m/s we call walking, while random brains stand still. '
+      + 'It is faster than a brain built the same way whose voxels send messages instead of using attention (mlp-comm); against the same brain without attention (mlp), and against attention trained on 128 bodies or on the biped alone, ten runs each were too few to tell.',
+    read: `${BOX} A point is one run: the middle of its 32 speeds, one per held-out body, each body's mean over ten hilly terrains it was not trained on. `
+      + 'The labels: attention-any, mlp-any and mlp-comm-any are the three brains for any body; train-32 and train-128 the sets of 32 and 128 training bodies, train-biped the biped alone; grey, random brains.',
+    runs: [],
+    elsewhere: 'These runs are not listed here: the brain chosen from the ten of attention on 32 bodies is in the list of modules (“one brain for any body”), in the playground above: load it onto any drawing.',
+  },
+  {
+    id: 'any-body-bodies',
+    report: 'report-any-body/',
+    file: 'any-body-bodies-any-train32-attention-any.svg',
+    title: 'One brain for every body: the module on each body it never trained on',
+    paper: 'Our own question. The brain in the playground\'s list of modules (“one brain for any body”), chosen from ten runs by its speed on its own training bodies, never by these. '
+      + 'It walks the held-out random bodies at a middle speed of 1.31 m/s, 19 of the 32 above 1 m/s: better than the middle run (0.83 m/s).',
+    read: 'One small drawing per body, fastest first, with its mean speed on ten hilly terrains it was not trained on; the rows are the sets of held-out bodies: '
+      + 'fresh random bodies, small changes of training bodies, combs (a family kept out of training) and the paper\'s four shapes.',
+    runs: [],
+    elsewhere: 'The module is in the list of modules (“one brain for any body”), in the playground above: draw one of these bodies and load it, to watch it walk.',
   },
   transfer('biped', ['biped-4x3', 'small'], ['biped-6x4', 'large'], 'The paper\'s Fig. 7: a transplanted attention, '
     + 'fine-tuned, gets fast much sooner than a brain evolved from scratch. Our study agrees on all four transfers (after '

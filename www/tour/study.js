@@ -128,8 +128,7 @@ export class StudyPanel {
   /** Says beside the chosen run where the same run stopped at another budget, and why their bests differ. */
   noteRun() {
     const fig = FIGURES.find((f) => f.id === this.pick.value);
-    this.runNote.textContent = fig?.runs.length === 0 ? 'These runs are not listed here: the fastest body each brain found is in the list of modules, in the playground above.'
-      : lineageNote(this.runs, this.runPick.value);
+    this.runNote.textContent = fig?.runs.length === 0 ? fig.elsewhere ?? '' : lineageNote(this.runs, this.runPick.value);
     this.runNote.hidden = !this.runNote.textContent;
   }
 

@@ -4,7 +4,8 @@
 //! its runs from scratch on the same shape, with two-sided Mann-Whitney p values (exact where
 //! both samples have at most 20 values and no ties, unadjusted), and what each module cost,
 //! read from the files: its run, how many runs it was chosen among (its manifest entry) and
-//! the transplants' source runs.
+//! the transplants' source runs. Beside it, generation 0's best in training from the module
+//! and from a transplant: the one-shot measured the same way for both.
 
 use super::Report;
 use crate::campaign::file::FinetuneGroup;
@@ -86,6 +87,46 @@ fn section(results: &Results, g: &FromModuleGroup, md: &mut String) {
          exact where both samples have at most 20 values and no ties, unadjusted: \
          exploratory, planned in docs/ANALYSIS-PLAN.md but not part of a tested family.)\n"
     );
+    generation_zero(results, g, md);
+}
+
+/// Generation 0's best in training on each target, from the module and from a transplant:
+/// the one-shot speed measured the same way for both (a description, not tested).
+fn generation_zero(results: &Results, g: &FromModuleGroup, md: &mut String) {
+    let range = |runs: &[&RunData]| -> String {
+        let bests: Vec<f64> = runs
+            .iter()
+            .filter_map(|d| Some(d.run.as_ref()?.generations.first()?.best))
+            .collect();
+        if bests.is_empty() {
+            return "-".into();
+        }
+        let s = Summary::of(&bests);
+        format!("{:.2} to {:.2} (n={})", s.min, s.max, bests.len())
+    };
+    md.push_str(
+        "Generation 0, before any fine-tuning step: its best in training on the target (the \
+         best of the generation's brains, each on one training terrain; the slowest to the \
+         fastest seed), from the module and from a transplant, the one-shot measured the same \
+         way for both (a description, not tested).\n\n| target | from the module | transplant \
+         |\n|---|---|---|\n",
+    );
+    for shape in &g.shapes {
+        let tuned: Vec<&RunData> = results
+            .from_module
+            .iter()
+            .filter(|(s, d)| s.group == g.name && &s.shape == shape && d.run.is_some())
+            .map(|(_, d)| d)
+            .collect();
+        let (transplant, _, _) = compared_on(results, g, shape);
+        let _ = writeln!(
+            md,
+            "| {shape} | {} | {} |",
+            range(&tuned),
+            range(&transplant)
+        );
+    }
+    md.push('\n');
 }
 
 /// The compared campaign's fine-tunings onto `shape` and its runs from scratch on it, with
