@@ -17,8 +17,8 @@
  *    bit; a search from scratch of a family for any body runs too;
  *  - the study's own brain for any body, as pretrained/ holds it (the committed manifest, not
  *    routed): listed with its held-out median, it walks at once on a drawing it never trained
- *    on, at the speed `vsr evaluate --shape` gives that body, and keeps walking, with the same
- *    genes, through an erased and an added voxel.
+ *    on, at the speed `vsr evaluate --shape` gives that body, keeps walking, with the same
+ *    genes, through an erased and an added voxel, and fine-tunes from all its genes.
  * Needs target/release/vsr (VSR_BIN). Saves screenshots/any-body-1400.png, any-body-420.png,
  * any-body-search-1400.png, any-body-search-420.png, any-body-study-1400.png and any-body-study-420.png
  * (whole pages; in /tmp, the screen at the part they show).
@@ -311,7 +311,7 @@ test('a brain for any body in a manifest is listed with the modules, loads onto 
 });
 
 test('the study\'s brain for any body, as pretrained/ holds it: listed with its held-out median, it walks at once on a drawing it '
-  + 'never trained on, at vsr evaluate\'s speed for that body, and keeps walking with the same genes through an erased and an added voxel', async () => {
+  + 'never trained on, at vsr evaluate\'s speed for that body, keeps walking with the same genes through an erased and an added voxel, and fine-tunes', async () => {
   const manifest = JSON.parse(await readFile(path.join(ROOT, 'pretrained', 'manifest.json'), 'utf8'));
   const study = manifest.modules.find((/** @type {any} */ m) => m.controller === 'attention-any' && m.any_body?.group === 'any-train32');
   assert.ok(study, 'pretrained/manifest.json lists the study\'s brain for any body (vsr campaign export campaigns/any-body.toml)');
@@ -374,6 +374,15 @@ test('the study\'s brain for any body, as pretrained/ holds it: listed with its 
   await waitForText(page, 'status', /^13 voxels, attention, any body$/);
   await walksOn(page);
   assert.deepEqual((await sharedBrain(page)).genome, f32(run.best.genome), 'the same genes after an added voxel');
+
+  // Fine-tuned on this body: from all its genes, its attention block kept.
+  await runForm(page, { population: '6', seconds: '2', budget: '18', seed: '2', terrain: 'hilly-1-10' });
+  await byTestId(page, 'finetune').click();
+  await waitForText(page, 'run-status', /^finished$/, 120_000);
+  const tuned = await downloadJson(page, 'export', path.join(tmp, 'study-tuned.json'));
+  assert.equal(tuned.json.config.source.controller, 'attention-any');
+  assert.deepEqual(tuned.json.config.source.genome, run.best.genome, 'it started from the study\'s module');
+  assert.deepEqual(tuned.json.best.genome.slice(0, 32), run.best.genome.slice(0, 32), 'the attention block kept');
   await page.setViewportSize({ width: 420, height: 900 });
   await shoot(page, 'any-body-study-420.png', '#brain-panel');
   assert.deepEqual(problems, []);
