@@ -50,12 +50,7 @@ fn section(results: &Results, g: &FromModuleGroup, md: &mut String) {
          at the end: median over seeds of each run's `{set}` mean |\n|---|---|---|---|---|---|"
     );
     for shape in &g.shapes {
-        let tuned: Vec<&RunData> = results
-            .from_module
-            .iter()
-            .filter(|(s, d)| s.group == g.name && &s.shape == shape && d.run.is_some())
-            .map(|(_, d)| d)
-            .collect();
+        let tuned = from_module_on(results, g, shape);
         let (transplant, scratch, label) = compared_on(results, g, shape);
         let values =
             |runs: &[&RunData]| -> Vec<f64> { runs.iter().filter_map(|d| d.best_at(at)).collect() };
@@ -112,12 +107,7 @@ fn generation_zero(results: &Results, g: &FromModuleGroup, md: &mut String) {
          |\n|---|---|---|\n",
     );
     for shape in &g.shapes {
-        let tuned: Vec<&RunData> = results
-            .from_module
-            .iter()
-            .filter(|(s, d)| s.group == g.name && &s.shape == shape && d.run.is_some())
-            .map(|(_, d)| d)
-            .collect();
+        let tuned = from_module_on(results, g, shape);
         let (transplant, _, _) = compared_on(results, g, shape);
         let _ = writeln!(
             md,
@@ -127,6 +117,13 @@ fn generation_zero(results: &Results, g: &FromModuleGroup, md: &mut String) {
         );
     }
     md.push('\n');
+}
+
+/// The group's runs fine-tuned from the module onto `shape` that have a run file.
+fn from_module_on<'a>(results: &'a Results, g: &FromModuleGroup, shape: &str) -> Vec<&'a RunData> {
+    let on = results.from_module.iter();
+    let on = on.filter(|(s, d)| s.group == g.name && s.shape == shape && d.run.is_some());
+    on.map(|(_, d)| d).collect()
 }
 
 /// The compared campaign's fine-tunings onto `shape` and its runs from scratch on it, with
