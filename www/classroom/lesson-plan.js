@@ -5,7 +5,7 @@
  * chapters 1 to 7 and then the class challenge; the teacher's “The 50-minute lesson” sheet shows
  * it (classroom.js, opened by “For teachers” in the page's header) and docs/teaching.md gives it
  * as a table. LESSONS is its alternative if you have two lessons of 45 minutes: the same chapters
- * and the same challenge, with time for chapters 8 to 10; the answer keys' sheet names both and
+ * and the same challenge, with time for chapters 8 to 11; the answer keys' sheet names both and
  * docs/teaching.md gives it as a second table. The browser tests check that the page and the
  * guide say the same.
  */
@@ -86,7 +86,7 @@ export const WRAP = 'Compare predictions: who was right, and why?';
 
 /**
  * If you have two lessons of 45 minutes instead: the 50-minute lesson's chapters 1 to 7 in the
- * first, with a little more time each; chapters 8 to 10 and the same class challenge in the second.
+ * first, with a little more time each; chapters 8 to 11 and the same class challenge in the second.
  * @type {{name: string, steps: Step[]}[]}
  */
 export const LESSONS = [
@@ -103,11 +103,12 @@ export const LESSONS = [
   ] },
   { name: 'Second lesson', steps: [
     { what: AGAIN, minutes: 3 },
-    { what: 'Transplant a module', minutes: 7 },
-    { what: 'Which body for this brain?', minutes: 6 },
-    { what: 'Your turn', minutes: 4 },
-    { what: CHALLENGE, minutes: 15 },
-    { what: RANK, minutes: 10 },
+    { what: 'Transplant a module', minutes: 6 },
+    { what: 'Which body for this brain?', minutes: 5 },
+    { what: 'Your turn', minutes: 3 },
+    { what: 'One brain for every body', minutes: 5 },
+    { what: CHALLENGE, minutes: 14 },
+    { what: RANK, minutes: 9 },
   ] },
 ];
 
