@@ -257,7 +257,7 @@ test('a brain for any body in a manifest is listed with the modules, loads onto 
   await clickCells(page, /** @type {[number, number][]} */ (TABLE));
   await waitForText(page, 'shape-status', /^13 voxels · 11111-11111-10101$/);
   await byTestId(page, 'load-pretrained').click();
-  await waitForText(page, 'driver', new RegExp(`^Driven by: a brain for any body \\(attention, any body\\) trained on 32 bodies, on your drawing with all its ${genes} genes as trained \\(attention, any body, ${genes} genes\\)\\.$`));
+  await waitForText(page, 'driver', new RegExp(`^Driven by: a brain for any body trained on 32 bodies, on your drawing, every gene as trained \\(attention, any body, ${genes} genes\\)\\.$`));
   await waitForText(page, 'speed-note', /with no training for it: a brain for any body keeps all its genes on every body/, 30_000);
   assert.deepEqual((await sharedBrain(page)).genome, f32(made.run.best.genome), 'all its genes, as trained');
   await walksOn(page);
@@ -345,7 +345,7 @@ test('the study\'s brain for any body, as pretrained/ holds it: listed with its 
     + `It is the study's choice of ${study.chosen_from} runs \\(by their speed on their own training bodies\\): the middle run's brain walked ${heldout.median_of_runs.toFixed(2)} m/s there\\.$`));
   await byTestId(page, 'load-pretrained').click();
   const genes = run.best.genome.length;
-  await waitForText(page, 'driver', new RegExp(`^Driven by: a brain for any body \\(attention, any body\\) trained on ${study.bodies} bodies, on your drawing with all its ${genes} genes as trained`));
+  await waitForText(page, 'driver', new RegExp(`^Driven by: a brain for any body trained on ${study.bodies} bodies, on your drawing, every gene as trained \\(attention, any body, ${genes} genes\\)\\.$`));
   await waitForText(page, 'status', /^13 voxels, attention, any body$/);
   assert.deepEqual((await sharedBrain(page)).genome, f32(run.best.genome), 'all its genes, as trained');
   await walksOn(page);

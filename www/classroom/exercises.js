@@ -122,7 +122,7 @@ function heldOutWords(entry) {
         + `the middle run's brain walked ${ms(set.typical)} there${slow}.` : ''),
     simple: `The study tried it on ${bodies} it never saw. The middle speed of those bodies was ${ms(set.median)}. `
       + `${count(above)} of the ${count(n)} walked faster than 1 m/s.`
-      + (typical ? ` It is the best of ${count(runs)} tries: the middle try walked ${ms(set.typical)}.` : ''),
+      + (typical ? ` It is the best of the ${count(runs)} brains the study trained this way: the typical one walked ${ms(set.typical)}.` : ''),
   };
 }
 

@@ -73,7 +73,7 @@ export const LIST_SPEED_SIMPLE = 'on new ground';
 /** Which measurement a brain for any body's list speed is: the median over held-out bodies (shared/held-out.js). */
 export const HELDOUT_SHORT = 'median on new bodies';
 /** The same in simple words. */
-export const HELDOUT_SIMPLE = 'on new bodies (the middle one)';
+export const HELDOUT_SIMPLE = 'on a typical new body';
 
 /**
  * A brain for any body's speed on the bodies it never trained on, in the module list's details.

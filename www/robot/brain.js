@@ -68,7 +68,7 @@ export async function transplanted(module, rows, origin, seed) {
   const own = info.shape === rows && info.bodies <= 1; // a brain trained on many bodies has no body of its own
   const from = info.bodies > 1 ? `${info.bodies} bodies` : presets.find((p) => p.rows === info.shape)?.name ?? info.shape;
   const label = isAnyBody(info.controller)
-    ? `a brain for any body (${familyName(info.controller)}) trained on ${from}, on your drawing with all its ${genome.length} genes as trained`
+    ? `a brain for any body trained on ${from}, on your drawing, every gene as trained`
     : `a module transplanted from ${from}: its attention as evolved there, the rest of its brain new for this body, drawn with seed ${seed}`;
   return {
     controller: info.controller, genome, rows, origin, module: pretrainedKey(module), source: attentionSource(info, module.text), carried: !own,

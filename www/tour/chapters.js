@@ -216,8 +216,8 @@ export const CHAPTERS = [
       `It was trained on ${TRAINING_BODIES} random bodies at once, never on yours. As before, no voxel sends messages to another.`,
     ],
     task: 'Keep this body, or draw your own on the grid of “1 · Draw”: the brain walks on it at once. Answer the question, then press Reveal: the page walks this brain on the body you drew.',
-    notice: 'Nothing was drawn at random for your body: every gene is the one training found. The answer puts your body\'s speed beside the study\'s figures for bodies this brain never trained on: '
-      + 'the median of their speeds, and the share of them above 1 m/s. One body is one sample: draw another and read “Your robot\'s speed” under the robot.',
+    notice: 'Nothing was drawn at random for your body: every gene is the one training found. Bodies differ: some suit this brain and walk fast, many barely move. '
+      + 'Draw another body and read “Your robot\'s speed” under the robot.',
     pending: 'Until it is, this chapter has no brain to walk: its body walks on the phase gait. Evolve can train a brain of the same kind on your drawing '
       + '(choose “attention, any body” in “Brain (controller)”, under “3 · Give it a brain”).',
     setup: { rows: TALL_TABLE, brain: null, anyBody: true, terrain: VIEW },
@@ -229,8 +229,8 @@ export const CHAPTERS = [
         `It learned on ${TRAINING_BODIES} random bodies. It never saw yours. The voxels do not send messages to each other.`,
       ],
       task: 'Keep this body or draw your own. The brain walks on it at once. Choose your answer, then press Reveal. The page walks this brain on your body.',
-      notice: 'Nothing was changed for your body: every number is the one training found. The answer shows your body\'s speed next to what the study found on many bodies this brain never saw: '
-        + 'the middle speed, and how many of them were faster than 1 m/s. One body is one try: draw another and read “Your robot\'s speed” under the robot.',
+      notice: 'Nothing was changed for your body: every number is the one training found. Some bodies suit this brain and walk fast; many barely move. '
+        + 'Draw another and read “Your robot\'s speed” under the robot.',
       pending: 'Until then, there is no brain to try here: the body moves on the clock. You can train a brain like it on your own drawing with Evolve '
         + '(choose “attention, any body” in “Brain (controller)”, under “3 · Give it a brain”).',
     },

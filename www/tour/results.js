@@ -62,7 +62,7 @@ export const FINDINGS = [
   },
   {
     question: 'Can a brain evolved once, on one body, drive new bodies that a search invents?',
-    paper: 'The paper did not try a search for bodies; it moved its brains between bodies of the same kind (a small and a large biped, a small and a large comb).',
+    paper: 'It did not try a search for bodies; it moved its brains between bodies of the same kind (a small and a large biped, a small and a large comb).',
     ours: 'Partly: the attention crosses, the rest of the brain does not. We let evolution search for bodies, starting from a 3 × 3 box, '
       + 'each search with one kind of brain and 6,000 evaluations (the 30,100 that made the module, a budget of 30,000 and the rest of its last generation, not counted). With the attention taken from our best biped and kept frozen '
       + '(four numbers that set every attention matrix; each body\'s output weights were evolved for it), the middle search of ten ended on a body walking '
@@ -78,18 +78,21 @@ export const FINDINGS = [
   },
   {
     question: 'Can one brain, trained on many bodies, walk on a body it has never seen?',
-    paper: 'The paper did not try: each of its brains kept weights for every voxel of its own body, so a new body needed new ones.',
+    paper: 'It did not try: each of its brains kept weights for every voxel of its own body, so a new body needed new ones.',
     ours: 'A little. We gave every voxel the same genes and let it work out its own weights from what it knows of its place (which of its four neighbours exist), '
-      + 'so that one brain fits any body, and still no voxel sends a message. Trained on 32 random bodies, then walked on 32 random bodies it never saw '
-      + '(each on ten hilly terrains it never trained on), the middle one of ten such brains walked 0.83 m/s, where random brains stand still: '
-      + 'below the 1 m/s we call walking, and far below brains evolved on one body. The one in the list of modules, the best of the ten, walks 1.31 m/s. '
-      + 'It beat a brain built the same way whose voxels send messages instead of using attention; against the same brain without attention, and against attention trained on 128 bodies or on the biped alone, ten runs of each were too few to tell. '
+      + 'so that one brain fits any body, and still no voxel sends a message. We trained ten such brains on 32 random bodies, then walked each on 32 random bodies it never saw, '
+      + 'each body on ten hilly terrains. The middle brain of the ten walked 0.83 m/s on a typical new body, where random brains stand still: '
+      + 'below the 1 m/s we call walking, and far below brains evolved on one body. Some bodies suit it and walk fast; many barely move. '
+      + 'The one in the list of modules, the one of the ten that walked best on its own training bodies, walks 1.31 m/s on a typical new body. '
+      + 'It beat a brain built the same way whose voxels send messages instead of using attention; against the same brain without attention, and against attention trained on 128 bodies '
+      + '(a little faster) or on the biped alone, ten runs of each were too few to tell. '
       + 'So a new drawing still starts with the phase gait, and this brain is one click away.',
     simple: 'A little. We made one brain that fits any body: every voxel runs the same genes and works out its own weights from which neighbours it has, '
-      + 'and still no voxel sends a message. Trained on 32 random bodies, it walked 32 new ones at 0.83 m/s (the middle of ten tries): '
-      + 'slower than 1 m/s, which we call walking, and much slower than a brain trained on one body. Random brains do not move at all. '
-      + 'The best of the ten, in the list of modules, walks 1.31 m/s: try it on your own drawing. A brain whose voxels send messages did worse; '
-      + 'more training bodies, or only the small walker, made no difference we could see.',
+      + 'and still no voxel sends a message. We trained ten of them on 32 random bodies. On new bodies, the typical one of the ten walked 0.83 m/s: '
+      + 'slower than 1 m/s, which we call walking, and much slower than a brain trained on one body. Some bodies suit it and walk fast; many barely move. '
+      + 'Random brains do not move at all. The one in the list of modules, the one that walked best on its training bodies, walks 1.31 m/s on a typical new body: '
+      + 'try it on your own drawing. A brain whose voxels send messages did worse. 128 training bodies looked a little faster, '
+      + 'and training on the small walker alone about the same, but ten tries of each are too few to be sure.',
     figure: 'any-body-heldout',
   },
 ];
