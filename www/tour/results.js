@@ -105,7 +105,8 @@ export const NO_DIFFERENCE = '“No difference detected” means: the runs we ha
 /** Why the same robot has several speeds on this page. */
 export const SPEEDS = 'The same robot can show several speeds, each true for what it measures: its best walk in training (one freshly drawn '
   + 'terrain, and evolution keeps the luckiest), its mean over ten terrains it never trained on (what the figures compare, usually lower), '
-  + 'and its speed on the one terrain under the robot. Each speed on the page says which one it is.';
+  + 'and its speed on the one terrain under the robot; a brain for any body also has its speed on a typical new body (the middle of many bodies it never trained on: '
+  + 'the list\'s number for it). Each speed on the page says which one it is.';
 
 /**
  * The statistics behind the fold, as in docs/RESULTS.md (ten runs of each, the two-sided
