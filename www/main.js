@@ -184,6 +184,12 @@ function showAnyBodyNote(kind) {
   const note = byId(document, 'any-body-note');
   note.hidden = !isAnyBody(kind);
   if (note.hidden) return;
+  const driving = Boolean(modules.studyAnyBody) && robot?.brain?.module === modules.studyAnyBody;
+  if (driving) {
+    note.textContent = 'Your robot walks with the study\'s brain for any body (attention, trained on many bodies), every gene as trained: '
+      + 'add or remove voxels and it keeps walking, with the same genes. Fine-tune trains it further for this body.';
+    return;
+  }
   const study = modules.studyAnyBody
     ? 'The study\'s brain for any body (attention, trained on many bodies) is in the module list, under “one brain for any body”: '
       + 'choose it and press “Load onto my robot”, and it walks on your drawing at once, with no evolution.'

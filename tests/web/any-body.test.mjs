@@ -347,6 +347,7 @@ test('the study\'s brain for any body, as pretrained/ holds it: listed with its 
   const genes = run.best.genome.length;
   await waitForText(page, 'driver', new RegExp(`^Driven by: a brain for any body trained on ${study.bodies} bodies, on your drawing, every gene as trained \\(attention, any body, ${genes} genes\\)\\.$`));
   await waitForText(page, 'status', /^13 voxels, attention, any body$/);
+  await waitForText(page, 'any-body-note', /^Your robot walks with the study's brain for any body \(attention, trained on many bodies\), every gene as trained/);
   assert.deepEqual((await sharedBrain(page)).genome, f32(run.best.genome), 'all its genes, as trained');
   await walksOn(page);
   /** vsr's speed for the module on `rows` over its 30-s episode, on the viewer's terrain. @param {string} rows */
